@@ -1,0 +1,51 @@
+// Front door of the triangulators: a PSLG in, a TriMesh out, with the data structure and
+// the insertion strategy chosen at run time (each combination is its own instantiation,
+// so the choice costs nothing inside the loops).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "meshstep/mesh/tri_mesh.hpp"
+#include "meshstep/pslg/pslg.hpp"
+
+namespace meshstep {
+
+enum class DataStructure { tds, dcel };
+enum class Insertion { flip, cavity };
+
+struct TriangulateOptions {
+  DataStructure data_structure = DataStructure::tds;
+  Insertion insertion = Insertion::flip;
+  // Keep every triangle of the convex hull (minus holes) instead of removing the ones
+  // outside the segments (Triangle's -c).
+  bool convex_hull = false;
+  bool compute_neighbors = false;
+};
+
+struct TriangulateReport {
+  std::size_t duplicate_vertices = 0;   // merged with an earlier vertex at the same place
+  std::size_t steiner_vertices = 0;     // added where segments cross
+  std::size_t split_segments = 0;       // segments split by a vertex or a crossing
+  std::size_t removed_triangles = 0;    // in holes or outside the segments
+  std::size_t mesh_bytes = 0;           // memory held by the data structure at its largest
+  std::vector<std::string> warnings;    // human-readable, one line each
+};
+
+// Delaunay triangulation of input.points when input has no segments, else the constrained
+// Delaunay triangulation of the PSLG (holes and, unless convex_hull, the outside removed).
+// Throws InputError for input with fewer than three non-collinear vertices or a segment
+// that names a missing vertex. Deterministic: the same input gives the same mesh on every
+// data structure and insertion strategy.
+TriMesh triangulate(const Pslg& input, const TriangulateOptions& options = {},
+                    TriangulateReport* report = nullptr);
+
+// Same, consuming the input (no copy of its points: the large-input path).
+TriMesh triangulate(Pslg&& input, const TriangulateOptions& options = {},
+                    TriangulateReport* report = nullptr);
+
+const char* to_string(DataStructure ds);
+const char* to_string(Insertion insertion);
+
+}  // namespace meshstep
