@@ -216,8 +216,10 @@ class Tds {
       free_faces_.pop_back();
     } else {
       f = static_cast<FaceId>(face_capacity());
-      vertices_.resize(vertices_.size() + 3);
-      twins_.resize(twins_.size() + 3, kTwinMask);
+      for (int i = 0; i < 3; ++i) {
+        vertices_.push_back(kNone);
+        twins_.push_back(kTwinMask);
+      }
     }
     set_face(f, a, b, c);
     return f;

@@ -1,0 +1,151 @@
+// meshstep triangulate: Delaunay triangulation of a .node, constrained Delaunay of a .poly.
+#include <cstdio>
+#include <string>
+
+#include "command.hpp"
+#include "console.hpp"
+#include "json_line.hpp"
+#include "meshstep/check/quality.hpp"
+#include "meshstep/delaunay/triangulate.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/io/triangle_io.hpp"
+#include "output_prefix.hpp"
+
+namespace meshstep::app {
+namespace {
+
+struct TriangulateArgs {
+  std::string input;
+  std::string prefix;
+  std::string ds = "tds";
+  std::string insertion = "flip";
+  bool convex_hull = false;
+  std::string stats;
+  bool no_output = false;
+  bool edges = false;
+  bool neighbors = false;
+  bool quiet = false;
+  bool verbose = false;
+};
+
+std::string with_input(const std::string& input, const InputError& e) {
+  return e.file().empty() ? input + ": " + e.what() : e.what();
+}
+
+int run_triangulate(const TriangulateArgs& args) {
+  const Verbosity verbosity =
+      args.quiet ? Verbosity::quiet : args.verbose ? Verbosity::verbose : Verbosity::normal;
+  TriangulateOptions options;
+  options.data_structure = args.ds == "dcel" ? DataStructure::dcel : DataStructure::tds;
+  options.insertion = args.insertion == "cavity" ? Insertion::cavity : Insertion::flip;
+  options.convex_hull = args.convex_hull;
+  options.compute_neighbors = args.neighbors && !args.no_output;
+  const std::string prefix = args.prefix.empty() ? default_output_prefix(args.input) : args.prefix;
+
+  Stopwatch clock;
+  std::vector<std::string> warnings;
+  Pslg input;
+  TriMesh mesh;
+  TriangulateReport report;
+  double read_ms = 0, triangulate_ms = 0, write_ms = 0;
+  std::size_t input_vertices = 0, input_segments = 0;
+  try {
+    print_progress(verbosity, "reading " + args.input);
+    input = io::read_pslg(args.input, &warnings);
+    read_ms = clock.lap_ms();
+    for (const std::string& w : warnings) print_warning(verbosity, w);
+    input_vertices = input.points.size();
+    input_segments = input.segments.size();
+    print_progress(verbosity, "triangulating " + std::to_string(input_vertices) + " vertices, " +
+                                  std::to_string(input_segments) + " segments (" +
+                                  to_string(options.data_structure) + ", " +
+                                  to_string(options.insertion) + ")");
+    mesh = triangulate(std::move(input), options, &report);
+    triangulate_ms = clock.lap_ms();
+    for (const std::string& w : report.warnings) print_warning(verbosity, args.input + ": " + w);
+    if (!args.no_output) {
+      print_progress(verbosity, "writing " + prefix + ".node/.ele/.poly");
+      io::write_mesh(prefix, mesh, {.edges = args.edges, .neighbors = args.neighbors});
+      write_ms = clock.lap_ms();
+    }
+  } catch (const InputError& e) {
+    print_error(with_input(args.input, e));
+    return kExitBadInput;
+  }
+
+  const AngleStats angles = angle_stats(mesh);
+  if (verbosity != Verbosity::quiet) {
+    std::printf("%s: %zu vertices, %zu segments -> %zu triangles, %zu Steiner vertices%s\n",
+                args.input.c_str(), input_vertices, input_segments, mesh.triangles.size(),
+                report.steiner_vertices,
+                args.no_output ? " (not written)" : (", written to " + prefix + ".*").c_str());
+  }
+  if (verbosity == Verbosity::verbose) {
+    std::printf("  angles: min %.4f, max %.4f degrees; %zu duplicates merged; %zu segment splits;"
+                " %zu triangles removed (holes/outside)\n",
+                angles.min_angle_deg, angles.max_angle_deg, report.duplicate_vertices,
+                report.split_segments, report.removed_triangles);
+    std::printf("  time: read %.1f ms, triangulate %.1f ms, write %.1f ms; mesh %.1f MiB\n", read_ms,
+                triangulate_ms, write_ms, report.mesh_bytes / 1048576.0);
+  }
+  if (args.stats == "json") {
+    JsonLine ms;
+    ms.field("read", read_ms).field("triangulate", triangulate_ms).field("write", write_ms);
+    JsonLine stats;
+    stats.field("input", args.input)
+        .field("vertices", mesh.points.size())
+        .field("triangles", mesh.triangles.size())
+        .field("segments", mesh.segments.size())
+        .field("input_vertices", input_vertices)
+        .field("input_segments", input_segments)
+        .field("steiner", report.steiner_vertices)
+        .field("duplicates", report.duplicate_vertices)
+        .field("min_angle", angles.min_angle_deg)
+        .field("max_angle", angles.max_angle_deg)
+        .field("ds", std::string(to_string(options.data_structure)))
+        .field("insertion", std::string(to_string(options.insertion)))
+        .object("ms", ms);
+    std::printf("%s\n", stats.str().c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_triangulate_command(CLI::App& parent) {
+  auto args = std::make_shared<TriangulateArgs>();
+  CLI::App* cmd = parent.add_subcommand(
+      "triangulate",
+      "Delaunay triangulation of a .node point set, or constrained Delaunay triangulation of a\n"
+      ".poly PSLG (segments kept as edges; crossing segments split at their intersection;\n"
+      "triangles in holes and, unless --convex-hull, outside the segments removed).");
+  cmd->add_option("INPUT", args->input, "Input .node or .poly file (Triangle's formats)")
+      ->required();
+  cmd->add_option("-o,--output", args->prefix,
+                  "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly\n"
+                  "(default: INPUT without extension plus .1, as Triangle does)");
+  cmd->add_option("--ds", args->ds, "Mesh data structure: tds (triangle-based) or dcel (half-edge)")
+      ->check(CLI::IsMember({"tds", "dcel"}))
+      ->capture_default_str();
+  cmd->add_option("--insertion", args->insertion,
+                  "Point insertion: flip (Lawson) or cavity (Bowyer-Watson)")
+      ->check(CLI::IsMember({"flip", "cavity"}))
+      ->capture_default_str();
+  cmd->add_flag("-c,--convex-hull", args->convex_hull,
+                "Keep every triangle of the convex hull (minus holes), not only those\n"
+                "enclosed by segments");
+  cmd->add_option("--stats", args->stats,
+                  "Print statistics; 'json': the last line of standard output is one JSON object\n"
+                  "(vertices, triangles, input_vertices, steiner, min_angle, max_angle,\n"
+                  "ms.read, ms.triangulate, ms.write)")
+      ->check(CLI::IsMember({"json"}));
+  cmd->add_flag("--no-output", args->no_output, "Triangulate but write no files (for timing)");
+  cmd->add_flag("-e,--edges", args->edges, "Also write PREFIX.edge");
+  cmd->add_flag("-n,--neighbors", args->neighbors, "Also write PREFIX.neigh");
+  cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors (and --stats)");
+  cmd->add_flag("-v,--verbose", args->verbose, "Print progress, timings and mesh statistics");
+  cmd->footer("Example: meshstep triangulate assets/examples/plate.poly -o plate --stats json");
+  return {cmd, [args] { return run_triangulate(*args); }};
+}
+
+}  // namespace meshstep::app

@@ -1,0 +1,207 @@
+// Constrained Delaunay: inserting segments into a Delaunay triangulation.
+//
+// A segment a-b is recovered by flips (Sloan 1993): the edges it crosses are collected by
+// walking along it, then each one whose quadrilateral is convex is flipped, until none
+// crosses; the new edges are then made Delaunay again, constrained edges excepted. On the
+// way the walk can meet
+//  - a vertex lying on a-b: the segment is split there (a T-junction);
+//  - a constrained edge crossing a-b: both are split at their intersection point, which is
+//    rounded to doubles and becomes a Steiner vertex.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <stdexcept>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "meshstep/delaunay/triangulation.hpp"
+
+namespace meshstep {
+
+template <TriangleMesh Mesh>
+class SegmentInserter {
+ public:
+  explicit SegmentInserter(Triangulation<Mesh>& tri) : tri_(tri) {}
+
+  void insert(VertexId a, VertexId b, int marker) {
+    pending_.push_back({a, b, marker});
+    while (!pending_.empty()) {
+      const Piece piece = pending_.back();
+      pending_.pop_back();
+      insert_piece(piece.a, piece.b, piece.marker);
+    }
+  }
+
+  // Marker of every constrained edge, keyed by its endpoints (smaller id first).
+  const std::unordered_map<std::uint64_t, int>& markers() const { return markers_; }
+  static std::uint64_t edge_key(VertexId a, VertexId b) {
+    if (a > b) std::swap(a, b);
+    return (std::uint64_t{a} << 32) | b;
+  }
+  std::size_t steiner_count() const { return steiner_; }
+  std::size_t split_count() const { return splits_; }
+
+ private:
+  struct Pair {
+    VertexId first, second;
+  };
+  struct Piece {
+    VertexId a, b;
+    int marker;
+  };
+
+  const Point& P(VertexId v) const { return tri_.point(v); }
+  const Mesh& mesh() const { return tri_.mesh(); }
+
+  void constrain(HalfEdge h, int marker) {
+    tri_.mesh().set_constrained(h, true);
+    markers_[edge_key(mesh().origin(h), mesh().dest(h))] = marker;
+  }
+
+  // Inserts the piece a-b, or pushes the pieces it must be split into onto pending_.
+  void insert_piece(VertexId a, VertexId b, int marker) {
+    if (a == b) return;
+    if (const HalfEdge h = tri_.find_edge(a, b); h != kNone) {
+      constrain(h, marker);
+      return;
+    }
+    // Find the face around a whose wedge holds the direction to b.
+    const HalfEdge start = mesh().vertex_half_edge(a);
+    HalfEdge h = start, entry = kNone;
+    do {
+      const VertexId u = mesh().dest(h), w = mesh().apex(h);
+      if (u != kInfiniteVertex && orient2d(P(a), P(u), P(b)) == 0.0 &&
+          strictly_between(P(a), P(b), P(u))) {
+        split_at_vertex(a, u, b, marker);  // u lies on the segment
+        return;
+      }
+      if (u != kInfiniteVertex && w != kInfiniteVertex && orient2d(P(a), P(u), P(b)) > 0.0 &&
+          orient2d(P(a), P(w), P(b)) < 0.0) {
+        entry = mesh().next(h);  // u -> w, crossed by the segment
+        break;
+      }
+      h = mesh().twin(mesh().prev(h));
+    } while (h != start);
+    if (entry == kNone) throw std::logic_error("segment insertion: no face around the start vertex");
+
+    // Walk along a-b collecting crossed edges (each from its right to its left endpoint).
+    crossed_.clear();
+    HalfEdge e = entry;
+    for (;;) {
+      if (mesh().is_constrained(e)) {
+        split_crossing(a, b, e, marker);
+        return;
+      }
+      crossed_.push_back({mesh().origin(e), mesh().dest(e)});
+      const HalfEdge t = mesh().twin(e);
+      const VertexId y = mesh().apex(t);
+      if (y == b) break;
+      const double oy = orient2d(P(a), P(b), P(y));
+      if (oy == 0.0) {
+        split_at_vertex(a, y, b, marker);
+        return;
+      }
+      e = oy > 0.0 ? mesh().next(t) : mesh().prev(t);
+    }
+    remove_crossings(a, b);
+    const HalfEdge ab = tri_.find_edge(a, b);
+    if (ab == kNone) throw std::logic_error("segment insertion: segment not recovered");
+    constrain(ab, marker);
+    restore_delaunay();
+  }
+
+  void split_at_vertex(VertexId a, VertexId mid, VertexId b, int marker) {
+    ++splits_;
+    pending_.push_back({mid, b, marker});
+    pending_.push_back({a, mid, marker});
+  }
+
+  // a-b crosses the constrained edge e = r->l: split both at their intersection point.
+  void split_crossing(VertexId a, VertexId b, HalfEdge e, int marker) {
+    const VertexId r = mesh().origin(e), l = mesh().dest(e);
+    const Point x = intersection(P(a), P(b), P(r), P(l));
+    const auto existing = markers_.find(edge_key(r, l));
+    const int old_marker = existing != markers_.end() ? existing->second : marker;
+    ++splits_;
+    // Rounding can land the point on an endpoint: route the pieces through that vertex.
+    for (const VertexId z : {a, b, r, l}) {
+      if (x == P(z)) {
+        if (z == r || z == l) {
+          split_at_vertex(a, z, b, marker);
+        } else {
+          tri_.mesh().set_constrained(e, false);
+          markers_.erase(edge_key(r, l));
+          pending_.push_back({a, b, marker});  // retried once the old constraint is re-routed
+          pending_.push_back({z, l, old_marker});
+          pending_.push_back({r, z, old_marker});
+        }
+        return;
+      }
+    }
+    markers_.erase(edge_key(r, l));
+    const HalfEdge out = tri_.insert_on_edge(x, e);
+    const VertexId v = mesh().origin(out);
+    ++steiner_;
+    markers_[edge_key(r, v)] = old_marker;
+    markers_[edge_key(v, l)] = old_marker;
+    pending_.push_back({v, b, marker});
+    pending_.push_back({a, v, marker});
+  }
+
+  static Point intersection(const Point& a, const Point& b, const Point& r, const Point& l) {
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double ex = l.x - r.x, ey = l.y - r.y;
+    const double t = ((r.x - a.x) * ey - (r.y - a.y) * ex) / (dx * ey - dy * ex);
+    return {a.x + t * dx, a.y + t * dy};
+  }
+
+  // Sloan's loop: flip crossing edges whose quadrilateral is convex until none crosses.
+  void remove_crossings(VertexId a, VertexId b) {
+    queue_.assign(crossed_.begin(), crossed_.end());
+    created_.clear();
+    std::size_t stalls = 0;
+    while (!queue_.empty()) {
+      const Pair edge = queue_.front();
+      queue_.pop_front();
+      const HalfEdge h = tri_.find_edge(edge.first, edge.second);
+      const VertexId c1 = mesh().apex(h), c2 = mesh().apex(mesh().twin(h));
+      const double o_r = orient2d(P(c1), P(c2), P(edge.first));
+      const double o_l = orient2d(P(c1), P(c2), P(edge.second));
+      if (!((o_r > 0.0 && o_l < 0.0) || (o_r < 0.0 && o_l > 0.0))) {
+        queue_.push_back(edge);  // not convex yet: another flip will make it so
+        if (++stalls > 4 * queue_.size() + 16)
+          throw std::logic_error("segment insertion: no convex quadrilateral left");
+        continue;
+      }
+      stalls = 0;
+      tri_.mesh().flip(h);  // now c1 -> c2
+      const bool touches_segment = c1 == a || c1 == b || c2 == a || c2 == b;
+      const double s1 = orient2d(P(a), P(b), P(c1)), s2 = orient2d(P(a), P(b), P(c2));
+      if (!touches_segment && ((s1 > 0.0 && s2 < 0.0) || (s1 < 0.0 && s2 > 0.0)))
+        queue_.push_back(s1 < 0.0 ? Pair{c1, c2} : Pair{c2, c1});
+      else
+        created_.push_back({c1, c2});
+    }
+  }
+
+  void restore_delaunay() {
+    stack_.clear();
+    for (const Pair& e : created_)
+      if (const HalfEdge h = tri_.find_edge(e.first, e.second); h != kNone) stack_.push_back(h);
+    tri_.make_delaunay(stack_);
+  }
+
+  Triangulation<Mesh>& tri_;
+  std::unordered_map<std::uint64_t, int> markers_;
+  std::vector<Piece> pending_;
+  std::vector<Pair> crossed_;
+  std::deque<Pair> queue_;
+  std::vector<Pair> created_;
+  std::vector<HalfEdge> stack_;
+  std::size_t steiner_ = 0;
+  std::size_t splits_ = 0;
+};
+
+}  // namespace meshstep

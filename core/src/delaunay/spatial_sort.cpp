@@ -1,0 +1,123 @@
+#include "meshstep/delaunay/spatial_sort.hpp"
+
+#include <algorithm>
+#include <array>
+#include <utility>
+
+namespace meshstep {
+namespace {
+
+constexpr int kGridBits = 16;
+constexpr std::uint32_t kGridMax = (1u << kGridBits) - 1;
+constexpr std::size_t kResortRun = 32;  // cells holding more points than this are re-sorted
+constexpr int kMaxDepth = 6;
+constexpr std::size_t kFirstRound = 64;  // BRIO: the smallest round
+
+// Position of cell (x, y) along the Hilbert curve of a 2^16 x 2^16 grid. At each level the
+// quadrant gives two bits of the key, and the coordinates are reflected/swapped into the
+// orientation the curve has inside that quadrant.
+std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y) {
+  std::uint32_t key = 0;
+  for (std::uint32_t s = 1u << (kGridBits - 1); s > 0; s >>= 1) {
+    const std::uint32_t rx = (x & s) ? 1 : 0;
+    const std::uint32_t ry = (y & s) ? 1 : 0;
+    key += s * s * ((3 * rx) ^ ry);
+    if (ry == 0) {
+      if (rx == 1) {
+        x = s - 1 - (x & (s - 1));
+        y = s - 1 - (y & (s - 1));
+      }
+      std::swap(x, y);
+    }
+    x &= s - 1;
+    y &= s - 1;
+  }
+  return key;
+}
+
+std::uint32_t to_grid(double v, double lo, double scale) {
+  const double g = (v - lo) * scale;
+  return g <= 0.0 ? 0u : g >= kGridMax ? kGridMax : static_cast<std::uint32_t>(g);
+}
+
+// LSD radix sort of (key << 32 | index) items by their 32-bit key: digits of 11, 11 and 10
+// bits, small enough for the bucket heads to stay in cache. Stable, so equal keys stay in
+// index order.
+void radix_sort_by_key(std::span<std::uint64_t> items, std::vector<std::uint64_t>& scratch) {
+  scratch.resize(items.size());
+  std::array<std::uint32_t, 2048> count;
+  std::span<std::uint64_t> from = items, to{scratch.data(), items.size()};
+  for (int shift = 32; shift < 64; shift += 11) {
+    count.fill(0);
+    for (const std::uint64_t item : from) ++count[(item >> shift) & 0x7FF];
+    std::uint32_t offset = 0;
+    for (std::uint32_t& c : count) offset += std::exchange(c, offset);
+    for (const std::uint64_t item : from) to[count[(item >> shift) & 0x7FF]++] = item;
+    std::swap(from, to);
+  }
+  // Three passes leave the result in scratch.
+  std::copy(from.begin(), from.end(), items.begin());
+}
+
+void sort_range(std::span<const Point> points, std::span<std::uint64_t> items,
+                std::vector<std::uint64_t>& scratch, int depth) {
+  BBox box;
+  for (const std::uint64_t item : items) box.add(points[item & 0xFFFFFFFFu]);
+  const double wx = box.hi.x - box.lo.x, wy = box.hi.y - box.lo.y;
+  if (!(wx > 0.0 || wy > 0.0)) return;  // all identical: index order it is
+  const double sx = wx > 0.0 ? kGridMax / wx : 0.0, sy = wy > 0.0 ? kGridMax / wy : 0.0;
+  for (std::uint64_t& item : items) {
+    const Point& p = points[item & 0xFFFFFFFFu];
+    const std::uint64_t key = hilbert_key(to_grid(p.x, box.lo.x, sx), to_grid(p.y, box.lo.y, sy));
+    item = (key << 32) | (item & 0xFFFFFFFFu);
+  }
+  radix_sort_by_key(items, scratch);
+  if (depth >= kMaxDepth) return;
+  for (std::size_t begin = 0; begin < items.size();) {
+    std::size_t end = begin + 1;
+    while (end < items.size() && (items[end] >> 32) == (items[begin] >> 32)) ++end;
+    if (end - begin > kResortRun) sort_range(points, items.subspan(begin, end - begin), scratch, depth + 1);
+    begin = end;
+  }
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> hilbert_order(std::span<const Point> points) {
+  std::vector<std::uint64_t> items(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) items[i] = i;
+  std::vector<std::uint64_t> scratch;
+  sort_range(points, items, scratch, 0);
+  scratch = {};
+  std::vector<std::uint32_t> order(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) order[i] = static_cast<std::uint32_t>(items[i]);
+  return order;
+}
+
+std::vector<std::uint32_t> brio_order(std::span<const Point> points) {
+  const std::size_t n = points.size();
+  std::vector<std::uint64_t> items(n);
+  for (std::size_t i = 0; i < n; ++i) items[i] = i;
+  // Fisher-Yates with splitmix64 from a fixed seed: a reproducible random order.
+  std::uint64_t state = 0x2545F4914F6CDD1DULL;
+  for (std::size_t i = n; i > 1; --i) {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    z ^= z >> 31;
+    std::swap(items[i - 1], items[z % i]);
+  }
+  // Rounds: [0, n/2^k) ... [n/4, n/2), [n/2, n), each sorted along the Hilbert curve.
+  std::vector<std::uint64_t> scratch;
+  for (std::size_t end = n; end > 0;) {
+    const std::size_t begin = end > kFirstRound ? end / 2 : 0;
+    sort_range(points, std::span(items).subspan(begin, end - begin), scratch, 0);
+    end = begin;
+  }
+  scratch = {};
+  std::vector<std::uint32_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(items[i]);
+  return order;
+}
+
+}  // namespace meshstep

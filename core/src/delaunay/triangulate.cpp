@@ -1,0 +1,290 @@
+// The triangulate() front door: validation, scaling, insertion order, vertices, segments,
+// removal of holes and outside, and conversion to plain arrays.
+#include "meshstep/delaunay/triangulate.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "meshstep/delaunay/segment_insertion.hpp"
+#include "meshstep/delaunay/spatial_sort.hpp"
+#include "meshstep/delaunay/triangulation.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/mesh/dcel.hpp"
+#include "meshstep/mesh/tds.hpp"
+
+namespace meshstep {
+namespace {
+
+std::string vertex_name(const Pslg& in, std::size_t i) {
+  return "vertex " + std::to_string(i + in.first_index);
+}
+
+void validate(const Pslg& in) {
+  for (std::size_t i = 0; i < in.points.size(); ++i)
+    if (!std::isfinite(in.points[i].x) || !std::isfinite(in.points[i].y))
+      throw InputError(vertex_name(in, i) + " has a coordinate that is not a finite number");
+  for (std::size_t s = 0; s < in.segments.size(); ++s) {
+    const Segment& seg = in.segments[s];
+    if (seg.a >= in.points.size() || seg.b >= in.points.size())
+      throw InputError("segment " + std::to_string(s + in.first_index) +
+                       " names a vertex that does not exist");
+  }
+  for (const Point& p : in.holes)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+      throw InputError("a hole point has a coordinate that is not a finite number");
+}
+
+// Exponent e such that scaling by 2^e brings the largest coordinate near 1, when the input
+// is so large or so small that incircle's fourth powers would overflow or underflow.
+// Scaling by a power of two is exact, so it changes no predicate and the output is unscaled
+// bit for bit.
+int scale_exponent(const Pslg& in) {
+  double largest = 0.0;
+  for (const Point& p : in.points) largest = std::fmax(largest, std::fmax(std::fabs(p.x), std::fabs(p.y)));
+  if (largest == 0.0) return 0;
+  const int e = std::ilogb(largest);
+  return (e > 200 || e < -200) ? -e : 0;
+}
+
+void scale_points(std::vector<Point>& points, int e) {
+  if (e == 0) return;
+  for (Point& p : points) p = {std::ldexp(p.x, e), std::ldexp(p.y, e)};
+}
+
+// The input points, scaled, in insertion order (BRIO rounds along the Hilbert curve): the triangulation numbers its vertices in
+// insertion order, so that consecutive insertions touch neighbouring memory. input_of[i]
+// is the input index of internal vertex i.
+struct SortedPoints {
+  std::vector<Point> points;
+  std::vector<std::uint32_t> input_of;
+};
+
+SortedPoints sort_points(Pslg& in, int exponent) {
+  SortedPoints sorted;
+  sorted.input_of = brio_order(in.points);
+  sorted.points.resize(in.points.size());
+  for (std::size_t i = 0; i < sorted.input_of.size(); ++i) sorted.points[i] = in.points[sorted.input_of[i]];
+  in.points = {};  // release: the triangulation owns the points now
+  scale_points(sorted.points, exponent);
+  return sorted;
+}
+
+template <TriangleMesh Mesh>
+class Builder {
+ public:
+  Builder(Pslg& in, const TriangulateOptions& options, TriangulateReport& report)
+      : Builder(in, options, report, scale_exponent(in)) {}
+
+  TriMesh run() {
+    tri_.insert_all();
+    const std::size_t input_count = input_count_;
+    if (!in_.segments.empty()) {
+      std::vector<VertexId> internal_of(input_count);
+      for (VertexId i = 0; i < input_count; ++i) internal_of[input_of_[i]] = i;
+      for (const Segment& s : in_.segments) {
+        const VertexId a = representative(internal_of[s.a]), b = representative(internal_of[s.b]);
+        if (a != b) segments_.insert(a, b, s.marker);
+      }
+    }
+    report_.duplicate_vertices = tri_.duplicate_count();
+    report_.steiner_vertices = tri_.points().size() - input_count;
+    report_.split_segments = segments_.split_count();
+    report_.mesh_bytes = tri_.mesh().memory_bytes();
+    if (report_.duplicate_vertices > 0)
+      report_.warnings.push_back(std::to_string(report_.duplicate_vertices) +
+                                 " duplicate vertices merged with earlier vertices at the same place");
+    carve();
+    return to_tri_mesh();
+  }
+
+ private:
+  Builder(Pslg& in, const TriangulateOptions& options, TriangulateReport& report, int exponent)
+      : Builder(in, options, report, exponent, sort_points(in, exponent)) {}
+  Builder(Pslg& in, const TriangulateOptions& options, TriangulateReport& report, int exponent,
+          SortedPoints sorted)
+      : in_(in), options_(options), report_(report), exponent_(exponent),
+        input_count_(sorted.points.size()), input_of_(std::move(sorted.input_of)),
+        tri_(std::move(sorted.points), options.insertion), segments_(tri_) {}
+
+  // Input numbering of an internal vertex (Steiner vertices keep theirs, after the input's).
+  std::uint32_t external(VertexId v) const { return v < input_count_ ? input_of_[v] : v; }
+
+  VertexId representative(VertexId v) const {
+    const VertexId m = tri_.merged_into(v);
+    return m == kNone ? v : m;
+  }
+
+  Point scaled(const Point& p) const { return {std::ldexp(p.x, exponent_), std::ldexp(p.y, exponent_)}; }
+
+  // The face holding p (a hole or region point), found by walking from any live face.
+  FaceId face_at(const Point& p) const {
+    const Mesh& m = tri_.mesh();
+    FaceId start = 0;
+    while (!m.is_live(start)) ++start;
+    return m.face(tri_.locate(scaled(p), m.half_edge(start)).half_edge);
+  }
+
+  // Visits the faces reachable from `seed` without crossing a constrained edge whose
+  // stamp is not yet `stamp`, and stamps them.
+  template <class Visit>
+  void flood(FaceId seed, std::vector<std::uint32_t>& stamps, std::uint32_t stamp, Visit&& visit) {
+    const Mesh& m = tri_.mesh();
+    if (stamps[seed] == stamp) return;
+    stack_.clear();
+    stack_.push_back(seed);
+    stamps[seed] = stamp;
+    while (!stack_.empty()) {
+      const FaceId f = stack_.back();
+      stack_.pop_back();
+      visit(f);
+      const HalfEdge first = m.half_edge(f);
+      for (HalfEdge h : {first, m.next(first), m.prev(first)}) {
+        if (m.is_constrained(h)) continue;
+        const HalfEdge t = m.twin(h);
+        if (t == kNone) continue;
+        const FaceId g = m.face(t);
+        if (stamps[g] != stamp) {
+          stamps[g] = stamp;
+          stack_.push_back(g);
+        }
+      }
+    }
+  }
+
+  void carve() {
+    Mesh& m = tri_.mesh();
+    const std::size_t capacity = m.face_capacity();
+    std::vector<std::uint32_t> dead(capacity, 0);
+    const bool eat_outside = !options_.convex_hull && !in_.segments.empty();
+    for (FaceId f = 0; f < capacity; ++f) {
+      if (!m.is_live(f) || !tri_.is_ghost(f)) continue;
+      if (eat_outside)
+        flood(f, dead, 1, [](FaceId) {});
+      else
+        dead[f] = 1;
+    }
+    for (const Point& hole : in_.holes) flood(face_at(hole), dead, 1, [](FaceId) {});
+    if (!in_.regions.empty()) {
+      attribute_.assign(capacity, 0.0);
+      max_area_.assign(capacity, -1.0);
+      std::vector<std::uint32_t> region_of(capacity, 0);
+      for (std::size_t i = 0; i < in_.regions.size(); ++i) {
+        const Region& r = in_.regions[i];
+        const FaceId f = face_at(r.point);
+        if (dead[f]) continue;
+        flood(f, region_of, static_cast<std::uint32_t>(i + 1), [&](FaceId g) {
+          attribute_[g] = r.attribute;
+          max_area_[g] = r.max_area;
+        });
+      }
+    }
+    std::size_t removed_real = 0;
+    for (FaceId f = 0; f < capacity; ++f) {
+      if (!m.is_live(f) || !dead[f]) continue;
+      if (!tri_.is_ghost(f)) ++removed_real;
+      m.remove_face(f);
+    }
+    m.rebuild_vertex_half_edges();
+    report_.removed_triangles = removed_real;
+  }
+
+  TriMesh to_tri_mesh() {
+    const Mesh& m = tri_.mesh();
+    TriMesh out;
+    out.first_index = in_.first_index;
+    out.input_vertex_count = input_count_;
+    out.points.resize(tri_.points().size());
+    for (VertexId v = 0; v < tri_.points().size(); ++v) out.points[external(v)] = tri_.point(v);
+    scale_points(out.points, -exponent_);
+    out.attributes_per_vertex = in_.attributes_per_vertex;
+    out.vertex_attributes = std::move(in_.vertex_attributes);
+    out.vertex_attributes.resize(out.points.size() * out.attributes_per_vertex, 0.0);
+    if (in_.has_vertex_markers) {
+      out.vertex_markers = std::move(in_.vertex_markers);
+      out.vertex_markers.resize(out.points.size(), 0);
+    }
+    out.holes = in_.holes;
+    out.regions = in_.regions;
+    out.has_segment_markers = in_.has_segment_markers;
+
+    std::vector<std::uint32_t> index_of;
+    if (options_.compute_neighbors) index_of.assign(m.face_capacity(), kNoIndex);
+    out.triangles.reserve(m.face_count());
+    for (FaceId f = 0; f < m.face_capacity(); ++f) {
+      if (!m.is_live(f)) continue;
+      const HalfEdge h = m.half_edge(f);
+      if (options_.compute_neighbors) index_of[f] = static_cast<std::uint32_t>(out.triangles.size());
+      out.triangles.push_back({external(m.origin(h)), external(m.dest(h)), external(m.apex(h))});
+      if (!in_.regions.empty()) {
+        out.triangle_attributes.push_back(attribute_[f]);
+        out.triangle_max_area.push_back(max_area_[f]);
+      }
+      for (HalfEdge e : {h, m.next(h), m.prev(h)}) {
+        const HalfEdge t = m.twin(e);
+        const bool boundary = t == kNone;
+        if (!(m.is_constrained(e) || boundary) || (!boundary && m.origin(e) > m.dest(e))) continue;
+        const auto found = segments_.markers().find(segments_.edge_key(m.origin(e), m.dest(e)));
+        const int marker = found != segments_.markers().end() ? found->second : 1;
+        out.segments.push_back({external(m.origin(e)), external(m.dest(e)), marker});
+      }
+    }
+    if (!in_.regions.empty()) out.attributes_per_triangle = 1;
+    if (options_.compute_neighbors) {
+      out.neighbors.reserve(out.triangles.size());
+      for (FaceId f = 0; f < m.face_capacity(); ++f) {
+        if (!m.is_live(f)) continue;
+        const HalfEdge h = m.half_edge(f);
+        std::array<std::uint32_t, 3> n{};
+        // Neighbour i lies across the edge opposite vertex i: edges next(h), prev(h), h.
+        const HalfEdge opposite[3] = {m.next(h), m.prev(h), h};
+        for (int i = 0; i < 3; ++i) {
+          const HalfEdge t = m.twin(opposite[i]);
+          n[i] = t == kNone ? kNoIndex : index_of[m.face(t)];
+        }
+        out.neighbors.push_back(n);
+      }
+    }
+    // Steiner vertices take the marker of the segment they split.
+    if (!out.vertex_markers.empty())
+      for (const Segment& s : out.segments)
+        for (const std::uint32_t v : {s.a, s.b})
+          if (v >= input_count_ && out.vertex_markers[v] == 0) out.vertex_markers[v] = s.marker;
+    return out;
+  }
+
+  Pslg& in_;
+  const TriangulateOptions& options_;
+  TriangulateReport& report_;
+  int exponent_;
+  std::size_t input_count_;
+  std::vector<std::uint32_t> input_of_;
+  Triangulation<Mesh> tri_;
+  SegmentInserter<Mesh> segments_;
+  std::vector<FaceId> stack_;
+  std::vector<double> attribute_, max_area_;
+};
+
+}  // namespace
+
+TriMesh triangulate(Pslg&& input, const TriangulateOptions& options, TriangulateReport* report) {
+  validate(input);
+  TriangulateReport local;
+  TriangulateReport& r = report ? *report : local;
+  switch (options.data_structure) {
+    case DataStructure::tds: return Builder<Tds>(input, options, r).run();
+    case DataStructure::dcel: return Builder<Dcel>(input, options, r).run();
+  }
+  throw std::logic_error("unknown data structure");
+}
+
+TriMesh triangulate(const Pslg& input, const TriangulateOptions& options, TriangulateReport* report) {
+  Pslg copy = input;
+  return triangulate(std::move(copy), options, report);
+}
+
+const char* to_string(DataStructure ds) { return ds == DataStructure::tds ? "tds" : "dcel"; }
+const char* to_string(Insertion insertion) {
+  return insertion == Insertion::flip ? "flip" : "cavity";
+}
+
+}  // namespace meshstep
