@@ -13,24 +13,44 @@ constexpr std::size_t kResortRun = 32;  // cells holding more points than this a
 constexpr int kMaxDepth = 6;
 constexpr std::size_t kFirstRound = 64;  // BRIO: the smallest round
 
-// Position of cell (x, y) along the Hilbert curve of a 2^16 x 2^16 grid. At each level the
-// quadrant gives two bits of the key, and the coordinates are reflected/swapped into the
-// orientation the curve has inside that quadrant.
+// The Hilbert curve, level by level from the top bit: the orientation of the curve inside
+// the current cell is one of four states (whether x and y are swapped, whether both are
+// reflected). A state and the next bit of x and of y give the key's next two bits and the
+// orientation inside the chosen quadrant; the 16 answers are tabulated once.
+struct HilbertStep {
+  std::uint8_t digit;
+  std::uint8_t state;  // bit 0: swapped, bit 1: reflected
+};
+
+constexpr std::array<HilbertStep, 16> make_hilbert_table() {
+  std::array<HilbertStep, 16> table{};
+  for (unsigned state = 0; state < 4; ++state)
+    for (unsigned bits = 0; bits < 4; ++bits) {
+      unsigned x = (bits >> 1) & 1, y = bits & 1;
+      const bool swapped = state & 1, reflected = state & 2;
+      if (reflected) x ^= 1, y ^= 1;
+      if (swapped) std::swap(x, y);
+      unsigned next = state;
+      if (y == 0) {
+        next ^= 1;              // the lower-left and lower-right quadrants swap the axes...
+        if (x == 1) next ^= 2;  // ...and the lower-right one also reflects them
+      }
+      table[state * 4 + bits] = {static_cast<std::uint8_t>((3 * x) ^ y), static_cast<std::uint8_t>(next)};
+    }
+  return table;
+}
+
+constexpr std::array<HilbertStep, 16> kHilbertTable = make_hilbert_table();
+
+// Position of cell (x, y) along the Hilbert curve of a 2^16 x 2^16 grid.
 std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y) {
   std::uint32_t key = 0;
-  for (std::uint32_t s = 1u << (kGridBits - 1); s > 0; s >>= 1) {
-    const std::uint32_t rx = (x & s) ? 1 : 0;
-    const std::uint32_t ry = (y & s) ? 1 : 0;
-    key += s * s * ((3 * rx) ^ ry);
-    if (ry == 0) {
-      if (rx == 1) {
-        x = s - 1 - (x & (s - 1));
-        y = s - 1 - (y & (s - 1));
-      }
-      std::swap(x, y);
-    }
-    x &= s - 1;
-    y &= s - 1;
+  unsigned state = 0;
+  for (int level = kGridBits - 1; level >= 0; --level) {
+    const unsigned bits = (((x >> level) & 1) << 1) | ((y >> level) & 1);
+    const HilbertStep step = kHilbertTable[state * 4 + bits];
+    key = (key << 2) | step.digit;
+    state = step.state;
   }
   return key;
 }

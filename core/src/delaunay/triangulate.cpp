@@ -2,7 +2,9 @@
 // removal of holes and outside, and conversion to plain arrays.
 #include "meshstep/delaunay/triangulate.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <string>
 
 #include "meshstep/delaunay/segment_insertion.hpp"
@@ -151,41 +153,70 @@ class Builder {
     }
   }
 
+  // Removes the ghost faces, the faces of holes and, unless convex_hull (or when there are
+  // no segments), every face reachable from outside without crossing a segment. Records the
+  // unconstrained edges that become boundary, for the output's segment list.
   void carve() {
     Mesh& m = tri_.mesh();
-    const std::size_t capacity = m.face_capacity();
-    std::vector<std::uint32_t> dead(capacity, 0);
-    const bool eat_outside = !options_.convex_hull && !in_.segments.empty();
-    for (FaceId f = 0; f < capacity; ++f) {
-      if (!m.is_live(f) || !tri_.is_ghost(f)) continue;
-      if (eat_outside)
-        flood(f, dead, 1, [](FaceId) {});
-      else
-        dead[f] = 1;
+    std::vector<FaceId> ghosts;
+    const HalfEdge around_infinity = m.vertex_half_edge(kInfiniteVertex);
+    for (HalfEdge h = around_infinity;;) {
+      ghosts.push_back(m.face(h));
+      h = m.twin(m.prev(h));
+      if (h == around_infinity) break;
     }
-    for (const Point& hole : in_.holes) flood(face_at(hole), dead, 1, [](FaceId) {});
-    if (!in_.regions.empty()) {
-      attribute_.assign(capacity, 0.0);
-      max_area_.assign(capacity, -1.0);
-      std::vector<std::uint32_t> region_of(capacity, 0);
-      for (std::size_t i = 0; i < in_.regions.size(); ++i) {
-        const Region& r = in_.regions[i];
-        const FaceId f = face_at(r.point);
-        if (dead[f]) continue;
-        flood(f, region_of, static_cast<std::uint32_t>(i + 1), [&](FaceId g) {
-          attribute_[g] = r.attribute;
-          max_area_[g] = r.max_area;
-        });
+    std::vector<std::uint32_t> dead(m.face_capacity(), 0);
+    std::vector<FaceId> removed;
+    const auto remove = [&](FaceId f) { removed.push_back(f); };
+    const bool eat_outside = !options_.convex_hull && !in_.segments.empty();
+    for (const FaceId f : ghosts) {
+      if (eat_outside) {
+        flood(f, dead, 1, remove);
+      } else if (!dead[f]) {
+        dead[f] = 1;
+        removed.push_back(f);
       }
     }
-    std::size_t removed_real = 0;
-    for (FaceId f = 0; f < capacity; ++f) {
-      if (!m.is_live(f) || !dead[f]) continue;
-      if (!tri_.is_ghost(f)) ++removed_real;
-      m.remove_face(f);
+    for (const Point& hole : in_.holes) flood(face_at(hole), dead, 1, remove);
+    assign_regions(dead);
+
+    // Constrained edges that keep a triangle on at least one side, decided while the mesh
+    // is still closed (afterwards a vertex where two parts of the domain touch has two
+    // separate fans, and an edge search from it could miss one).
+    for (const auto& [key, marker] : segments_.markers()) {
+      const auto a = static_cast<VertexId>(key >> 32), b = static_cast<VertexId>(key & 0xFFFFFFFFu);
+      const HalfEdge h = tri_.find_edge(a, b);
+      if (h != kNone && (!dead[m.face(h)] || !dead[m.face(m.twin(h))]))
+        kept_segments_.push_back({a, b, marker});
     }
+    for (const FaceId f : removed) {
+      const HalfEdge first = m.half_edge(f);
+      for (HalfEdge h : {first, m.next(first), m.prev(first)}) {
+        const HalfEdge t = m.twin(h);
+        if (t != kNone && !dead[m.face(t)] && !m.is_constrained(t))
+          new_boundary_.push_back({m.origin(t), m.dest(t)});
+      }
+    }
+    report_.removed_triangles = removed.size() - ghosts.size();  // ghosts are always among them
+    for (const FaceId f : removed) m.remove_face(f);
     m.rebuild_vertex_half_edges();
-    report_.removed_triangles = removed_real;
+  }
+
+  void assign_regions(const std::vector<std::uint32_t>& dead) {
+    if (in_.regions.empty()) return;
+    const std::size_t capacity = tri_.mesh().face_capacity();
+    attribute_.assign(capacity, 0.0);
+    max_area_.assign(capacity, -1.0);
+    std::vector<std::uint32_t> region_of(capacity, 0);
+    for (std::size_t i = 0; i < in_.regions.size(); ++i) {
+      const Region& r = in_.regions[i];
+      const FaceId f = face_at(r.point);
+      if (dead[f]) continue;
+      flood(f, region_of, static_cast<std::uint32_t>(i + 1), [&](FaceId g) {
+        attribute_[g] = r.attribute;
+        max_area_[g] = r.max_area;
+      });
+    }
   }
 
   TriMesh to_tri_mesh() {
@@ -219,15 +250,15 @@ class Builder {
         out.triangle_attributes.push_back(attribute_[f]);
         out.triangle_max_area.push_back(max_area_[f]);
       }
-      for (HalfEdge e : {h, m.next(h), m.prev(h)}) {
-        const HalfEdge t = m.twin(e);
-        const bool boundary = t == kNone;
-        if (!(m.is_constrained(e) || boundary) || (!boundary && m.origin(e) > m.dest(e))) continue;
-        const auto found = segments_.markers().find(segments_.edge_key(m.origin(e), m.dest(e)));
-        const int marker = found != segments_.markers().end() ? found->second : 1;
-        out.segments.push_back({external(m.origin(e)), external(m.dest(e)), marker});
-      }
     }
+    // Segments: the constrained edges that still bound a triangle, and the unconstrained
+    // edges that carving turned into boundary (convex hull edges of a point set), marker 1.
+    for (const Segment& s : kept_segments_) out.segments.push_back({external(s.a), external(s.b), s.marker});
+    for (const auto& [a, b] : new_boundary_) out.segments.push_back({external(a), external(b), 1});
+    std::sort(out.segments.begin(), out.segments.end(), [](const Segment& s, const Segment& t) {
+      return std::min(s.a, s.b) != std::min(t.a, t.b) ? std::min(s.a, s.b) < std::min(t.a, t.b)
+                                                      : std::max(s.a, s.b) < std::max(t.a, t.b);
+    });
     if (!in_.regions.empty()) out.attributes_per_triangle = 1;
     if (options_.compute_neighbors) {
       out.neighbors.reserve(out.triangles.size());
@@ -262,6 +293,8 @@ class Builder {
   SegmentInserter<Mesh> segments_;
   std::vector<FaceId> stack_;
   std::vector<double> attribute_, max_area_;
+  std::vector<std::pair<VertexId, VertexId>> new_boundary_;
+  std::vector<Segment> kept_segments_;
 };
 
 }  // namespace

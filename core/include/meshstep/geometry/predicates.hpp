@@ -27,7 +27,7 @@ inline constexpr double kInCircleErrBound = (10.0 + 96.0 * kEpsilon) * kEpsilon;
 
 // > 0 when a, b, c turn counterclockwise, < 0 clockwise, 0 when collinear.
 // The magnitude is an approximation of twice the signed area; only the sign is exact.
-inline double orient2d(const Point& a, const Point& b, const Point& c) {
+[[gnu::always_inline]] inline double orient2d(const Point& a, const Point& b, const Point& c) {
   const double detleft = (a.x - c.x) * (b.y - c.y);
   const double detright = (a.y - c.y) * (b.x - c.x);
   const double det = detleft - detright;
@@ -41,7 +41,7 @@ inline double orient2d(const Point& a, const Point& b, const Point& c) {
 
 // > 0 when d lies strictly inside the circle through a, b, c (which must be
 // counterclockwise), < 0 strictly outside, 0 on it. Only the sign is exact.
-inline double incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
+[[gnu::always_inline]] inline double incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
   const double adx = a.x - d.x, ady = a.y - d.y;
   const double bdx = b.x - d.x, bdy = b.y - d.y;
   const double cdx = c.x - d.x, cdy = c.y - d.y;
@@ -66,7 +66,7 @@ inline double incircle(const Point& a, const Point& b, const Point& c, const Poi
 // lexicographic order. Never 0 unless all four points are collinear, so the Delaunay
 // triangulation of any point set (cocircular grids included) becomes unique and every
 // insertion strategy and data structure reaches the same one.
-inline int incircle_perturbed(const Point& a, const Point& b, const Point& c, const Point& d) {
+[[gnu::always_inline]] inline int incircle_perturbed(const Point& a, const Point& b, const Point& c, const Point& d) {
   const double s = incircle(a, b, c, d);
   if (s > 0.0) return 1;
   if (s < 0.0) return -1;

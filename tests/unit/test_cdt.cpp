@@ -1,0 +1,177 @@
+// Constrained Delaunay triangulation of PSLGs: holes, crossings, T-junctions, overlaps.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <set>
+
+#include "meshstep/error.hpp"
+#include "triangulate_support.hpp"
+
+namespace meshstep {
+namespace {
+
+using testing::triangulate_everywhere;
+
+double area(const TriMesh& m) {
+  double total = 0.0;
+  for (const auto& t : m.triangles) {
+    const Point &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]];
+    total += 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  }
+  return total;
+}
+
+// A closed polygon's vertices and segments appended to `in`.
+void add_loop(Pslg& in, const std::vector<Point>& loop, int marker = 1) {
+  const auto base = static_cast<std::uint32_t>(in.points.size());
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    in.points.push_back(loop[i]);
+    in.segments.push_back({base + std::uint32_t(i), base + std::uint32_t((i + 1) % loop.size()), marker});
+  }
+}
+
+Pslg square_with_square_hole() {
+  Pslg in;
+  add_loop(in, {{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+  add_loop(in, {{1, 1}, {3, 1}, {3, 3}, {1, 3}}, 2);
+  in.holes.push_back({2, 2});
+  return in;
+}
+
+TEST(Cdt, HoleIsCarvedOut) {
+  const TriMesh m = triangulate_everywhere(square_with_square_hole());
+  EXPECT_DOUBLE_EQ(area(m), 16.0 - 4.0);
+  EXPECT_EQ(m.triangles.size(), 8u);
+}
+
+TEST(Cdt, WithoutSegmentsTheConvexHullIsKept) {
+  Pslg in = square_with_square_hole();
+  in.segments.clear();
+  in.holes.clear();
+  EXPECT_DOUBLE_EQ(area(triangulate_everywhere(in)), 16.0);
+}
+
+TEST(Cdt, ConvexHullOptionKeepsTrianglesOutsideSegments) {
+  // Only one side of the box is a segment (like Triangle's box.poly).
+  Pslg in;
+  in.points = {{0, 0}, {3, 0}, {3, 2}, {0, 2}, {1, 1}};
+  in.segments = {{0, 1, 1}};
+  EXPECT_DOUBLE_EQ(area(triangulate_everywhere(in, true)), 6.0);
+  // Without it everything outside the (open) segment set goes.
+  EXPECT_EQ(triangulate(in).triangles.size(), 0u);
+}
+
+TEST(Cdt, CrossingSegmentsAreSplitAtTheirIntersection) {
+  Pslg in;
+  add_loop(in, {{0, 0}, {2, 0}, {2, 2}, {0, 2}});
+  in.segments.push_back({0, 2, 5});  // diagonals cross at (1, 1)
+  in.segments.push_back({1, 3, 6});
+  TriangulateReport report;
+  const TriMesh m = triangulate_everywhere(in, false, &report);
+  EXPECT_EQ(report.steiner_vertices, 1u);
+  ASSERT_EQ(m.points.size(), 5u);
+  EXPECT_EQ(m.points[4], (Point{1, 1}));
+  EXPECT_EQ(m.triangles.size(), 4u);
+  // The four half-diagonals are constrained edges carrying their segment's marker.
+  std::multiset<int> markers;
+  for (const Segment& s : m.segments)
+    if (s.a == 4 || s.b == 4) markers.insert(s.marker);
+  EXPECT_EQ(markers, (std::multiset<int>{5, 5, 6, 6}));
+}
+
+TEST(Cdt, VertexOnASegmentSplitsIt) {
+  Pslg in;
+  add_loop(in, {{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+  in.points.push_back({2, 2});
+  in.points.push_back({1, 1});
+  in.points.push_back({3, 3});
+  in.segments.push_back({0, 2, 7});  // passes through (1,1), (2,2), (3,3)
+  TriangulateReport report;
+  const TriMesh m = triangulate_everywhere(in, false, &report);
+  EXPECT_EQ(report.steiner_vertices, 0u);
+  EXPECT_GE(report.split_segments, 3u);
+  std::size_t diagonal_pieces = 0;
+  for (const Segment& s : m.segments) diagonal_pieces += s.marker == 7;
+  EXPECT_EQ(diagonal_pieces, 4u);
+}
+
+TEST(Cdt, CollinearOverlappingSegmentsMerge) {
+  Pslg in;
+  in.points = {{0, 0}, {2, 0}, {1, 0}, {3, 0}, {1.5, 2}, {1.5, -2}};
+  in.segments = {{0, 1, 1}, {2, 3, 1}, {0, 3, 1}, {1, 2, 1}};
+  const TriMesh m = triangulate_everywhere(in, true);
+  std::size_t on_axis = 0;
+  for (const Segment& s : m.segments) on_axis += m.points[s.a].y == 0 && m.points[s.b].y == 0;
+  EXPECT_EQ(on_axis, 3u);  // 0-1, 1-2, 2-3: each piece once
+}
+
+TEST(Cdt, DuplicateAndZeroLengthSegmentsAreHarmless) {
+  Pslg in = square_with_square_hole();
+  in.segments.push_back(in.segments[0]);
+  in.segments.push_back({1, 1, 3});
+  in.points.push_back(in.points[0]);  // duplicate vertex used by a segment
+  in.segments.push_back({8, 1, 4});   // ... repeating the bottom side
+  EXPECT_DOUBLE_EQ(area(triangulate_everywhere(in)), 12.0);
+}
+
+TEST(Cdt, RegionsCarryAttributesAndAreaBounds) {
+  Pslg in;
+  add_loop(in, {{0, 0}, {2, 0}, {2, 1}, {0, 1}});
+  in.points.push_back({1, 0});
+  in.points.push_back({1, 1});
+  in.segments.push_back({4, 5, 1});  // splits the box in two
+  in.regions.push_back({{0.5, 0.5}, 10.0, 0.1});
+  in.regions.push_back({{1.5, 0.5}, 20.0, -1.0});
+  const TriMesh m = triangulate_everywhere(in);
+  ASSERT_EQ(m.triangle_attributes.size(), m.triangles.size());
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    double cx = 0;
+    for (const auto v : m.triangles[t]) cx += m.points[v].x / 3;
+    EXPECT_EQ(m.triangle_attributes[t], cx < 1 ? 10.0 : 20.0);
+    EXPECT_EQ(m.triangle_max_area[t], cx < 1 ? 0.1 : -1.0);
+  }
+}
+
+TEST(Cdt, RandomCrossingSegmentsInABox) {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Pslg in;
+  add_loop(in, {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  for (int i = 0; i < 60; ++i) {
+    const auto a = static_cast<std::uint32_t>(in.points.size());
+    in.points.push_back({u(rng), u(rng)});
+    in.points.push_back({u(rng), u(rng)});
+    in.segments.push_back({a, a + 1, 2});
+  }
+  TriangulateReport report;
+  const TriMesh m = triangulate_everywhere(in, false, &report);
+  EXPECT_GT(report.steiner_vertices, 100u);
+  EXPECT_NEAR(area(m), 1.0, 1e-12);
+}
+
+TEST(Cdt, SegmentsAlongAGridLineThroughCocircularPoints) {
+  Pslg in;
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j) in.points.push_back({double(i), double(j)});
+  // Long segments through many grid vertices, and crossing diagonals.
+  in.segments = {{0, 11, 1}, {0, 143, 2}, {11, 132, 3}, {132, 143, 1}, {5, 137, 4}, {60, 71, 5}};
+  TriangulateReport report;
+  triangulate_everywhere(in, true, &report);
+  EXPECT_GT(report.split_segments, 20u);
+}
+
+TEST(Cdt, SegmentNamingAMissingVertexIsAnInputError) {
+  Pslg in = square_with_square_hole();
+  in.segments.push_back({0, 99, 1});
+  EXPECT_THROW(triangulate(in), InputError);
+}
+
+TEST(Cdt, HolePointOutsideTheDomainIsIgnored) {
+  Pslg in = square_with_square_hole();
+  in.holes.push_back({100, 100});
+  EXPECT_DOUBLE_EQ(area(triangulate_everywhere(in)), 12.0);
+}
+
+}  // namespace
+}  // namespace meshstep

@@ -1,0 +1,63 @@
+// Helpers shared by the triangulation tests: run every data structure x insertion
+// strategy, check each result independently, and demand identical triangle sets.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "meshstep/check/mesh_check.hpp"
+#include "meshstep/check/quality.hpp"
+#include "meshstep/delaunay/triangulate.hpp"
+
+namespace meshstep::testing {
+
+inline std::vector<TriangulateOptions> all_configurations(bool convex_hull = false) {
+  std::vector<TriangulateOptions> configs;
+  for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel})
+    for (const Insertion ins : {Insertion::flip, Insertion::cavity}) {
+      TriangulateOptions o;
+      o.data_structure = ds;
+      o.insertion = ins;
+      o.convex_hull = convex_hull;
+      o.compute_neighbors = true;
+      configs.push_back(o);
+    }
+  return configs;
+}
+
+inline std::string describe(const TriangulateOptions& o) {
+  return std::string(to_string(o.data_structure)) + "/" + to_string(o.insertion);
+}
+
+// Triangulates `input` with every configuration; each mesh must pass the checker, and all
+// must have the same triangles. Returns the first mesh.
+inline TriMesh triangulate_everywhere(const Pslg& input, bool convex_hull = false,
+                                      TriangulateReport* first_report = nullptr) {
+  TriMesh first;
+  std::vector<std::array<std::uint32_t, 3>> reference;
+  bool have_reference = false;
+  for (const TriangulateOptions& o : all_configurations(convex_hull)) {
+    TriangulateReport report;
+    TriMesh mesh = triangulate(input, o, &report);
+    const CheckReport check = check_mesh(mesh, &input);
+    EXPECT_TRUE(check.ok) << describe(o) << ": "
+                          << (check.problems.empty() ? std::string() : check.problems.front());
+    const auto canonical = canonical_triangles(mesh);
+    if (!have_reference) {
+      reference = canonical;
+      first = std::move(mesh);
+      if (first_report) *first_report = report;
+      have_reference = true;
+    } else {
+      EXPECT_EQ(canonical, reference) << describe(o) << " differs from " << describe(all_configurations()[0]);
+    }
+  }
+  return first;
+}
+
+inline std::filesystem::path shared_data() { return MESHSTEP_SHARED_DATA; }
+
+}  // namespace meshstep::testing
