@@ -42,17 +42,18 @@ constexpr std::array<HilbertStep, 16> make_hilbert_table() {
 
 constexpr std::array<HilbertStep, 16> kHilbertTable = make_hilbert_table();
 
-// Position of cell (x, y) along the Hilbert curve of a 2^16 x 2^16 grid.
-std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y) {
+// Position of cell (x, y) along the Hilbert curve of a 2^16 x 2^16 grid, to `levels`
+// levels (the key's low bits stay 0 below that: coarser, cheaper keys for small rounds).
+std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y, int levels = kGridBits) {
   std::uint32_t key = 0;
   unsigned state = 0;
-  for (int level = kGridBits - 1; level >= 0; --level) {
+  for (int level = kGridBits - 1; level >= kGridBits - levels; --level) {
     const unsigned bits = (((x >> level) & 1) << 1) | ((y >> level) & 1);
     const HilbertStep step = kHilbertTable[state * 4 + bits];
     key = (key << 2) | step.digit;
     state = step.state;
   }
-  return key;
+  return key << (2 * (kGridBits - levels));
 }
 
 std::uint32_t to_grid(double v, double lo, double scale) {
@@ -86,9 +87,13 @@ void sort_range(std::span<const Point> points, std::span<std::uint64_t> items,
   const double wx = box.hi.x - box.lo.x, wy = box.hi.y - box.lo.y;
   if (!(wx > 0.0 || wy > 0.0)) return;  // all identical: index order it is
   const double sx = wx > 0.0 ? kGridMax / wx : 0.0, sy = wy > 0.0 ? kGridMax / wy : 0.0;
+  // About 16 cells per point: enough levels to order the points, no more.
+  int levels = 2;
+  while (levels < kGridBits && (std::size_t{1} << (2 * levels)) < 16 * items.size()) ++levels;
   for (std::uint64_t& item : items) {
     const Point& p = points[item & 0xFFFFFFFFu];
-    const std::uint64_t key = hilbert_key(to_grid(p.x, box.lo.x, sx), to_grid(p.y, box.lo.y, sy));
+    const std::uint64_t key =
+        hilbert_key(to_grid(p.x, box.lo.x, sx), to_grid(p.y, box.lo.y, sy), levels);
     item = (key << 32) | (item & 0xFFFFFFFFu);
   }
   radix_sort_by_key(items, scratch);

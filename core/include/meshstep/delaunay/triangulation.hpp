@@ -163,25 +163,24 @@ class Triangulation {
         entered = false;
         continue;
       }
-      // A real face a, b, c.
+      // A real face a, b, c: h = a->b, hn = b->c, hp = c->a.
       const HalfEdge hn = mesh_.next(h), hp = mesh_.prev(h);
-      if (!entered) {
-        const double o = orient2d(points_[a], points_[b], p);
-        if (o < 0.0) {
-          h = mesh_.twin(h);
-          entered = true;
-          continue;
-        }
+      const Point &pa = points_[a], &pb = points_[b], &pc = points_[c];
+      if (!entered && orient2d(pa, pb, p) < 0.0) {
+        h = mesh_.twin(h);
+        entered = true;
+        continue;
       }
       const bool swap = next_random() & 1u;
       const HalfEdge first = swap ? hp : hn, second = swap ? hn : hp;
-      const double o1 = orient2d(points_[mesh_.origin(first)], points_[mesh_.dest(first)], p);
+      const double o_bc = orient2d(pb, pc, p);
+      const double o_ca = orient2d(pc, pa, p);
+      const double o1 = swap ? o_ca : o_bc, o2 = swap ? o_bc : o_ca;
       if (o1 < 0.0) {
         h = mesh_.twin(first);
         entered = true;
         continue;
       }
-      const double o2 = orient2d(points_[mesh_.origin(second)], points_[mesh_.dest(second)], p);
       if (o2 < 0.0) {
         h = mesh_.twin(second);
         entered = true;

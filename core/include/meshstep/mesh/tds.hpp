@@ -73,13 +73,17 @@ class Tds {
   }
 
   HalfEdge flip(HalfEdge h) {
-    const HalfEdge t = twin(h);
-    assert(t != kNone);
-    const FaceId f = face(h), g = face(t);
-    const VertexId a = origin(h), b = dest(h), c = apex(h), d = apex(t);
+    // Face-local indices computed once: this runs about three times per inserted point.
+    const FaceId f = h / 3, g = (twins_[h] & kTwinMask) / 3;
+    const HalfEdge t = twins_[h] & kTwinMask;
+    assert(t != kTwinMask);
+    const unsigned i = h - 3 * f, j = t - 3 * g;
+    const unsigned i1 = kNext[i], i2 = kNext[i1], j1 = kNext[j], j2 = kNext[j1];
+    const VertexId a = vertices_[3 * f + i], b = vertices_[3 * f + i1], c = vertices_[3 * f + i2];
+    const VertexId d = vertices_[3 * g + j2];
     // Outer edges of the quadrilateral a, d, b, c and what lies across them.
-    const std::uint32_t across_ca = twins_[prev(h)], across_bc = twins_[next(h)];
-    const std::uint32_t across_ad = twins_[next(t)], across_db = twins_[prev(t)];
+    const std::uint32_t across_bc = twins_[3 * f + i1], across_ca = twins_[3 * f + i2];
+    const std::uint32_t across_ad = twins_[3 * g + j1], across_db = twins_[3 * g + j2];
     set_face(f, c, a, d);  // c->a, a->d, d->c
     set_face(g, d, b, c);  // d->b, b->c, c->d
     relink(3 * f + 0, across_ca);
@@ -187,6 +191,7 @@ class Tds {
 
  private:
   static constexpr std::uint32_t kConstrainedBit = 0x80000000u;
+  static constexpr unsigned kNext[3] = {1, 2, 0};
   static constexpr std::uint32_t kTwinMask = 0x7FFFFFFFu;  // also "no twin"
 
   void set_bit(HalfEdge h, bool on) {
