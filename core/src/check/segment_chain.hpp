@@ -1,0 +1,28 @@
+// Finding the chain of mesh edges that covers one input segment.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "check/vertex_adjacency.hpp"
+#include "meshstep/geometry/point.hpp"
+
+namespace meshstep::check_detail {
+
+struct SegmentChain {
+  bool found = false;
+  // found: the chain's vertices from s to e. Otherwise the greedy walk up to where it
+  // stopped, so the report can say where coverage breaks.
+  std::vector<std::uint32_t> vertices;
+};
+
+// A chain of mesh edges from s to e (distinct positions) in which every step moves
+// strictly forward along se and every vertex lies on se: exactly (orient2d == 0) or within
+// 1e-9 |se| of its line, which admits rounded crossing points of two segments. Only edges
+// (v, w) with allowed(v, w) are used.
+using EdgeFilter = std::function<bool(std::uint32_t, std::uint32_t)>;
+SegmentChain find_segment_chain(const std::vector<Point>& points, const Adjacency& adjacency,
+                                std::uint32_t s, std::uint32_t e, const EdgeFilter& allowed);
+
+}  // namespace meshstep::check_detail
