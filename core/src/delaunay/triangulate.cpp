@@ -111,6 +111,17 @@ class Builder {
   // Input numbering of an internal vertex (Steiner vertices keep theirs, after the input's).
   std::uint32_t external(VertexId v) const { return v < input_count_ ? input_of_[v] : v; }
 
+  // Duplicates are merged into whichever copy was inserted first, which the shuffled
+  // insertion order makes arbitrary: let the output use the copy that comes first in the
+  // input instead, as Triangle does.
+  void prefer_first_duplicates() {
+    if (tri_.duplicate_count() == 0) return;
+    for (VertexId v = 0; v < input_count_; ++v) {
+      const VertexId r = tri_.merged_into(v);
+      if (r != kNone && input_of_[v] < input_of_[r]) std::swap(input_of_[v], input_of_[r]);
+    }
+  }
+
   VertexId representative(VertexId v) const {
     const VertexId m = tri_.merged_into(v);
     return m == kNone ? v : m;
@@ -220,6 +231,7 @@ class Builder {
   }
 
   TriMesh to_tri_mesh() {
+    prefer_first_duplicates();
     const Mesh& m = tri_.mesh();
     TriMesh out;
     out.first_index = in_.first_index;
