@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <utility>
 
 namespace meshstep {
@@ -61,6 +62,28 @@ std::uint32_t to_grid(double v, double lo, double scale) {
   return g <= 0.0 ? 0u : g >= kGridMax ? kGridMax : static_cast<std::uint32_t>(g);
 }
 
+// Maps points of a box to Hilbert keys, with about 16 grid cells per point.
+class KeyGrid {
+ public:
+  KeyGrid(const BBox& box, std::size_t count) : lo_(box.lo) {
+    const double wx = box.hi.x - box.lo.x, wy = box.hi.y - box.lo.y;
+    valid_ = wx > 0.0 || wy > 0.0;
+    sx_ = wx > 0.0 ? kGridMax / wx : 0.0;
+    sy_ = wy > 0.0 ? kGridMax / wy : 0.0;
+    while (levels_ < kGridBits && (std::size_t{1} << (2 * levels_)) < 16 * count) ++levels_;
+  }
+  bool valid() const { return valid_; }
+  std::uint32_t key(const Point& p) const {
+    return hilbert_key(to_grid(p.x, lo_.x, sx_), to_grid(p.y, lo_.y, sy_), levels_);
+  }
+
+ private:
+  Point lo_;
+  double sx_ = 0.0, sy_ = 0.0;
+  int levels_ = 2;
+  bool valid_ = false;
+};
+
 // LSD radix sort of (key << 32 | index) items by their 32-bit key: digits of 11, 11 and 10
 // bits, small enough for the bucket heads to stay in cache. Stable, so equal keys stay in
 // index order.
@@ -81,21 +104,12 @@ void radix_sort_by_key(std::span<std::uint64_t> items, std::vector<std::uint64_t
 }
 
 void sort_range(std::span<const Point> points, std::span<std::uint64_t> items,
-                std::vector<std::uint64_t>& scratch, int depth) {
-  BBox box;
-  for (const std::uint64_t item : items) box.add(points[item & 0xFFFFFFFFu]);
-  const double wx = box.hi.x - box.lo.x, wy = box.hi.y - box.lo.y;
-  if (!(wx > 0.0 || wy > 0.0)) return;  // all identical: index order it is
-  const double sx = wx > 0.0 ? kGridMax / wx : 0.0, sy = wy > 0.0 ? kGridMax / wy : 0.0;
-  // About 16 cells per point: enough levels to order the points, no more.
-  int levels = 2;
-  while (levels < kGridBits && (std::size_t{1} << (2 * levels)) < 16 * items.size()) ++levels;
-  for (std::uint64_t& item : items) {
-    const Point& p = points[item & 0xFFFFFFFFu];
-    const std::uint64_t key =
-        hilbert_key(to_grid(p.x, box.lo.x, sx), to_grid(p.y, box.lo.y, sy), levels);
-    item = (key << 32) | (item & 0xFFFFFFFFu);
-  }
+                std::vector<std::uint64_t>& scratch, int depth);
+
+// Items already carry their keys: sort by key, then order again the cells that hold many
+// points, each inside its own box.
+void sort_by_keys(std::span<const Point> points, std::span<std::uint64_t> items,
+                  std::vector<std::uint64_t>& scratch, int depth) {
   radix_sort_by_key(items, scratch);
   if (depth >= kMaxDepth) return;
   for (std::size_t begin = 0; begin < items.size();) {
@@ -104,6 +118,18 @@ void sort_range(std::span<const Point> points, std::span<std::uint64_t> items,
     if (end - begin > kResortRun) sort_range(points, items.subspan(begin, end - begin), scratch, depth + 1);
     begin = end;
   }
+}
+
+// Keys of `items` on a grid over their own bounding box, as fine as their number needs.
+void sort_range(std::span<const Point> points, std::span<std::uint64_t> items,
+                std::vector<std::uint64_t>& scratch, int depth) {
+  BBox box;
+  for (const std::uint64_t item : items) box.add(points[item & 0xFFFFFFFFu]);
+  const KeyGrid grid(box, items.size());
+  if (!grid.valid()) return;  // all identical: index order it is
+  for (std::uint64_t& item : items)
+    item = (std::uint64_t{grid.key(points[item & 0xFFFFFFFFu])} << 32) | (item & 0xFFFFFFFFu);
+  sort_by_keys(points, items, scratch, depth);
 }
 
 }  // namespace
@@ -121,24 +147,45 @@ std::vector<std::uint32_t> hilbert_order(std::span<const Point> points) {
 
 std::vector<std::uint32_t> brio_order(std::span<const Point> points) {
   const std::size_t n = points.size();
-  std::vector<std::uint64_t> items(n);
-  for (std::size_t i = 0; i < n; ++i) items[i] = i;
-  // Fisher-Yates with splitmix64 from a fixed seed: a reproducible random order.
-  std::uint64_t state = 0x2545F4914F6CDD1DULL;
-  for (std::size_t i = n; i > 1; --i) {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+  // Rounds: round 0 takes about half the points, round 1 a quarter, ..., the last round
+  // (inserted first) the remaining few dozen. A point's round comes from a hash of its
+  // index, a reproducible coin-flipping that needs no shuffle of the data.
+  int rounds = 1;
+  while ((n >> rounds) > kFirstRound) ++rounds;
+  std::vector<std::uint32_t> round_size(rounds, 0);
+  const auto round_of = [rounds](std::uint64_t i) {
+    std::uint64_t z = i * 0x9E3779B97F4A7C15ULL + 0x2545F4914F6CDD1DULL;
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
     z ^= z >> 31;
-    std::swap(items[i - 1], items[z % i]);
+    return std::min(std::countr_one(z), rounds - 1);
+  };
+  // One sequential pass over the points computes every key on the global grid; from here
+  // on the sort moves (key, index) pairs and never reads the points in random order.
+  BBox box;
+  for (const Point& p : points) box.add(p);
+  const KeyGrid grid(box, n);
+  std::vector<std::uint64_t> keyed(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    keyed[i] = (std::uint64_t{grid.valid() ? grid.key(points[i]) : 0u} << 32) | i;
+    ++round_size[round_of(i)];
   }
-  // Rounds: [0, n/2^k) ... [n/4, n/2), [n/2, n), each sorted along the Hilbert curve.
+  // Bucket by round, last round first, keeping index order inside a round.
+  std::vector<std::size_t> start(rounds + 1, 0);
+  std::size_t offset = 0;
+  for (int r = rounds - 1; r >= 0; --r) {
+    start[r] = offset;
+    offset += round_size[r];
+  }
+  std::vector<std::uint64_t> items(n);
+  {
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) items[next[round_of(i)]++] = keyed[i];
+  }
+  keyed = {};
   std::vector<std::uint64_t> scratch;
-  for (std::size_t end = n; end > 0;) {
-    const std::size_t begin = end > kFirstRound ? end / 2 : 0;
-    sort_range(points, std::span(items).subspan(begin, end - begin), scratch, 0);
-    end = begin;
-  }
+  for (int r = rounds - 1; r >= 0; --r)
+    sort_by_keys(points, std::span(items).subspan(start[r], round_size[r]), scratch, 0);
   scratch = {};
   std::vector<std::uint32_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(items[i]);
