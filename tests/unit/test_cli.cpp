@@ -133,7 +133,7 @@ TEST_F(Cli, CheckFailsOnABrokenMesh) {
 // Every malformed input: exit 1, one "meshstep: error: FILE:LINE: message" line, no crash,
 // and no output files left behind.
 TEST_F(Cli, MalformedInputsGiveFileLineErrors) {
-  const std::array<std::pair<const char*, const char*>, 9> cases{{
+  const std::array<std::pair<const char*, std::string>, 9> cases{{
       {"empty.node", ""},
       {"truncated.node", "3 2 0 0\n1 0 0\n2 1 0\n"},
       {"word.node", "3 2 0 0\n1 0 0\n2 one 0\n3 0 1\n"},
@@ -141,7 +141,7 @@ TEST_F(Cli, MalformedInputsGiveFileLineErrors) {
       {"inf.node", "3 2 0 0\n1 0 0\n2 1 inf\n3 0 1\n"},
       {"absurd.node", "999999999999 2 0 0\n1 0 0\n"},
       {"range.poly", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 9\n0\n"},
-      {"binary.node", std::string("3 2 0 0\n\x01\x02\xff\x00garbage", 20).c_str()},
+      {"binary.node", std::string("3 2 0 0\n\x01\x02\xff\x00garbage", 20)},  // NUL included
       {"collinear.node", "3 2 0 0\n1 0 0\n2 1 1\n3 2 2\n"},
   }};
   for (const auto& [name, text] : cases) {

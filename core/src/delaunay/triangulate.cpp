@@ -42,7 +42,7 @@ void validate(const Pslg& in) {
 // bit for bit.
 int scale_exponent(const Pslg& in) {
   double largest = 0.0;
-  for (const Point& p : in.points) largest = std::fmax(largest, std::fmax(std::fabs(p.x), std::fabs(p.y)));
+  for (const Point& p : in.points) largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)});
   if (largest == 0.0) return 0;
   const int e = std::ilogb(largest);
   return (e > 200 || e < -200) ? -e : 0;
@@ -233,19 +233,10 @@ class Builder {
   TriMesh to_tri_mesh() {
     prefer_first_duplicates();
     const Mesh& m = tri_.mesh();
+    const std::size_t vertex_count = tri_.points().size();
     TriMesh out;
     out.first_index = in_.first_index;
     out.input_vertex_count = input_count_;
-    out.points.resize(tri_.points().size());
-    for (VertexId v = 0; v < tri_.points().size(); ++v) out.points[external(v)] = tri_.point(v);
-    scale_points(out.points, -exponent_);
-    out.attributes_per_vertex = in_.attributes_per_vertex;
-    out.vertex_attributes = std::move(in_.vertex_attributes);
-    out.vertex_attributes.resize(out.points.size() * out.attributes_per_vertex, 0.0);
-    if (in_.has_vertex_markers) {
-      out.vertex_markers = std::move(in_.vertex_markers);
-      out.vertex_markers.resize(out.points.size(), 0);
-    }
     out.holes = in_.holes;
     out.regions = in_.regions;
     out.has_segment_markers = in_.has_segment_markers;
@@ -263,14 +254,6 @@ class Builder {
         out.triangle_max_area.push_back(max_area_[f]);
       }
     }
-    // Segments: the constrained edges that still bound a triangle, and the unconstrained
-    // edges that carving turned into boundary (convex hull edges of a point set), marker 1.
-    for (const Segment& s : kept_segments_) out.segments.push_back({external(s.a), external(s.b), s.marker});
-    for (const auto& [a, b] : new_boundary_) out.segments.push_back({external(a), external(b), 1});
-    std::sort(out.segments.begin(), out.segments.end(), [](const Segment& s, const Segment& t) {
-      return std::min(s.a, s.b) != std::min(t.a, t.b) ? std::min(s.a, s.b) < std::min(t.a, t.b)
-                                                      : std::max(s.a, s.b) < std::max(t.a, t.b);
-    });
     if (!in_.regions.empty()) out.attributes_per_triangle = 1;
     if (options_.compute_neighbors) {
       out.neighbors.reserve(out.triangles.size());
@@ -287,11 +270,31 @@ class Builder {
         out.neighbors.push_back(n);
       }
     }
-    // Steiner vertices take the marker of the segment they split.
-    if (!out.vertex_markers.empty())
+    // Segments: the constrained edges that still bound a triangle, and the unconstrained
+    // edges that carving turned into boundary (convex hull edges of a point set), marker 1.
+    for (const Segment& s : kept_segments_) out.segments.push_back({external(s.a), external(s.b), s.marker});
+    for (const auto& [a, b] : new_boundary_) out.segments.push_back({external(a), external(b), 1});
+    std::sort(out.segments.begin(), out.segments.end(), [](const Segment& s, const Segment& t) {
+      return std::min(s.a, s.b) != std::min(t.a, t.b) ? std::min(s.a, s.b) < std::min(t.a, t.b)
+                                                      : std::max(s.a, s.b) < std::max(t.a, t.b);
+    });
+
+    // The vertices last, once the mesh is released: a lower peak for large inputs.
+    tri_.mesh() = Mesh{};
+    out.points.resize(vertex_count);
+    for (VertexId v = 0; v < vertex_count; ++v) out.points[external(v)] = tri_.point(v);
+    scale_points(out.points, -exponent_);
+    out.attributes_per_vertex = in_.attributes_per_vertex;
+    out.vertex_attributes = std::move(in_.vertex_attributes);
+    out.vertex_attributes.resize(vertex_count * out.attributes_per_vertex, 0.0);
+    if (in_.has_vertex_markers) {
+      // Steiner vertices take the marker of the segment they split.
+      out.vertex_markers = std::move(in_.vertex_markers);
+      out.vertex_markers.resize(vertex_count, 0);
       for (const Segment& s : out.segments)
         for (const std::uint32_t v : {s.a, s.b})
           if (v >= input_count_ && out.vertex_markers[v] == 0) out.vertex_markers[v] = s.marker;
+    }
     return out;
   }
 
