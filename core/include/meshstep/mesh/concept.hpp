@@ -9,7 +9,13 @@
 // after remove_face (call rebuild_vertex_half_edges when done removing).
 //
 // Handles returned before a mutation may name different elements after it; algorithms
-// re-derive them from the half-edges a mutation returns.
+// re-derive them from the half-edges a mutation returns. A stale half-edge is still safe
+// to ask face(h) of, and is_live(face(h)) answers false when it no longer bounds a face.
+//
+// Constraint flags: flip makes an unconstrained diagonal; split_edge gives both halves the
+// old edge's flag; star_cavity keeps the ring edges' flags and makes unconstrained spokes;
+// remove_face keeps the flag on the side that remains. Call set_vertex_count before
+// init_sphere; reserve() counts faces of a closed surface.
 #pragma once
 
 #include <concepts>
@@ -51,14 +57,14 @@ concept TriangleMesh = requires(M& m, const M& cm, HalfEdge h, FaceId f, VertexI
   // Replace the edge of h and its twin by the other diagonal of their quadrilateral;
   // returns the new half-edge from apex(h) to the apex of twin(h).
   { m.flip(h) } -> std::same_as<HalfEdge>;
-  // Split a face into three around the new vertex v; returns a half-edge leaving v.
+  // Split a face into three around the new vertex v; returns v -> origin(half_edge(f)).
   { m.split_face(f, v) } -> std::same_as<HalfEdge>;
   // Split the edge of h (and its twin if any) at v: 2 faces become 4 (1 become 2 on the
   // boundary); both halves inherit the constraint flag. Returns the half-edge v -> dest(h).
   { m.split_edge(h, v) } -> std::same_as<HalfEdge>;
   // Replace the faces of a cavity (a topological disk without interior vertices) by the fan
   // joining v to its boundary. ring holds the boundary half-edges inside the cavity, in
-  // counterclockwise order (dest of one is origin of the next). Returns a half-edge leaving v.
+  // counterclockwise order (dest of one is origin of the next). Returns v -> origin(ring[0]).
   { m.star_cavity(ring, faces, v) } -> std::same_as<HalfEdge>;
   { m.remove_face(f) };
   { m.rebuild_vertex_half_edges() };
