@@ -141,8 +141,7 @@ class SegmentInserter {
       }
     }
     markers_.erase(edge_key(r, l));
-    const HalfEdge out = tri_.insert_on_edge(x, e);
-    const VertexId v = mesh().origin(out);
+    const VertexId v = mesh().origin(tri_.insert_on_edge(x, e));
     ++steiner_;
     markers_[edge_key(r, v)] = old_marker;
     markers_[edge_key(v, l)] = old_marker;

@@ -73,9 +73,8 @@ class Triangulation {
   // restores the Delaunay property around it. Returns a half-edge leaving the new vertex.
   HalfEdge insert_on_edge(const Point& p, HalfEdge h) {
     const VertexId v = add_point(p);
-    const HalfEdge out = mesh_.split_edge(h, v);
-    legalize_around(out);
-    return out;
+    legalize_around(mesh_.split_edge(h, v));
+    return mesh_.vertex_half_edge(v);  // the split's own handle may have been flipped away
   }
 
   VertexId add_point(const Point& p) {
@@ -95,7 +94,7 @@ class Triangulation {
   }
 
   // Would a point at p be in conflict with face f (inside its circumcircle, or beyond its
-  // hull edge for a ghost face)? `p_id` breaks cocircular ties by perturbation.
+  // hull edge for a ghost face)? Cocircular ties are broken by the perturbation.
   bool in_conflict(FaceId f, const Point& p) const {
     const HalfEdge h = mesh_.half_edge(f);
     return in_conflict(mesh_.origin(h), mesh_.dest(h), mesh_.apex(h), p);
@@ -119,14 +118,12 @@ class Triangulation {
       const HalfEdge h = stack.back();
       stack.pop_back();
       if (!mesh_.is_live(mesh_.face(h)) || is_locally_delaunay(h)) continue;
-      const HalfEdge t = mesh_.twin(h);
-      const HalfEdge d = mesh_.flip(h);  // apex(h) -> apex(t)
+      const HalfEdge d = mesh_.flip(h);  // apex(h) -> apex(twin(h))
       const HalfEdge e = mesh_.twin(d);
       stack.push_back(mesh_.next(d));
       stack.push_back(mesh_.prev(d));
       stack.push_back(mesh_.next(e));
       stack.push_back(mesh_.prev(e));
-      (void)t;
     }
   }
 
