@@ -13,36 +13,14 @@
 
 #include "meshstep/error.hpp"
 #include "meshstep/io/triangle_io.hpp"
+#include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace meshstep;
 
 namespace {
 
-class TempDir {
- public:
-  TempDir() {
-    std::random_device rd;
-    for (;;) {
-      path_ = fs::temp_directory_path() /
-              ("meshstep_io_bad_" + std::to_string(::getpid()) + "_" + std::to_string(rd()));
-      if (fs::create_directory(path_)) break;
-    }
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-  std::string write(const std::string& name, const std::string& content) const {
-    const std::string p = file(name);
-    std::ofstream(p, std::ios::binary | std::ios::trunc) << content;
-    return p;
-  }
-
- private:
-  fs::path path_;
-};
+using meshstep::testing::TempDir;
 
 // Runs `read`, which must throw an InputError for `path` at `line` whose message contains
 // `keyword`.
