@@ -38,7 +38,7 @@ class JsonLine {
       return *this;
     }
     char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.6g", value);
+    std::snprintf(buffer, sizeof buffer, "%.9g", value);  // 179.99998 must not read as 180
     text_ += buffer;
     return *this;
   }
