@@ -81,6 +81,13 @@ TEST(Triangulate, DuplicatesAreMergedAndReported) {
   TriangulateReport report;
   const TriMesh m = triangulate_everywhere(points(p), false, &report);
   EXPECT_EQ(report.duplicate_vertices, (n + 1) / 2);
+  ASSERT_EQ(report.warnings.size(), 1u);
+  // The first duplicate in input order is vertex n, a copy of vertex 0, which stays.
+  EXPECT_NE(report.warnings[0].find("vertex " + std::to_string(n) + " is at the same place as vertex 0"),
+            std::string::npos)
+      << report.warnings[0];
+  for (const auto& t : m.triangles)
+    for (const auto v : t) EXPECT_LT(v, n) << "a triangle uses a later duplicate";
   EXPECT_EQ(m.points.size(), p.size());  // still listed, in input order
   EXPECT_EQ(m.triangles.size(), 2 * n - hull_boundary_points(p) - 2);
 }

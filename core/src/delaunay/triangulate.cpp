@@ -92,11 +92,10 @@ class Builder {
     report_.steiner_vertices = tri_.points().size() - input_count;
     report_.split_segments = segments_.split_count();
     report_.mesh_bytes = tri_.mesh().memory_bytes();
-    if (report_.duplicate_vertices > 0)
-      report_.warnings.push_back(std::to_string(report_.duplicate_vertices) +
-                                 " duplicate vertices merged with earlier vertices at the same place");
     carve();
-    return to_tri_mesh();
+    TriMesh out = to_tri_mesh();
+    if (report_.duplicate_vertices > 0) report_.warnings.push_back(duplicate_warning());
+    return out;
   }
 
  private:
@@ -120,6 +119,22 @@ class Builder {
       const VertexId r = tri_.merged_into(v);
       if (r != kNone && input_of_[v] < input_of_[r]) std::swap(input_of_[v], input_of_[r]);
     }
+  }
+
+  // "3 duplicate vertices merged (e.g. vertex 9 is at the same place as vertex 2)", in the
+  // input's numbering, naming the duplicate that comes first in the input.
+  std::string duplicate_warning() const {
+    std::uint32_t dup = kNoIndex, kept = kNoIndex;
+    for (VertexId v = 0; v < input_count_; ++v) {
+      const VertexId r = tri_.merged_into(v);
+      if (r != kNone && input_of_[v] < dup) {
+        dup = input_of_[v];
+        kept = input_of_[r];
+      }
+    }
+    const auto name = [&](std::uint32_t i) { return "vertex " + std::to_string(i + in_.first_index); };
+    return std::to_string(report_.duplicate_vertices) + " duplicate vertices merged (e.g. " +
+           name(dup) + " is at the same place as " + name(kept) + ")";
   }
 
   VertexId representative(VertexId v) const {
