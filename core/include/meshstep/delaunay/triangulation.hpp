@@ -262,28 +262,15 @@ class Triangulation {
     return mesh_.vertex_half_edge(v);
   }
 
-  // Lawson: the edges opposite v are the only suspects; a flip makes two new ones. The
-  // conflict test is is_locally_delaunay with what is known here folded in: the apex of
-  // every suspect is v, which is finite.
+  // Lawson: the edges opposite v are the only suspects; a flip makes two new ones.
   [[gnu::flatten]] void legalize_around(HalfEdge out) {
-    const VertexId v = mesh_.origin(out);
-    const Point& pv = points_[v];
     stack_.clear();
     for_each_out_edge(out, [&](HalfEdge h) { stack_.push_back(mesh_.next(h)); });
     while (!stack_.empty()) {
       const HalfEdge h = stack_.back();
       stack_.pop_back();
-      const HalfEdge t = mesh_.twin(h);
-      if (t == kNone || mesh_.is_constrained(h)) continue;
-      const VertexId d = mesh_.apex(t);
-      if (d == kInfiniteVertex) continue;
-      const VertexId a = mesh_.origin(h), b = mesh_.dest(h);
-      const Point& pd = points_[d];
-      const bool conflict = a == kInfiniteVertex   ? hull_edge_conflict(b, v, pd)
-                            : b == kInfiniteVertex ? hull_edge_conflict(v, a, pd)
-                                                   : incircle_perturbed(points_[a], points_[b], pv, pd) > 0;
-      if (!conflict) continue;
-      const HalfEdge e = mesh_.flip(h);  // v -> d
+      if (is_locally_delaunay(h)) continue;
+      const HalfEdge e = mesh_.flip(h);  // v -> the far vertex
       stack_.push_back(mesh_.next(e));
       stack_.push_back(mesh_.prev(mesh_.twin(e)));
     }
