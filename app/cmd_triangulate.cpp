@@ -9,7 +9,9 @@
 #include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/triangle_io.hpp"
+#include "meshstep/replay/log_writer.hpp"
 #include "output_prefix.hpp"
+#include "record_option.hpp"
 
 namespace meshstep::app {
 namespace {
@@ -21,6 +23,7 @@ struct TriangulateArgs {
   std::string insertion = "flip";
   bool convex_hull = false;
   std::string stats;
+  std::string record;
   bool no_output = false;
   bool edges = false;
   bool neighbors = false;
@@ -60,7 +63,20 @@ int run_triangulate(const TriangulateArgs& args) {
                                   std::to_string(input_segments) + " segments (" +
                                   to_string(options.data_structure) + ", " +
                                   to_string(options.insertion) + ")");
+    std::unique_ptr<replay::LogWriter> log;
+    if (!args.record.empty()) {
+      log = open_log(args.record, args.input, "triangulate",
+                     "convex_hull=" + std::to_string(args.convex_hull) +
+                         " input_vertices=" + std::to_string(input_vertices) +
+                         " first_index=" + std::to_string(input.first_index),
+                     options.data_structure, options.insertion);
+      options.record = log.get();
+    }
     mesh = triangulate(std::move(input), options, &report);
+    if (log) {
+      log->finish();
+      print_progress(verbosity, record_summary(*log));
+    }
     triangulate_ms = clock.lap_ms();
     for (const std::string& w : report.warnings) print_warning(verbosity, args.input + ": " + w);
     if (!args.no_output) {
@@ -139,6 +155,7 @@ Command add_triangulate_command(CLI::App& parent) {
                   "(vertices, triangles, input_vertices, steiner, min_angle, max_angle,\n"
                   "ms.read, ms.triangulate, ms.write)")
       ->check(CLI::IsMember({"json"}));
+  add_record_option(*cmd, args->record);
   cmd->add_flag("--no-output", args->no_output, "Triangulate but write no files (for timing)");
   cmd->add_flag("-e,--edges", args->edges, "Also write PREFIX.edge");
   cmd->add_flag("-n,--neighbors", args->neighbors, "Also write PREFIX.neigh");

@@ -20,5 +20,6 @@ struct Command {
 
 Command add_triangulate_command(CLI::App& parent);
 Command add_check_command(CLI::App& parent);
+Command add_log_command(CLI::App& parent);
 
 }  // namespace meshstep::app

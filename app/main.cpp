@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
   app.footer(kFooter);
   app.set_version_flag("--version", "meshstep " MESHSTEP_VERSION);
   app.require_subcommand(0, 1);
-  std::vector<Command> commands = {add_triangulate_command(app), add_check_command(app)};
+  std::vector<Command> commands = {add_triangulate_command(app), add_check_command(app),
+                                  add_log_command(app)};
 
   try {
     app.parse(argc, argv);

@@ -71,41 +71,52 @@ SortedPoints sort_points(Pslg& in, int exponent) {
   return sorted;
 }
 
-template <TriangleMesh Mesh>
+template <TriangleMesh Mesh, class Rec>
 class Builder {
  public:
-  Builder(Pslg& in, const TriangulateOptions& options, TriangulateReport& report)
-      : Builder(in, options, report, scale_exponent(in)) {}
+  Builder(Pslg& in, const TriangulateOptions& options, TriangulateReport& report, Rec rec)
+      : Builder(in, options, report, std::move(rec), scale_exponent(in)) {}
 
   TriMesh run() {
+    Rec& rec = tri_.recorder();
+    if constexpr (Rec::enabled) rec.set_vertex_context(input_of_, exponent_);
+    rec.phase_begin(replay::Phase::insert_vertices);
     tri_.insert_all();
+    rec.phase_end(replay::Phase::insert_vertices);
     const std::size_t input_count = input_count_;
     if (!in_.segments.empty()) {
+      rec.phase_begin(replay::Phase::recover_segments);
       std::vector<VertexId> internal_of(input_count);
       for (VertexId i = 0; i < input_count; ++i) internal_of[input_of_[i]] = i;
       for (const Segment& s : in_.segments) {
         const VertexId a = representative(internal_of[s.a]), b = representative(internal_of[s.b]);
         if (a != b) segments_.insert(a, b, s.marker);
       }
+      rec.phase_end(replay::Phase::recover_segments);
     }
     report_.duplicate_vertices = tri_.duplicate_count();
     report_.steiner_vertices = tri_.points().size() - input_count;
     report_.split_segments = segments_.split_count();
     report_.mesh_bytes = tri_.mesh().memory_bytes();
+    rec.phase_begin(replay::Phase::carve);
+    rec.step_begin(tri_.mesh(), replay::StepKind::carve);
     carve();
+    rec.phase_end(replay::Phase::carve);
+    rec.run_end(tri_.mesh());
     TriMesh out = to_tri_mesh();
     if (report_.duplicate_vertices > 0) report_.warnings.push_back(duplicate_warning());
     return out;
   }
 
  private:
-  Builder(Pslg& in, const TriangulateOptions& options, TriangulateReport& report, int exponent)
-      : Builder(in, options, report, exponent, sort_points(in, exponent)) {}
-  Builder(Pslg& in, const TriangulateOptions& options, TriangulateReport& report, int exponent,
-          SortedPoints sorted)
+  Builder(Pslg& in, const TriangulateOptions& options, TriangulateReport& report, Rec rec,
+          int exponent)
+      : Builder(in, options, report, std::move(rec), exponent, sort_points(in, exponent)) {}
+  Builder(Pslg& in, const TriangulateOptions& options, TriangulateReport& report, Rec rec,
+          int exponent, SortedPoints sorted)
       : in_(in), options_(options), report_(report), exponent_(exponent),
         input_count_(sorted.points.size()), input_of_(std::move(sorted.input_of)),
-        tri_(std::move(sorted.points), options.insertion), segments_(tri_) {}
+        tri_(std::move(sorted.points), options.insertion, std::move(rec)), segments_(tri_) {}
 
   // Input numbering of an internal vertex (Steiner vertices keep theirs, after the input's).
   std::uint32_t external(VertexId v) const { return v < input_count_ ? input_of_[v] : v; }
@@ -193,16 +204,22 @@ class Builder {
     }
     std::vector<std::uint32_t> dead(m.face_capacity(), 0);
     std::vector<FaceId> removed;
-    const auto remove = [&](FaceId f) { removed.push_back(f); };
+    std::vector<replay::RemoveReason> reasons;  // why each face goes (for the recording)
+    auto reason = replay::RemoveReason::outside;
+    const auto remove = [&](FaceId f) {
+      removed.push_back(f);
+      reasons.push_back(tri_.is_ghost(f) ? replay::RemoveReason::ghost : reason);
+    };
     const bool eat_outside = !options_.convex_hull && !in_.segments.empty();
     for (const FaceId f : ghosts) {
       if (eat_outside) {
         flood(f, dead, 1, remove);
       } else if (!dead[f]) {
         dead[f] = 1;
-        removed.push_back(f);
+        remove(f);
       }
     }
+    reason = replay::RemoveReason::hole;
     for (const Point& hole : in_.holes) flood(face_at(hole), dead, 1, remove);
     assign_regions(dead);
 
@@ -224,7 +241,7 @@ class Builder {
       }
     }
     report_.removed_triangles = removed.size() - ghosts.size();  // ghosts are always among them
-    for (const FaceId f : removed) m.remove_face(f);
+    for (std::size_t i = 0; i < removed.size(); ++i) tri_.remove_face(removed[i], reasons[i]);
     m.rebuild_vertex_half_edges();
   }
 
@@ -319,13 +336,21 @@ class Builder {
   int exponent_;
   std::size_t input_count_;
   std::vector<std::uint32_t> input_of_;
-  Triangulation<Mesh> tri_;
-  SegmentInserter<Mesh> segments_;
+  Triangulation<Mesh, Rec> tri_;
+  SegmentInserter<Mesh, Rec> segments_;
   std::vector<FaceId> stack_;
   std::vector<double> attribute_, max_area_;
   std::vector<std::pair<VertexId, VertexId>> new_boundary_;
   std::vector<Segment> kept_segments_;
 };
+
+template <TriangleMesh Mesh>
+TriMesh build(Pslg& input, const TriangulateOptions& options, TriangulateReport& report) {
+  if (!options.record) return Builder<Mesh, replay::NullRecorder>(input, options, report, {}).run();
+  replay::Recorder recorder(*options.record);
+  if (options.observe_steps) recorder.observe_steps(options.observe_steps);
+  return Builder<Mesh, replay::Recorder>(input, options, report, std::move(recorder)).run();
+}
 
 }  // namespace
 
@@ -334,8 +359,8 @@ TriMesh triangulate(Pslg&& input, const TriangulateOptions& options, Triangulate
   TriangulateReport local;
   TriangulateReport& r = report ? *report : local;
   switch (options.data_structure) {
-    case DataStructure::tds: return Builder<Tds>(input, options, r).run();
-    case DataStructure::dcel: return Builder<Dcel>(input, options, r).run();
+    case DataStructure::tds: return build<Tds>(input, options, r);
+    case DataStructure::dcel: return build<Dcel>(input, options, r);
   }
   throw std::logic_error("unknown data structure");
 }

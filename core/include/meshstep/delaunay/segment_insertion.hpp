@@ -20,12 +20,14 @@
 
 namespace meshstep {
 
-template <TriangleMesh Mesh>
+template <TriangleMesh Mesh, class Rec = replay::NullRecorder>
 class SegmentInserter {
  public:
-  explicit SegmentInserter(Triangulation<Mesh>& tri) : tri_(tri) {}
+  explicit SegmentInserter(Triangulation<Mesh, Rec>& tri) : tri_(tri) {}
 
+  // One step: the segment a-b with every piece it is split into.
   void insert(VertexId a, VertexId b, int marker) {
+    tri_.recorder().step_begin(tri_.mesh(), replay::StepKind::recover_segment, a, b);
     pending_.push_back({a, b, marker});
     while (!pending_.empty()) {
       const Piece piece = pending_.back();
@@ -56,7 +58,7 @@ class SegmentInserter {
   const Mesh& mesh() const { return tri_.mesh(); }
 
   void constrain(HalfEdge h, int marker) {
-    tri_.mesh().set_constrained(h, true);
+    tri_.set_constrained(h, true, marker);
     markers_[edge_key(mesh().origin(h), mesh().dest(h))] = marker;
   }
 
@@ -131,7 +133,7 @@ class SegmentInserter {
         if (z == r || z == l) {
           split_at_vertex(a, z, b, marker);
         } else {
-          tri_.mesh().set_constrained(e, false);
+          tri_.set_constrained(e, false, 0);
           markers_.erase(edge_key(r, l));
           pending_.push_back({a, b, marker});  // retried once the old constraint is re-routed
           pending_.push_back({z, l, old_marker});
@@ -145,6 +147,11 @@ class SegmentInserter {
     ++steiner_;
     markers_[edge_key(r, v)] = old_marker;
     markers_[edge_key(v, l)] = old_marker;
+    if constexpr (Rec::enabled) {
+      // The halves kept the old edge's flag; record that they carry its marker too.
+      tri_.set_constrained(tri_.find_edge(r, v), true, old_marker);
+      tri_.set_constrained(tri_.find_edge(v, l), true, old_marker);
+    }
     pending_.push_back({v, b, marker});
     pending_.push_back({a, v, marker});
   }
@@ -175,7 +182,7 @@ class SegmentInserter {
         continue;
       }
       stalls = 0;
-      tri_.mesh().flip(h);  // now c1 -> c2
+      tri_.flip(h, replay::FlipReason::segment_recovery);  // now c1 -> c2
       const bool touches_segment = c1 == a || c1 == b || c2 == a || c2 == b;
       const double s1 = orient2d(P(a), P(b), P(c1)), s2 = orient2d(P(a), P(b), P(c2));
       if (!touches_segment && ((s1 > 0.0 && s2 < 0.0) || (s1 < 0.0 && s2 > 0.0)))
@@ -192,7 +199,7 @@ class SegmentInserter {
     tri_.make_delaunay(stack_);
   }
 
-  Triangulation<Mesh>& tri_;
+  Triangulation<Mesh, Rec>& tri_;
   std::unordered_map<std::uint64_t, int> markers_;
   std::vector<Piece> pending_;
   std::vector<Pair> crossed_;

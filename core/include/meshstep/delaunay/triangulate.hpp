@@ -4,11 +4,14 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "meshstep/mesh/tri_mesh.hpp"
 #include "meshstep/pslg/pslg.hpp"
+#include "meshstep/replay/event.hpp"
+#include "meshstep/replay/event_sink.hpp"
 
 namespace meshstep {
 
@@ -22,6 +25,11 @@ struct TriangulateOptions {
   // outside the segments (Triangle's -c).
   bool convex_hull = false;
   bool compute_neighbors = false;
+  // Record every step into this sink (a replay::LogWriter); nullptr: no recording, and the
+  // triangulators run the code they would run without a recorder.
+  replay::EventSink* record = nullptr;
+  // Tests: with `record`, called with every face slot at each step boundary and at the end.
+  std::function<void(const std::vector<replay::FaceRecord>&)> observe_steps;
 };
 
 struct TriangulateReport {

@@ -16,6 +16,7 @@
 #include "meshstep/error.hpp"
 #include "meshstep/geometry/predicates.hpp"
 #include "meshstep/mesh/concept.hpp"
+#include "meshstep/replay/recorder.hpp"
 
 namespace meshstep {
 
@@ -26,11 +27,14 @@ struct Location {
   HalfEdge half_edge;
 };
 
-template <TriangleMesh Mesh>
+// Rec is the recording policy (replay/recorder.hpp): every mesh mutation goes through it,
+// and it is told of each step, vertex and point location. replay::NullRecorder compiles to
+// nothing.
+template <TriangleMesh Mesh, class Rec = replay::NullRecorder>
 class Triangulation {
  public:
-  Triangulation(std::vector<Point> points, Insertion insertion)
-      : points_(std::move(points)), insertion_(insertion) {
+  Triangulation(std::vector<Point> points, Insertion insertion, Rec recorder = {})
+      : points_(std::move(points)), insertion_(insertion), rec_(std::move(recorder)) {
     mesh_.reserve(points_.size(), 2 * points_.size() + 8);
     mesh_.set_vertex_count(points_.size());
   }
@@ -40,6 +44,12 @@ class Triangulation {
   const std::vector<Point>& points() const { return points_; }
   const Point& point(VertexId v) const { return points_[v]; }
   Insertion insertion() const { return insertion_; }
+  Rec& recorder() { return rec_; }
+
+  // Mutations for the algorithms built on the triangulation, recorded like its own.
+  HalfEdge flip(HalfEdge h, replay::FlipReason reason) { return rec_.flip(mesh_, h, reason); }
+  void set_constrained(HalfEdge h, bool on, int marker) { rec_.set_constrained(mesh_, h, on, marker); }
+  void remove_face(FaceId f, replay::RemoveReason reason) { rec_.remove_face(mesh_, f, reason); }
 
   // Inserts every point in index order (callers sort the points spatially first); the first
   // three non-collinear ones start the triangulation. A point equal to an earlier one is
@@ -59,12 +69,17 @@ class Triangulation {
   // `hint`. Returns a half-edge leaving the vertex that now stands at v's position (v
   // itself, or the vertex v duplicates, recorded by merged_into()).
   HalfEdge insert(VertexId v, HalfEdge hint) {
+    rec_.step_begin(mesh_, replay::StepKind::insert_vertex, v);
     const Location loc = locate(points_[v], hint);
+    if constexpr (Rec::enabled)
+      rec_.locate(v, walk_length_, mesh_.face(loc.half_edge), static_cast<replay::LocateResult>(loc.kind));
     if (loc.kind == Location::Kind::on_vertex) {
       merged_into_[v] = mesh_.origin(loc.half_edge);
       ++duplicates_;
+      rec_.duplicate(v, merged_into_[v], points_[v]);
       return loc.half_edge;
     }
+    rec_.vertex(v, points_[v]);
     return insertion_ == Insertion::flip ? insert_by_flips(v, loc) : insert_by_cavity(v, loc);
   }
 
@@ -73,7 +88,8 @@ class Triangulation {
   // restores the Delaunay property around it. Returns a half-edge leaving the new vertex.
   HalfEdge insert_on_edge(const Point& p, HalfEdge h) {
     const VertexId v = add_point(p);
-    legalize_around(mesh_.split_edge(h, v));
+    rec_.vertex(v, p);
+    legalize_around(rec_.split_edge(mesh_, h, v, replay::SplitReason::crossing));
     return mesh_.vertex_half_edge(v);  // the split's own handle may have been flipped away
   }
 
@@ -118,7 +134,7 @@ class Triangulation {
       const HalfEdge h = stack.back();
       stack.pop_back();
       if (!mesh_.is_live(mesh_.face(h)) || is_locally_delaunay(h)) continue;
-      const HalfEdge d = mesh_.flip(h);  // apex(h) -> apex(twin(h))
+      const HalfEdge d = flip(h, replay::FlipReason::delaunay);  // apex(h) -> apex(twin(h))
       const HalfEdge e = mesh_.twin(d);
       stack.push_back(mesh_.next(d));
       stack.push_back(mesh_.prev(d));
@@ -135,7 +151,9 @@ class Triangulation {
   [[gnu::flatten]] Location locate(const Point& p, HalfEdge start) const {
     HalfEdge h = start;
     bool entered = false;  // true when we came in through h, so p is strictly left of h
+    if constexpr (Rec::enabled) walk_length_ = 0;
     for (;;) {
+      if constexpr (Rec::enabled) ++walk_length_;
       VertexId a = mesh_.origin(h), b = mesh_.dest(h);
       const VertexId c = mesh_.apex(h);
       if (a == kInfiniteVertex || b == kInfiniteVertex || c == kInfiniteVertex) {
@@ -248,16 +266,18 @@ class Triangulation {
       throw InputError("all " + std::to_string(n) +
                        " vertices lie on one line: a triangulation needs three that do not");
     first_ = {a, b, c};
+    rec_.step_begin(mesh_, replay::StepKind::start);
+    for (const VertexId v : first_) rec_.vertex(v, points_[v]);
     if (o > 0.0)
-      mesh_.init_sphere(a, b, c, kInfiniteVertex);
+      rec_.init_sphere(mesh_, a, b, c);
     else
-      mesh_.init_sphere(a, c, b, kInfiniteVertex);
+      rec_.init_sphere(mesh_, a, c, b);
   }
 
   [[gnu::flatten]] HalfEdge insert_by_flips(VertexId v, const Location& loc) {
     const HalfEdge out = loc.kind == Location::Kind::in_face
-                             ? mesh_.split_face(mesh_.face(loc.half_edge), v)
-                             : mesh_.split_edge(loc.half_edge, v);
+                             ? rec_.split_face(mesh_, mesh_.face(loc.half_edge), v)
+                             : rec_.split_edge(mesh_, loc.half_edge, v, replay::SplitReason::insert);
     legalize_around(out);
     return mesh_.vertex_half_edge(v);
   }
@@ -270,7 +290,7 @@ class Triangulation {
       const HalfEdge h = stack_.back();
       stack_.pop_back();
       if (is_locally_delaunay(h)) continue;
-      const HalfEdge e = mesh_.flip(h);  // v -> the far vertex
+      const HalfEdge e = flip(h, replay::FlipReason::delaunay);  // v -> the far vertex
       stack_.push_back(mesh_.next(e));
       stack_.push_back(mesh_.prev(mesh_.twin(e)));
     }
@@ -341,11 +361,11 @@ class Triangulation {
           break;
         }
     }
-    const HalfEdge out = mesh_.star_cavity(boundary_, cavity_, v);
+    const HalfEdge out = rec_.star_cavity(mesh_, boundary_, cavity_, v);
     if (split_constraint) {
       for_each_out_edge(out, [&](HalfEdge h) {
         const VertexId w = mesh_.dest(h);
-        if (w == split_a || w == split_b) mesh_.set_constrained(h, true);
+        if (w == split_a || w == split_b) set_constrained(h, true, 0);
       });
     }
     return out;
@@ -372,6 +392,8 @@ class Triangulation {
   std::size_t duplicates_ = 0;
   std::array<VertexId, 3> first_{kNone, kNone, kNone};
   mutable std::uint32_t random_ = 0x9E3779B9u;
+  [[no_unique_address]] Rec rec_;
+  mutable std::uint32_t walk_length_ = 0;  // faces visited by the last walk (when recording)
   // Scratch, kept across insertions so that inserting allocates nothing in steady state.
   std::vector<HalfEdge> stack_;
   std::vector<FaceId> cavity_;

@@ -1,0 +1,126 @@
+// The event model of the step engine: what a recorded run is made of.
+//
+// An algorithm's run is a sequence of events. Events that change the mesh carry the mesh
+// delta: for every face slot they touch, the triangle the slot held before and the one it
+// holds after (SlotWrite), so a replay can apply an event forward or undo it exactly. The
+// other events say what the algorithm looked at and decided (where a point was located,
+// which point was selected and why, a Lepp path, an encroached segment, a criterion test).
+//
+// Events group into steps: a step_begin event opens a step, and the step runs until the
+// next step_begin. One step is one top-level operation (one vertex inserted with all its
+// flips, one segment recovered, one bisection with its propagation). Events before the
+// first step_begin (a phase_begin, say) form a preamble that belongs to no step.
+//
+// Every event type has a fixed schema (eventSchema): how many ids it has and what they
+// name, and which of the optional parts (point, value, list, points, mesh delta) it uses.
+// The file codec and the text/JSON dumps are driven by the schema, so adding a type is one
+// table row and one enumerator.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "meshstep/geometry/point.hpp"
+#include "meshstep/mesh/handles.hpp"
+
+namespace meshstep::replay {
+
+enum class EventType : std::uint8_t {
+  step_begin,      // code: StepKind; ids: subject vertices (or kNone)
+  phase_begin,     // code: Phase
+  phase_end,       // code: Phase
+  locate,          // code: LocateResult; ids: vertex located, faces visited, face slot found
+  vertex,          // a vertex enters the run; ids: vertex, its index in the input; point
+  duplicate,       // a vertex at the same place as an earlier one; ids: vertex, earlier, input index
+  init,            // the first triangle (and its ghost faces); ids: its three vertices
+  split_face,      // a vertex inserted inside a face; ids: vertex
+  split_edge,      // code: SplitReason; ids: vertex, edge endpoints
+  flip,            // code: FlipReason; ids: a, b (edge before), c, d (edge after; c left of a->b)
+  cavity,          // Bowyer-Watson: the faces in conflict replaced by a fan; ids: vertex
+  constrain,       // code: 1 set, 0 cleared; ids: edge endpoints, segment marker
+  remove_face,     // code: RemoveReason
+  remove_vertex,   // a vertex and its star replaced by a triangulation of the star's boundary
+  point_selected,  // code: strategy; ids: the bad triangle; point: chosen; list/points: alternatives
+  lepp_path,       // ids: terminal edge, number of terminal triangles; list: triangles (3 ids each)
+  encroached,      // ids: segment endpoints, encroaching vertex (or kNone); point: encroaching point
+  criterion_test,  // code: criterion | 0x80 when passed; ids: triangle; value: the measured quality
+  count_
+};
+inline constexpr std::size_t kEventTypeCount = static_cast<std::size_t>(EventType::count_);
+
+enum class StepKind : std::uint8_t {
+  start,            // the first triangle
+  insert_vertex,    // ids: vertex
+  recover_segment,  // ids: segment endpoints
+  carve,            // removal of holes, ghost faces and the outside
+  refine,           // one refinement step (issue: refinement framework)
+  split_segment,
+  bisect,
+  remove_vertex,
+  count_
+};
+
+enum class Phase : std::uint8_t { insert_vertices, recover_segments, carve, refine, improve, count_ };
+enum class LocateResult : std::uint8_t { in_face, on_edge, on_vertex, count_ };
+enum class SplitReason : std::uint8_t { insert, crossing, encroached, bisection, count_ };
+enum class FlipReason : std::uint8_t { delaunay, segment_recovery, count_ };
+enum class RemoveReason : std::uint8_t { ghost, hole, outside, count_ };
+
+// What one face slot holds: the triangle (counterclockwise, as the data structure stores
+// it) and a constraint flag per edge (bit i: the edge from v[i] to v[(i+1)%3]). A dead slot
+// holds no triangle.
+struct FaceRecord {
+  std::array<VertexId, 3> v{kNone, kNone, kNone};
+  std::uint8_t constrained = 0;
+
+  bool dead() const { return v[0] == kNone; }
+  bool ghost() const { return v[0] == kInfiniteVertex || v[1] == kInfiniteVertex || v[2] == kInfiniteVertex; }
+  friend bool operator==(const FaceRecord&, const FaceRecord&) = default;
+};
+
+struct SlotWrite {
+  FaceId slot;
+  FaceRecord before, after;
+};
+
+// One event, as the reader decodes it. The spans point into the reader's decoded block and
+// stay valid while the block is cached (copy what you keep).
+struct Event {
+  EventType type = EventType::phase_begin;
+  std::uint8_t code = 0;
+  std::array<std::uint32_t, 4> ids{kNone, kNone, kNone, kNone};
+  Point point{0.0, 0.0};
+  double value = 0.0;
+  std::span<const std::uint32_t> list;
+  std::span<const Point> points;
+  std::span<const SlotWrite> writes;
+};
+
+// How each id of an event is encoded and shown.
+enum class IdKind : std::uint8_t {
+  vertex,  // a vertex id (kInfiniteVertex and kNone allowed)
+  count,   // a plain unsigned number
+  slot,    // a face slot
+  input,   // an index in the input file's numbering
+  marker,  // a segment marker: a signed number stored as unsigned (two's complement)
+};
+
+struct EventSchema {
+  const char* name;
+  std::uint8_t id_count;
+  std::array<IdKind, 4> id_kinds;
+  std::array<const char*, 4> id_names;
+  bool has_point, has_value, has_list, has_points, has_writes;
+  bool changes_mesh() const { return has_writes; }
+};
+
+const EventSchema& schema(EventType type);
+const char* name(EventType type);
+const char* name(StepKind kind);
+const char* name(Phase phase);
+// The name of an event's code for its type (a step kind, a phase, a reason...), or its number.
+std::string code_name(EventType type, std::uint8_t code);
+
+}  // namespace meshstep::replay

@@ -1,0 +1,112 @@
+// Opens a replay log, checks all of it, and gives random access to its events.
+//
+// Opening reads the whole file, verifies the header and every block's checksum, decodes
+// every event once (to count them, find the steps and collect the vertices' coordinates)
+// and indexes the blocks and keyframes. Errors name the file and where in it the problem
+// is: a foreign file, a newer format, a damaged header, a corrupted block. A file that ends
+// early (a run that died, a partial copy) opens as the prefix it holds: complete() is then
+// false and incomplete_reason() says where it stops.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <list>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "meshstep/replay/decoded_events.hpp"
+#include "meshstep/replay/event.hpp"
+#include "meshstep/replay/log_writer.hpp"
+
+namespace meshstep::replay {
+
+struct BlockInfo {
+  std::uint64_t first_event = 0, event_count = 0, mesh_hash = 0;  // hash after the block
+  std::uint64_t offset = 0;  // of the block header in the file
+  std::uint32_t stored_size = 0, raw_size = 0;
+};
+
+struct KeyframeInfo {
+  std::uint64_t event = 0;  // the keyframe is the mesh after this many events
+  std::uint64_t slot_count = 0, mesh_hash = 0, offset = 0;
+  std::uint32_t stored_size = 0, raw_size = 0;
+};
+
+struct VertexInfo {
+  Point point;
+  std::uint32_t input_index = kNone;  // in the input's numbering (Steiner: its own id)
+  std::uint64_t event = 0;            // the event that introduced it
+  VertexId same_as = kNone;           // for a duplicate: the vertex standing for it
+};
+
+class LogReader {
+ public:
+  // Throws InputError ("PATH: ...") when the file cannot be read or is not a valid log.
+  explicit LogReader(const std::string& path);
+  ~LogReader();
+
+  const std::string& path() const { return path_; }
+  const LogHeader& header() const { return header_; }
+  std::uint32_t format_version() const { return format_version_; }
+  // A value from the header's "key=value" parameters, or `fallback`.
+  std::string parameter(const std::string& key, const std::string& fallback = "") const;
+  std::uint64_t file_size() const { return file_.size(); }
+
+  bool complete() const { return complete_; }
+  const std::string& incomplete_reason() const { return incomplete_reason_; }
+
+  std::uint64_t event_count() const { return event_count_; }
+  std::uint64_t step_count() const { return step_starts_.size(); }
+  const std::array<std::uint64_t, kEventTypeCount>& counts_by_type() const { return counts_; }
+  // Index of the event that begins step k; step_start(step_count()) == event_count().
+  std::uint64_t step_start(std::uint64_t k) const;
+  // The step an event belongs to, or step_count() for events of the preamble (before the
+  // first step).
+  std::uint64_t step_of_event(std::uint64_t e) const;
+
+  const std::vector<BlockInfo>& blocks() const { return blocks_; }
+  const std::vector<KeyframeInfo>& keyframes() const { return keyframes_; }
+  std::size_t block_of_event(std::uint64_t e) const;
+  // The decoded events of a block (cached: the most recently used blocks stay decoded).
+  // The reference stays valid until the next call of block_events or event.
+  const DecodedEvents& block_events(std::size_t block) const;
+  // Event e; its spans stay valid until the next call of block_events or event.
+  Event event(std::uint64_t e) const;
+  // The face records of keyframe j (decoded once, then cached).
+  const std::vector<FaceRecord>& keyframe(std::size_t j) const;
+
+  // Every vertex the run introduced, by vertex id (ids never used have event == kNone).
+  const std::vector<VertexInfo>& vertices() const { return vertices_; }
+  // The final mesh hash from the end block (complete logs only).
+  std::uint64_t final_hash() const { return final_hash_; }
+
+  // A location for messages: "PATH: block B (byte N)".
+  std::string where(std::size_t block) const;
+
+ private:
+  void read_header();
+  void scan_blocks();
+  void index_events(std::size_t block, const DecodedEvents& events);
+  void read_end_block(const std::uint8_t* payload, std::size_t stored, std::size_t raw);
+
+  std::string path_;
+  std::vector<std::uint8_t> file_;
+  LogHeader header_;
+  std::uint32_t format_version_ = 0;
+  std::size_t blocks_start_ = 0;
+  bool complete_ = false;
+  std::string incomplete_reason_;
+  std::uint64_t event_count_ = 0;
+  std::uint64_t final_hash_ = 0;
+  std::array<std::uint64_t, kEventTypeCount> counts_{};
+  std::vector<std::uint64_t> step_starts_;
+  std::vector<BlockInfo> blocks_;
+  std::vector<KeyframeInfo> keyframes_;
+  std::vector<VertexInfo> vertices_;
+
+  struct Cache;
+  std::unique_ptr<Cache> cache_;
+};
+
+}  // namespace meshstep::replay

@@ -1,0 +1,72 @@
+// Writes a replay log as a stream while the algorithm runs.
+//
+// The algorithm's Recorder appends raw events to this sink; every few thousand events the
+// batch goes to a background thread that encodes them (adding to every face write what the
+// slot held before), keeps its own copy of the mesh to do so, compresses blocks with zstd,
+// writes keyframes, and appends each block to PATH.partial as soon as it is complete. So a
+// run that dies leaves a readable prefix in PATH.partial; finish() writes the end block and
+// renames the file to PATH. A writer destroyed without finish() (the run failed) removes
+// its partial file: failed runs leave no half-written log behind.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "meshstep/replay/event.hpp"
+#include "meshstep/replay/event_sink.hpp"
+
+namespace meshstep::replay {
+
+// What was run on what: the header of the log.
+struct LogHeader {
+  std::string program_version;  // filled by the writer
+  std::string input;            // input file as named on the command line
+  std::string input_hash;       // 16 hex digits: checksum of the input file's bytes
+  std::string algorithm;        // "triangulate", or a refinement algorithm's name
+  std::string parameters;       // "key=value" pairs separated by spaces
+  std::string data_structure;   // "tds" or "dcel"
+  std::string insertion;        // "flip" or "cavity"
+};
+
+struct LogWriterOptions {
+  int zstd_level = 1;
+  std::size_t block_bytes = 256 * 1024;  // encoded events per block, before compression
+  KeyframePolicy keyframes;
+};
+
+struct LogStats {
+  std::uint64_t events = 0, steps = 0, blocks = 0, keyframes = 0, bytes = 0;
+  std::uint64_t keyframe_bytes = 0;  // stored (compressed) keyframe payloads
+  std::array<std::uint64_t, kEventTypeCount> by_type{};
+};
+
+// The 16-hex-digit checksum stored as LogHeader::input_hash. Throws InputError when the
+// file cannot be read.
+std::string file_hash(const std::string& path);
+
+class LogWriter final : public EventSink {
+ public:
+  // Creates PATH.partial and writes the header; throws InputError when it cannot.
+  LogWriter(std::string path, LogHeader header, LogWriterOptions options = {});
+  ~LogWriter() override;
+  LogWriter(const LogWriter&) = delete;
+  LogWriter& operator=(const LogWriter&) = delete;
+
+  // Writes what is left and the end block, and renames PATH.partial to PATH. Throws
+  // InputError on an I/O failure (disk full...).
+  void finish();
+  const LogStats& stats() const;  // complete after finish()
+  const std::string& path() const;
+
+ protected:
+  void hand_over(std::vector<std::uint32_t>& words) override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace meshstep::replay

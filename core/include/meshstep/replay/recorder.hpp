@@ -1,0 +1,294 @@
+// Recording as a policy of the algorithms.
+//
+// Algorithms are templates over a recorder type and route every mesh mutation through it:
+// `rec.flip(mesh, h, reason)` instead of `mesh.flip(h)`. NullRecorder performs the mutation
+// and nothing else, and its notification hooks are empty inline functions, so a run with
+// recording off compiles to the same code as before recording existed. Recorder performs
+// the mutation, then appends the event with the faces it wrote to an EventSink.
+//
+// Both expose the same members; the concept RecordingPolicy names them.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <span>
+#include <vector>
+
+#include "meshstep/mesh/concept.hpp"
+#include "meshstep/replay/event.hpp"
+#include "meshstep/replay/event_sink.hpp"
+
+namespace meshstep::replay {
+
+// The record of face slot f as the data structure holds it (dead if f is not live).
+template <TriangleMesh Mesh>
+FaceRecord face_record(const Mesh& m, FaceId f) {
+  FaceRecord r;
+  if (!m.is_live(f)) return r;
+  const HalfEdge h = m.half_edge(f), n = m.next(h), p = m.prev(h);
+  r.v = {m.origin(h), m.origin(n), m.origin(p)};
+  r.constrained = static_cast<std::uint8_t>(m.is_constrained(h) | (m.is_constrained(n) << 1) |
+                                            (m.is_constrained(p) << 2));
+  return r;
+}
+
+// Every face slot of the mesh, dead ones included: what a replay must reproduce.
+template <TriangleMesh Mesh>
+std::vector<FaceRecord> face_records(const Mesh& m) {
+  std::vector<FaceRecord> out(m.face_capacity());
+  for (FaceId f = 0; f < out.size(); ++f) out[f] = face_record(m, f);
+  return out;
+}
+
+struct NullRecorder {
+  static constexpr bool enabled = false;
+
+  template <TriangleMesh M> HalfEdge init_sphere(M& m, VertexId a, VertexId b, VertexId c) {
+    return m.init_sphere(a, b, c, kInfiniteVertex);
+  }
+  template <TriangleMesh M> HalfEdge flip(M& m, HalfEdge h, FlipReason) { return m.flip(h); }
+  template <TriangleMesh M> HalfEdge split_face(M& m, FaceId f, VertexId v) {
+    return m.split_face(f, v);
+  }
+  template <TriangleMesh M> HalfEdge split_edge(M& m, HalfEdge h, VertexId v, SplitReason) {
+    return m.split_edge(h, v);
+  }
+  template <TriangleMesh M>
+  HalfEdge star_cavity(M& m, std::span<const HalfEdge> ring, std::span<const FaceId> faces,
+                       VertexId v) {
+    return m.star_cavity(ring, faces, v);
+  }
+  template <TriangleMesh M> void remove_face(M& m, FaceId f, RemoveReason) { m.remove_face(f); }
+  template <TriangleMesh M> void set_constrained(M& m, HalfEdge h, bool on, int) {
+    m.set_constrained(h, on);
+  }
+
+  template <TriangleMesh M> void step_begin(const M&, StepKind, VertexId = kNone, VertexId = kNone) {}
+  template <TriangleMesh M> void run_end(const M&) {}
+  void phase_begin(Phase) {}
+  void phase_end(Phase) {}
+  void vertex(VertexId, const Point&) {}
+  void duplicate(VertexId, VertexId, const Point&) {}
+  void locate(VertexId, std::uint32_t, FaceId, LocateResult) {}
+};
+
+class Recorder {
+ public:
+  static constexpr bool enabled = true;
+
+  explicit Recorder(EventSink& sink) : sink_(&sink) {}
+
+  // How the algorithm's vertices map to the input: vertex v < input_of.size() is input
+  // vertex input_of[v], later ones are Steiner vertices; coordinates are stored scaled by
+  // 2^-exponent (undoing the triangulator's exact power-of-two scaling).
+  void set_vertex_context(std::span<const std::uint32_t> input_of, int exponent) {
+    input_of_ = input_of;
+    exponent_ = exponent;
+  }
+  // Tests: called with every face slot at each step boundary and at the end of the run.
+  void observe_steps(std::function<void(const std::vector<FaceRecord>&)> observer) {
+    observer_ = std::move(observer);
+  }
+
+  // Mutations ------------------------------------------------------------------------------
+  // Each writes the faces the change replaces (read before it, while they are in cache),
+  // performs it, then writes the faces it made.
+  template <TriangleMesh M> HalfEdge init_sphere(M& m, VertexId a, VertexId b, VertexId c) {
+    begin(EventType::init, 0);
+    ids(a, b, c);
+    sink_->put(0u);  // replaces nothing
+    const HalfEdge h = m.init_sphere(a, b, c, kInfiniteVertex);
+    const std::size_t count = sink_->placeholder();
+    std::uint32_t n = 0;
+    for (FaceId f = 0; f < m.face_capacity(); ++f)
+      if (m.is_live(f)) {
+        put_face(m, f);
+        ++n;
+      }
+    sink_->fill(count, n);
+    end_event();
+    return h;
+  }
+
+  template <TriangleMesh M> HalfEdge flip(M& m, HalfEdge h, FlipReason reason) {
+    const HalfEdge t = m.twin(h);
+    begin(EventType::flip, static_cast<std::uint8_t>(reason));
+    ids(m.origin(h), m.dest(h), m.apex(h), m.apex(t));
+    put_faces(m, {m.face(h), m.face(t)});
+    const HalfEdge e = m.flip(h);
+    put_faces(m, {m.face(e), m.face(m.twin(e))});
+    end_event();
+    return e;
+  }
+
+  template <TriangleMesh M> HalfEdge split_face(M& m, FaceId f, VertexId v) {
+    begin(EventType::split_face, 0);
+    ids(v);
+    put_faces(m, {f});
+    const HalfEdge out = m.split_face(f, v);
+    put_star(m, out);
+    end_event();
+    return out;
+  }
+
+  template <TriangleMesh M>
+  HalfEdge split_edge(M& m, HalfEdge h, VertexId v, SplitReason reason) {
+    const HalfEdge t = m.twin(h);
+    begin(EventType::split_edge, static_cast<std::uint8_t>(reason));
+    ids(v, m.origin(h), m.dest(h));
+    if (t == kNone) put_faces(m, {m.face(h)});
+    else put_faces(m, {m.face(h), m.face(t)});
+    const HalfEdge out = m.split_edge(h, v);
+    put_star(m, out);
+    end_event();
+    return out;
+  }
+
+  template <TriangleMesh M>
+  HalfEdge star_cavity(M& m, std::span<const HalfEdge> ring, std::span<const FaceId> faces,
+                       VertexId v) {
+    begin(EventType::cavity, 0);
+    ids(v);
+    sink_->put(static_cast<std::uint32_t>(faces.size()));
+    for (const FaceId f : faces) put_face(m, f);
+    const HalfEdge out = m.star_cavity(ring, faces, v);
+    put_star(m, out);
+    end_event();
+    return out;
+  }
+
+  template <TriangleMesh M> void remove_face(M& m, FaceId f, RemoveReason reason) {
+    begin(EventType::remove_face, static_cast<std::uint8_t>(reason));
+    put_faces(m, {f});
+    m.remove_face(f);
+    sink_->put(0u);  // makes nothing
+    end_event();
+  }
+
+  template <TriangleMesh M> void set_constrained(M& m, HalfEdge h, bool on, int marker) {
+    const HalfEdge t = m.twin(h);
+    begin(EventType::constrain, on ? 1 : 0);
+    ids(m.origin(h), m.dest(h), static_cast<std::uint32_t>(marker));
+    if (t == kNone) put_faces(m, {m.face(h)});
+    else put_faces(m, {m.face(h), m.face(t)});
+    m.set_constrained(h, on);
+    if (t == kNone) put_faces(m, {m.face(h)});
+    else put_faces(m, {m.face(h), m.face(t)});
+    end_event();
+  }
+
+  // Notifications --------------------------------------------------------------------------
+  template <TriangleMesh M>
+  void step_begin(const M& m, StepKind kind, VertexId s0 = kNone, VertexId s1 = kNone) {
+    if (observer_) observer_(face_records(m));
+    const KeyframePolicy& policy = sink_->keyframe_policy();
+    if (since_keyframe_ >= policy.min_events &&
+        static_cast<double>(since_keyframe_) >= policy.factor * static_cast<double>(m.face_count()))
+      keyframe(m);
+    begin(EventType::step_begin, static_cast<std::uint8_t>(kind));
+    ids(s0, s1);
+    end_event();
+  }
+  template <TriangleMesh M> void run_end(const M& m) {
+    if (observer_) observer_(face_records(m));
+  }
+  void phase_begin(Phase phase) { simple(EventType::phase_begin, static_cast<std::uint8_t>(phase)); }
+  void phase_end(Phase phase) { simple(EventType::phase_end, static_cast<std::uint8_t>(phase)); }
+
+  void vertex(VertexId v, const Point& p) {
+    begin(EventType::vertex, 0);
+    ids(v, input_index(v));
+    put_point(p);
+    end_event();
+  }
+  void duplicate(VertexId v, VertexId same_as, const Point& p) {
+    begin(EventType::duplicate, 0);
+    ids(v, same_as, input_index(v));
+    put_point(p);
+    end_event();
+  }
+  void locate(VertexId v, std::uint32_t visited, FaceId found, LocateResult result) {
+    begin(EventType::locate, static_cast<std::uint8_t>(result));
+    ids(v, visited, found);
+    end_event();
+  }
+
+ private:
+  void begin(EventType type, std::uint8_t code) {
+    sink_->put(static_cast<std::uint32_t>(type) | (std::uint32_t{code} << 8));
+  }
+  void simple(EventType type, std::uint8_t code) {
+    begin(type, code);
+    end_event();
+  }
+  void end_event() {
+    ++since_keyframe_;
+    sink_->end_event();
+  }
+  // A copy of every face slot, at a step boundary.
+  template <TriangleMesh M> void keyframe(const M& m) {
+    sink_->put(kKeyframeWord);
+    sink_->put(static_cast<std::uint32_t>(m.face_capacity()));
+    for (FaceId f = 0; f < m.face_capacity(); ++f) {
+      const FaceRecord r = face_record(m, f);
+      sink_->put(r.v[0]);
+      sink_->put(r.v[1]);
+      sink_->put(r.v[2]);
+      sink_->put(std::uint32_t{r.constrained});
+    }
+    sink_->end_event();
+    since_keyframe_ = 0;
+  }
+  template <TriangleMesh M> void put_faces(const M& m, std::initializer_list<FaceId> faces) {
+    sink_->put(static_cast<std::uint32_t>(faces.size()));
+    for (const FaceId f : faces) put_face(m, f);
+  }
+  template <class... Ids> void ids(Ids... values) { (sink_->put(static_cast<std::uint32_t>(values)), ...); }
+  std::uint32_t input_index(VertexId v) const {
+    return v < input_of_.size() ? input_of_[v] : v;
+  }
+  void put_point(const Point& p) {
+    sink_->put(Point{std::ldexp(p.x, -exponent_), std::ldexp(p.y, -exponent_)});
+  }
+  template <TriangleMesh M> void put_face(const M& m, FaceId f) {
+    const FaceRecord r = face_record(m, f);
+    sink_->put(f);
+    sink_->put(r.v[0]);
+    sink_->put(r.v[1]);
+    sink_->put(r.v[2]);
+    sink_->put(std::uint32_t{r.constrained});
+  }
+  // Writes the count and the records of the faces around the origin of `out` (both ways
+  // round on a boundary).
+  template <TriangleMesh M> void put_star(const M& m, HalfEdge out) {
+    const std::size_t count = sink_->placeholder();
+    std::uint32_t n = 0;
+    HalfEdge h = out;
+    do {
+      put_face(m, m.face(h));
+      ++n;
+      h = m.twin(m.prev(h));
+    } while (h != kNone && h != out);
+    if (h == kNone) {
+      for (HalfEdge g = m.twin(out); g != kNone; g = m.twin(g)) {
+        g = m.next(g);
+        put_face(m, m.face(g));
+        ++n;
+      }
+    }
+    sink_->fill(count, n);
+  }
+
+  EventSink* sink_;
+  std::span<const std::uint32_t> input_of_;
+  int exponent_ = 0;
+  std::function<void(const std::vector<FaceRecord>&)> observer_;
+  std::uint64_t since_keyframe_ = 0;  // events since the last keyframe
+};
+
+template <class R>
+concept RecordingPolicy = requires { { R::enabled } -> std::convertible_to<bool>; };
+
+}  // namespace meshstep::replay

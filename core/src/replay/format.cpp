@@ -1,0 +1,98 @@
+// Checksums, block headers and compression for the replay log.
+#include "format.hpp"
+
+#include <zstd.h>
+
+#include <new>
+#include <stdexcept>
+
+namespace meshstep::replay::format {
+namespace {
+
+constexpr std::uint64_t kMul1 = 0x9E3779B97F4A7C15ull;
+constexpr std::uint64_t kMul2 = 0xC2B2AE3D27D4EB4Full;
+
+}  // namespace
+
+std::uint64_t checksum(std::span<const std::uint8_t> bytes, std::uint64_t seed) {
+  // Each step h -> rotl(h ^ w * kMul1, 31) * kMul2 is a bijection of h for a fixed word and
+  // of the word for a fixed h (odd multipliers), so a change confined to one word always
+  // changes the result.
+  std::uint64_t h = seed ^ (bytes.size() * kMul1);
+  std::size_t i = 0;
+  for (; i + 8 <= bytes.size(); i += 8) {
+    std::uint64_t w;
+    std::memcpy(&w, bytes.data() + i, 8);
+    h = std::rotl(h ^ (w * kMul1), 31) * kMul2;
+  }
+  std::uint64_t tail = 0;
+  std::memcpy(&tail, bytes.data() + i, bytes.size() - i);
+  h = std::rotl(h ^ (tail * kMul1), 31) * kMul2;
+  h ^= h >> 33;
+  h *= kMul1;
+  h ^= h >> 29;
+  return h;
+}
+
+void serialize(const BlockHeader& h, std::uint8_t out[kBlockHeaderSize]) {
+  std::memset(out, 0, kBlockHeaderSize);
+  std::memcpy(out + 0, &kBlockMagic, 4);
+  out[4] = static_cast<std::uint8_t>(h.kind);
+  std::memcpy(out + 8, &h.stored_size, 4);
+  std::memcpy(out + 12, &h.raw_size, 4);
+  std::memcpy(out + 16, &h.first_event, 8);
+  std::memcpy(out + 24, &h.count, 8);
+  std::memcpy(out + 32, &h.mesh_hash, 8);
+  std::memcpy(out + 40, &h.steps, 4);
+  std::memcpy(out + 48, &h.checksum, 8);
+}
+
+BlockHeader parse_block_header(const std::uint8_t in[kBlockHeaderSize]) {
+  BlockHeader h;
+  h.kind = static_cast<BlockKind>(in[4]);
+  h.stored_size = get_le<std::uint32_t>(in + 8);
+  h.raw_size = get_le<std::uint32_t>(in + 12);
+  h.first_event = get_le<std::uint64_t>(in + 16);
+  h.count = get_le<std::uint64_t>(in + 24);
+  h.mesh_hash = get_le<std::uint64_t>(in + 32);
+  h.steps = get_le<std::uint32_t>(in + 40);
+  h.checksum = get_le<std::uint64_t>(in + 48);
+  return h;
+}
+
+std::uint64_t block_checksum(const std::uint8_t header[kBlockHeaderSize],
+                             std::span<const std::uint8_t> payload) {
+  return checksum(payload, checksum({header, 48}));
+}
+
+Compressor::Compressor(int level) : context_(ZSTD_createCCtx()), level_(level) {
+  if (!context_) throw std::bad_alloc();
+}
+Compressor::~Compressor() { ZSTD_freeCCtx(static_cast<ZSTD_CCtx*>(context_)); }
+
+void Compressor::compress(std::span<const std::uint8_t> raw, std::vector<std::uint8_t>& out) {
+  out.resize(ZSTD_compressBound(raw.size()));
+  const std::size_t n = ZSTD_compressCCtx(static_cast<ZSTD_CCtx*>(context_), out.data(),
+                                          out.size(), raw.data(), raw.size(), level_);
+  if (ZSTD_isError(n)) throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(n));
+  out.resize(n);
+}
+
+Decompressor::Decompressor() : context_(ZSTD_createDCtx()) {
+  if (!context_) throw std::bad_alloc();
+}
+Decompressor::~Decompressor() { ZSTD_freeDCtx(static_cast<ZSTD_DCtx*>(context_)); }
+
+void Decompressor::decompress(std::span<const std::uint8_t> stored, std::size_t raw_size,
+                              std::vector<std::uint8_t>& out) {
+  out.resize(raw_size);
+  const std::size_t n = ZSTD_decompressDCtx(static_cast<ZSTD_DCtx*>(context_), out.data(),
+                                            raw_size, stored.data(), stored.size());
+  if (ZSTD_isError(n))
+    throw std::runtime_error(std::string("does not decompress (") + ZSTD_getErrorName(n) + ")");
+  if (n != raw_size)
+    throw std::runtime_error("decompresses to " + std::to_string(n) + " bytes instead of " +
+                             std::to_string(raw_size));
+}
+
+}  // namespace meshstep::replay::format

@@ -1,0 +1,116 @@
+// The replay log's file format: constants, the block header, and the small binary helpers
+// shared by the writer and the reader. Integers are little-endian.
+//
+//   file    := file_header block*
+//   file_header := "MSTEPLOG" u32:format_version u32:L  fields[L bytes]  u64:checksum
+//              fields := (u16 key length, key, u32 value length, value)*   (UTF-8 strings)
+//   block   := block_header payload
+//   block_header (56 bytes):
+//     u32 magic "MSBK"   u8 kind   u8[3] zero   u32 stored_size   u32 raw_size
+//     u64 first_event    u64 count   u64 mesh_hash   u32 steps   u32 zero   u64 checksum
+//   kind events:   payload = zstd(encoded events), count = number of events, first_event =
+//                  index of the first, mesh_hash = hash of the mesh after the last, steps =
+//                  number of step_begin events in the block
+//   kind keyframe: payload = zstd(face records of every slot), count = number of slots,
+//                  first_event = number of events applied, mesh_hash = hash of that mesh
+//   kind end:      payload = zstd(summary: u64 events, u64 steps, u64 per event type),
+//                  written when the run finished; a file without it is truncated
+//   checksum: of the header's first 48 bytes and the stored payload.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace meshstep::replay::format {
+
+static_assert(std::endian::native == std::endian::little,
+              "the log format is little-endian and is read and written with memcpy");
+
+inline constexpr char kFileMagic[8] = {'M', 'S', 'T', 'E', 'P', 'L', 'O', 'G'};
+inline constexpr std::uint32_t kFormatVersion = 1;
+inline constexpr std::uint32_t kBlockMagic = 0x4B42534Du;  // "MSBK"
+inline constexpr std::size_t kBlockHeaderSize = 56;
+inline constexpr std::size_t kMaxBlockPayload = std::size_t{1} << 30;
+
+enum class BlockKind : std::uint8_t { events = 1, keyframe = 2, end = 3 };
+
+struct BlockHeader {
+  BlockKind kind = BlockKind::events;
+  std::uint32_t stored_size = 0;
+  std::uint32_t raw_size = 0;
+  std::uint64_t first_event = 0;
+  std::uint64_t count = 0;
+  std::uint64_t mesh_hash = 0;
+  std::uint32_t steps = 0;
+  std::uint64_t checksum = 0;
+};
+
+// 64-bit checksum of a byte range; changing any single 8-byte word always changes it.
+std::uint64_t checksum(std::span<const std::uint8_t> bytes, std::uint64_t seed = 0);
+
+void serialize(const BlockHeader& h, std::uint8_t out[kBlockHeaderSize]);
+BlockHeader parse_block_header(const std::uint8_t in[kBlockHeaderSize]);
+// Checksum over the first 48 header bytes (checksum field excluded) and the payload.
+std::uint64_t block_checksum(const std::uint8_t header[kBlockHeaderSize],
+                             std::span<const std::uint8_t> payload);
+
+template <class T>
+void put_le(std::vector<std::uint8_t>& out, T value) {
+  const std::size_t at = out.size();
+  out.resize(at + sizeof(T));
+  std::memcpy(out.data() + at, &value, sizeof(T));
+}
+template <class T>
+T get_le(const std::uint8_t* p) {
+  T value;
+  std::memcpy(&value, p, sizeof(T));
+  return value;
+}
+
+inline void put_varint(std::vector<std::uint8_t>& out, std::uint64_t v) {
+  while (v >= 0x80) {
+    out.push_back(static_cast<std::uint8_t>(v | 0x80));
+    v >>= 7;
+  }
+  out.push_back(static_cast<std::uint8_t>(v));
+}
+inline std::uint64_t zigzag(std::int64_t v) {
+  return (static_cast<std::uint64_t>(v) << 1) ^ static_cast<std::uint64_t>(v >> 63);
+}
+inline std::int64_t unzigzag(std::uint64_t v) {
+  return static_cast<std::int64_t>(v >> 1) ^ -static_cast<std::int64_t>(v & 1);
+}
+
+// zstd with a context kept across blocks (a context costs megabytes to set up).
+class Compressor {
+ public:
+  explicit Compressor(int level);
+  ~Compressor();
+  Compressor(const Compressor&) = delete;
+  Compressor& operator=(const Compressor&) = delete;
+  void compress(std::span<const std::uint8_t> raw, std::vector<std::uint8_t>& out);
+
+ private:
+  void* context_;
+  int level_;
+};
+
+class Decompressor {
+ public:
+  Decompressor();
+  ~Decompressor();
+  Decompressor(const Decompressor&) = delete;
+  Decompressor& operator=(const Decompressor&) = delete;
+  // Throws std::runtime_error when the data does not decompress to exactly raw_size bytes.
+  void decompress(std::span<const std::uint8_t> stored, std::size_t raw_size,
+                  std::vector<std::uint8_t>& out);
+
+ private:
+  void* context_;
+};
+
+}  // namespace meshstep::replay::format

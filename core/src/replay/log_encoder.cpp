@@ -1,0 +1,177 @@
+// Raw events to encoded, compressed blocks (see log_encoder.hpp).
+#include "log_encoder.hpp"
+
+#include <bit>
+#include <stdexcept>
+
+#include "meshstep/replay/mesh_hash.hpp"
+
+namespace meshstep::replay {
+namespace {
+
+double take_double(std::span<const std::uint32_t>::iterator& it) {
+  const std::uint64_t lo = *it++, hi = *it++;
+  return std::bit_cast<double>(lo | (hi << 32));
+}
+
+}  // namespace
+
+LogEncoder::LogEncoder(const LogWriterOptions& options, BlockOut out)
+    : options_(options), out_(std::move(out)), compressor_(options.zstd_level) {
+  block_.reserve(options_.block_bytes + 4096);
+}
+
+namespace {
+
+FaceRecord record_at(std::span<const std::uint32_t> words, std::size_t i) {
+  FaceRecord r;
+  r.v = {words[5 * i + 1], words[5 * i + 2], words[5 * i + 3]};
+  r.constrained = static_cast<std::uint8_t>(words[5 * i + 4]);
+  return r;
+}
+
+}  // namespace
+
+// `before` and `after` hold (slot, v0, v1, v2, flags) quintuples, each slot at most once
+// per list; a slot in one list only was dead on the other side.
+void LogEncoder::pair_writes(std::span<const std::uint32_t> before, std::span<const std::uint32_t> after) {
+  writes_.clear();
+  const std::size_t nb = before.size() / 5, na = after.size() / 5;
+  for (std::size_t i = 0; i < nb; ++i) writes_.push_back({before[5 * i], record_at(before, i), FaceRecord{}});
+  // Changes replace a handful of faces: pairing by linear search beats any index up to
+  // cavities of a few dozen faces, and large cavities are rare.
+  for (std::size_t j = 0; j < na; ++j) {
+    const FaceId slot = after[5 * j];
+    SlotWrite* match = nullptr;
+    for (std::size_t i = 0; i < nb && !match; ++i)
+      if (writes_[i].slot == slot) match = &writes_[i];
+    if (match) match->after = record_at(after, j);
+    else writes_.push_back({slot, FaceRecord{}, record_at(after, j)});
+  }
+  for (const SlotWrite& w : writes_) hash_ += face_hash(w.after) - face_hash(w.before);
+}
+
+void LogEncoder::consume(std::span<const std::uint32_t> words) {
+  auto it = words.begin();
+  while (it != words.end()) it = parse(it, words.end());
+}
+
+std::span<const std::uint32_t>::iterator LogEncoder::parse(
+    std::span<const std::uint32_t>::iterator it, std::span<const std::uint32_t>::iterator end) {
+  (void)end;  // the recorder writes whole events; batches never split one
+  if (*it == kKeyframeWord) return keyframe(it + 1);
+  Event e;
+  const std::uint32_t head = *it++;
+  e.type = static_cast<EventType>(head & 0xFF);
+  e.code = static_cast<std::uint8_t>(head >> 8);
+  const EventSchema& s = schema(e.type);
+  for (int i = 0; i < s.id_count; ++i) e.ids[i] = *it++;
+  if (s.has_point) {
+    const double x = take_double(it);
+    e.point = {x, take_double(it)};
+  }
+  if (s.has_value) e.value = take_double(it);
+  if (s.has_list) {
+    list_.assign(it + 1, it + 1 + *it);
+    it += 1 + list_.size();
+    e.list = list_;
+  }
+  if (s.has_points) {
+    const std::uint32_t n = *it++;
+    points_.clear();
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const double x = take_double(it);
+      points_.push_back({x, take_double(it)});
+    }
+    e.points = points_;
+  }
+  if (s.has_writes) {
+    const std::size_t nb = *it++;
+    const std::span<const std::uint32_t> before(&*it, 5 * nb);
+    it += 5 * nb;
+    const std::size_t na = *it++;
+    const std::span<const std::uint32_t> after(&*it, 5 * na);
+    it += 5 * na;
+    pair_writes(before, after);
+    e.writes = writes_;
+  }
+
+  encoder_.event(e, block_);
+  ++stats_.events;
+  ++stats_.by_type[static_cast<std::size_t>(e.type)];
+  if (e.type == EventType::step_begin) {
+    ++stats_.steps;
+    ++block_steps_;
+  }
+  if (block_.size() >= options_.block_bytes) flush_events();
+  return it;
+}
+
+void LogEncoder::emit(format::BlockHeader header, std::span<const std::uint8_t> raw) {
+  compressor_.compress(raw, stored_);
+  header.raw_size = static_cast<std::uint32_t>(raw.size());
+  header.stored_size = static_cast<std::uint32_t>(stored_.size());
+  std::uint8_t bytes[format::kBlockHeaderSize];
+  format::serialize(header, bytes);
+  header.checksum = format::block_checksum(bytes, stored_);
+  out_(header, stored_);
+  ++stats_.blocks;
+  stats_.bytes += format::kBlockHeaderSize + stored_.size();
+}
+
+void LogEncoder::flush_events() {
+  const std::uint64_t count = stats_.events - block_first_event_;
+  if (count == 0) return;
+  format::BlockHeader h;
+  h.kind = format::BlockKind::events;
+  h.first_event = block_first_event_;
+  h.count = count;
+  h.mesh_hash = hash_;
+  h.steps = block_steps_;
+  emit(h, block_);
+  block_.clear();
+  encoder_.reset();
+  block_first_event_ = stats_.events;
+  block_steps_ = 0;
+}
+
+// A keyframe sits between blocks: the events block so far ends where it is taken.
+std::span<const std::uint32_t>::iterator LogEncoder::keyframe(std::span<const std::uint32_t>::iterator it) {
+  flush_events();
+  const std::size_t count = *it++;
+  std::vector<FaceRecord> slots(count);
+  for (FaceRecord& r : slots) {
+    r.v = {it[0], it[1], it[2]};
+    r.constrained = static_cast<std::uint8_t>(it[3]);
+    it += 4;
+  }
+  std::vector<std::uint8_t> raw;
+  raw.reserve(count * 6);
+  codec::encode_keyframe(slots, raw);
+  format::BlockHeader h;
+  h.kind = format::BlockKind::keyframe;
+  h.first_event = stats_.events;
+  h.count = count;
+  h.mesh_hash = hash_;
+  const std::uint64_t before = stats_.bytes;
+  emit(h, raw);
+  stats_.keyframe_bytes += stats_.bytes - before;
+  ++stats_.keyframes;
+  return it;
+}
+
+void LogEncoder::finish() {
+  flush_events();
+  std::vector<std::uint8_t> summary;
+  format::put_le(summary, stats_.events);
+  format::put_le(summary, stats_.steps);
+  for (const std::uint64_t n : stats_.by_type) format::put_le(summary, n);
+  format::BlockHeader h;
+  h.kind = format::BlockKind::end;
+  h.first_event = stats_.events;
+  h.count = stats_.steps;
+  h.mesh_hash = hash_;
+  emit(h, summary);
+}
+
+}  // namespace meshstep::replay

@@ -1,0 +1,52 @@
+// The log writer's encoding stage, free of threads and files: takes batches of raw events
+// (event_sink.hpp), pairs each change's replaced and new faces by slot, keeps the mesh hash
+// current, encodes, and emits finished blocks (header + stored payload).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "event_codec.hpp"
+#include "format.hpp"
+#include "meshstep/replay/log_writer.hpp"
+
+namespace meshstep::replay {
+
+class LogEncoder {
+ public:
+  using BlockOut = std::function<void(const format::BlockHeader&, std::span<const std::uint8_t>)>;
+
+  LogEncoder(const LogWriterOptions& options, BlockOut out);
+  void consume(std::span<const std::uint32_t> words);
+  // Flushes the last events block and writes the end block.
+  void finish();
+  const LogStats& stats() const { return stats_; }
+
+ private:
+  std::span<const std::uint32_t>::iterator parse(std::span<const std::uint32_t>::iterator it,
+                                                 std::span<const std::uint32_t>::iterator end);
+  void pair_writes(std::span<const std::uint32_t> before, std::span<const std::uint32_t> after);
+  void flush_events();
+  std::span<const std::uint32_t>::iterator keyframe(std::span<const std::uint32_t>::iterator it);
+  void emit(format::BlockHeader header, std::span<const std::uint8_t> raw);
+
+  LogWriterOptions options_;
+  BlockOut out_;
+  format::Compressor compressor_;
+  codec::Encoder encoder_;
+  std::vector<std::uint8_t> block_;       // encoded events of the current block
+  std::vector<std::uint8_t> stored_;      // compression output
+  std::uint64_t block_first_event_ = 0;
+  std::uint32_t block_steps_ = 0;
+  std::uint64_t hash_ = 0;  // of the mesh as the events so far leave it
+
+  // Scratch for the event being parsed.
+  std::vector<std::uint32_t> list_;
+  std::vector<Point> points_;
+  std::vector<SlotWrite> writes_;
+  LogStats stats_;
+};
+
+}  // namespace meshstep::replay

@@ -1,0 +1,280 @@
+// Opening, checking and indexing a replay log (see log_reader.hpp).
+#include "meshstep/replay/log_reader.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "event_codec.hpp"
+#include "format.hpp"
+#include "meshstep/error.hpp"
+
+namespace meshstep::replay {
+namespace {
+
+constexpr std::size_t kCachedBlocks = 8;
+constexpr std::size_t kKeyframeCacheBytes = std::size_t{1} << 30;
+
+}  // namespace
+
+struct LogReader::Cache {
+  format::Decompressor decompressor;
+  std::vector<std::uint8_t> raw;
+  std::list<std::pair<std::size_t, DecodedEvents>> blocks;  // most recent first
+  std::map<std::size_t, std::vector<FaceRecord>> keyframes;
+  std::list<std::size_t> keyframe_order;  // most recent first
+  std::size_t keyframe_bytes = 0;
+};
+
+LogReader::~LogReader() = default;
+
+LogReader::LogReader(const std::string& path) : path_(path), cache_(std::make_unique<Cache>()) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw InputError(path, 0, std::string("cannot read: ") + std::strerror(errno));
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw InputError(path, 0, "cannot read: not a regular file");
+  file_.resize(static_cast<std::size_t>(size));
+  in.seekg(0);
+  if (!in.read(reinterpret_cast<char*>(file_.data()), size))
+    throw InputError(path, 0, "cannot read the whole file");
+  read_header();
+  scan_blocks();
+}
+
+std::string LogReader::where(std::size_t block) const {
+  const std::uint64_t offset = block < blocks_.size() ? blocks_[block].offset : 0;
+  return "block " + std::to_string(block) + " (byte " + std::to_string(offset) + ")";
+}
+
+void LogReader::read_header() {
+  const auto fail = [&](const std::string& m) { throw InputError(path_, 0, m); };
+  if (file_.size() < 16 || std::memcmp(file_.data(), format::kFileMagic, 8) != 0)
+    fail("not a meshstep replay log (it does not begin with \"MSTEPLOG\")");
+  format_version_ = format::get_le<std::uint32_t>(file_.data() + 8);
+  if (format_version_ == 0 || format_version_ > format::kFormatVersion)
+    fail("replay log format version " + std::to_string(format_version_) +
+         " is not one this meshstep reads (it reads version " +
+         std::to_string(format::kFormatVersion) + "; the log may come from a newer meshstep)");
+  const std::uint32_t length = format::get_le<std::uint32_t>(file_.data() + 12);
+  if (file_.size() < 16 + std::size_t{length} + 8) fail("truncated in its header");
+  const std::uint64_t stored = format::get_le<std::uint64_t>(file_.data() + 16 + length);
+  if (format::checksum({file_.data(), 16 + std::size_t{length}}) != stored)
+    fail("the header is damaged (checksum mismatch)");
+  std::map<std::string, std::string*> known = {
+      {"program_version", &header_.program_version}, {"input", &header_.input},
+      {"input_hash", &header_.input_hash},           {"algorithm", &header_.algorithm},
+      {"parameters", &header_.parameters},           {"data_structure", &header_.data_structure},
+      {"insertion", &header_.insertion}};
+  const std::uint8_t* p = file_.data() + 16;
+  const std::uint8_t* end = p + length;
+  while (p < end) {
+    if (end - p < 2) fail("the header's fields are malformed");
+    const std::uint16_t key_length = format::get_le<std::uint16_t>(p);
+    p += 2;
+    if (end - p < key_length + 4) fail("the header's fields are malformed");
+    const std::string key(reinterpret_cast<const char*>(p), key_length);
+    p += key_length;
+    const std::uint32_t value_length = format::get_le<std::uint32_t>(p);
+    p += 4;
+    if (static_cast<std::uint64_t>(end - p) < value_length) fail("the header's fields are malformed");
+    // Unknown keys are skipped: a newer writer may add fields within the same version.
+    if (const auto it = known.find(key); it != known.end())
+      it->second->assign(reinterpret_cast<const char*>(p), value_length);
+    p += value_length;
+  }
+  blocks_start_ = 16 + std::size_t{length} + 8;
+}
+
+std::string LogReader::parameter(const std::string& key, const std::string& fallback) const {
+  std::istringstream words(header_.parameters);
+  std::string word;
+  while (words >> word)
+    if (word.size() > key.size() && word.compare(0, key.size(), key) == 0 && word[key.size()] == '=')
+      return word.substr(key.size() + 1);
+  return fallback;
+}
+
+void LogReader::scan_blocks() {
+  std::size_t at = blocks_start_;
+  std::size_t block_number = 0;
+  DecodedEvents events;
+  while (at < file_.size()) {
+    const std::string here = "block " + std::to_string(block_number) + " (byte " + std::to_string(at) + ")";
+    const auto corrupt = [&](const std::string& m) {
+      throw InputError(path_, 0, here + ": " + m + " (the file is corrupted)");
+    };
+    if (file_.size() - at < format::kBlockHeaderSize) {
+      incomplete_reason_ = "the file ends inside the header of " + here;
+      return;
+    }
+    const std::uint8_t* head = file_.data() + at;
+    if (format::get_le<std::uint32_t>(head) != format::kBlockMagic) corrupt("not a block header");
+    const format::BlockHeader h = format::parse_block_header(head);
+    if (file_.size() - at - format::kBlockHeaderSize < h.stored_size) {
+      incomplete_reason_ = "the file ends inside " + here;
+      return;
+    }
+    const std::uint8_t* payload = head + format::kBlockHeaderSize;
+    if (format::block_checksum(head, {payload, h.stored_size}) != h.checksum) corrupt("checksum mismatch");
+    if (h.raw_size > format::kMaxBlockPayload) corrupt("block size out of range");
+    try {
+      switch (h.kind) {
+        case format::BlockKind::events: {
+          if (h.first_event != event_count_)
+            corrupt("starts at event " + std::to_string(h.first_event) + " but " +
+                    std::to_string(event_count_) + " events come before it");
+          cache_->decompressor.decompress({payload, h.stored_size}, h.raw_size, cache_->raw);
+          events.clear();
+          codec::Decoder decoder(cache_->raw.data(), cache_->raw.data() + cache_->raw.size());
+          while (!decoder.done()) {
+            try {
+              decoder.event(events);
+            } catch (const codec::FormatError& e) {
+              corrupt("event " + std::to_string(event_count_ + events.size()) + " (byte " +
+                      std::to_string(decoder.offset()) + " of the block's data): " + e.what());
+            }
+          }
+          if (events.size() != h.count)
+            corrupt("holds " + std::to_string(events.size()) + " events, its header says " +
+                    std::to_string(h.count));
+          blocks_.push_back({h.first_event, h.count, h.mesh_hash, at, h.stored_size, h.raw_size});
+          index_events(blocks_.size() - 1, events);
+          break;
+        }
+        case format::BlockKind::keyframe:
+          if (h.first_event != event_count_) corrupt("keyframe out of place");
+          keyframes_.push_back({h.first_event, h.count, h.mesh_hash, at, h.stored_size, h.raw_size});
+          break;
+        case format::BlockKind::end:
+          read_end_block(payload, h.stored_size, h.raw_size);
+          final_hash_ = h.mesh_hash;
+          complete_ = true;
+          if (at + format::kBlockHeaderSize + h.stored_size != file_.size())
+            corrupt("data after the end block");
+          return;
+        default: corrupt("unknown block kind " + std::to_string(static_cast<int>(h.kind)));
+      }
+    } catch (const std::runtime_error& e) {
+      if (dynamic_cast<const InputError*>(&e)) throw;
+      corrupt(e.what());
+    }
+    at += format::kBlockHeaderSize + h.stored_size;
+    ++block_number;
+  }
+  incomplete_reason_ = "the file ends after event " + std::to_string(event_count_) +
+                       " without an end block (the run that wrote it did not finish)";
+}
+
+void LogReader::index_events(std::size_t block, const DecodedEvents& events) {
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    const std::uint64_t e = event_count_ + i;
+    const EventHead& h = events.heads[i];
+    ++counts_[static_cast<std::size_t>(h.type)];
+    if (h.type == EventType::step_begin) step_starts_.push_back(e);
+    if (h.type == EventType::vertex || h.type == EventType::duplicate) {
+      const VertexId v = h.ids[0];
+      if (v >= kInfiniteVertex) throw InputError(path_, 0, where(block) + ": event " + std::to_string(e) + " introduces an invalid vertex id");
+      if (v >= vertices_.size()) vertices_.resize(std::size_t{v} + 1, VertexInfo{{0, 0}, kNone, kNone, kNone});
+      VertexInfo& info = vertices_[v];
+      info.point = h.point;
+      info.event = e;
+      if (h.type == EventType::vertex) {
+        info.input_index = h.ids[1];
+      } else {
+        info.same_as = h.ids[1];
+        info.input_index = h.ids[2];
+      }
+    }
+  }
+  event_count_ += events.size();
+}
+
+void LogReader::read_end_block(const std::uint8_t* payload, std::size_t stored, std::size_t raw_size) {
+  format::Decompressor d;
+  std::vector<std::uint8_t> raw;
+  d.decompress({payload, stored}, raw_size, raw);
+  if (raw.size() < 16 + 8 * kEventTypeCount) throw std::runtime_error("end block too short");
+  const auto events = format::get_le<std::uint64_t>(raw.data());
+  const auto steps = format::get_le<std::uint64_t>(raw.data() + 8);
+  bool same = events == event_count_ && steps == step_starts_.size();
+  for (std::size_t t = 0; t < kEventTypeCount; ++t)
+    same = same && format::get_le<std::uint64_t>(raw.data() + 16 + 8 * t) == counts_[t];
+  if (!same) throw std::runtime_error("the end block's counts do not match the events in the file");
+}
+
+std::uint64_t LogReader::step_start(std::uint64_t k) const {
+  return k < step_starts_.size() ? step_starts_[k] : event_count_;
+}
+
+std::uint64_t LogReader::step_of_event(std::uint64_t e) const {
+  const auto it = std::upper_bound(step_starts_.begin(), step_starts_.end(), e);
+  if (it == step_starts_.begin()) return step_starts_.size();
+  return static_cast<std::uint64_t>(it - step_starts_.begin()) - 1;
+}
+
+std::size_t LogReader::block_of_event(std::uint64_t e) const {
+  const auto it = std::upper_bound(blocks_.begin(), blocks_.end(), e,
+                                   [](std::uint64_t x, const BlockInfo& b) { return x < b.first_event; });
+  return static_cast<std::size_t>(it - blocks_.begin()) - 1;
+}
+
+const DecodedEvents& LogReader::block_events(std::size_t block) const {
+  auto& cached = cache_->blocks;
+  for (auto it = cached.begin(); it != cached.end(); ++it)
+    if (it->first == block) {
+      cached.splice(cached.begin(), cached, it);
+      return cached.front().second;
+    }
+  DecodedEvents events;
+  if (cached.size() >= kCachedBlocks) {
+    events = std::move(cached.back().second);  // reuse its buffers
+    events.clear();
+    cached.pop_back();
+  }
+  const BlockInfo& b = blocks_[block];
+  const std::uint8_t* payload = file_.data() + b.offset + format::kBlockHeaderSize;
+  cache_->decompressor.decompress({payload, b.stored_size}, b.raw_size, cache_->raw);
+  codec::Decoder decoder(cache_->raw.data(), cache_->raw.data() + cache_->raw.size());
+  while (!decoder.done()) decoder.event(events);  // checked when the file was opened
+  cached.emplace_front(block, std::move(events));
+  return cached.front().second;
+}
+
+Event LogReader::event(std::uint64_t e) const {
+  const std::size_t b = block_of_event(e);
+  return block_events(b)[e - blocks_[b].first_event];
+}
+
+const std::vector<FaceRecord>& LogReader::keyframe(std::size_t j) const {
+  if (const auto it = cache_->keyframes.find(j); it != cache_->keyframes.end()) {
+    cache_->keyframe_order.remove(j);
+    cache_->keyframe_order.push_front(j);
+    return it->second;
+  }
+  const KeyframeInfo& k = keyframes_[j];
+  const std::uint8_t* payload = file_.data() + k.offset + format::kBlockHeaderSize;
+  std::vector<std::uint8_t> raw;
+  std::vector<FaceRecord> slots;
+  try {
+    cache_->decompressor.decompress({payload, k.stored_size}, k.raw_size, raw);
+    slots = codec::decode_keyframe(raw, k.slot_count);
+  } catch (const std::runtime_error& e) {
+    throw InputError(path_, 0, "keyframe at byte " + std::to_string(k.offset) + ": " + e.what() +
+                                   " (the file is corrupted)");
+  }
+  const std::size_t bytes = slots.size() * sizeof(FaceRecord);
+  while (!cache_->keyframe_order.empty() && cache_->keyframe_bytes + bytes > kKeyframeCacheBytes) {
+    const std::size_t old = cache_->keyframe_order.back();
+    cache_->keyframe_order.pop_back();
+    cache_->keyframe_bytes -= cache_->keyframes[old].size() * sizeof(FaceRecord);
+    cache_->keyframes.erase(old);
+  }
+  cache_->keyframe_bytes += bytes;
+  cache_->keyframe_order.push_front(j);
+  return cache_->keyframes[j] = std::move(slots);
+}
+
+}  // namespace meshstep::replay

@@ -1,0 +1,206 @@
+// The log writer: a background thread encodes and writes while the algorithm runs.
+#include "meshstep/replay/log_writer.hpp"
+
+#include <cerrno>
+#include <condition_variable>
+#include <cstdio>
+#include <cstring>
+#include <deque>
+#include <exception>
+#include <fstream>
+#include <mutex>
+#include <thread>
+
+#include "format.hpp"
+#include "log_encoder.hpp"
+#include "meshstep/error.hpp"
+
+namespace meshstep::replay {
+namespace {
+
+constexpr std::size_t kBatchWords = 1 << 16;  // 256 KiB of raw events per hand-over
+constexpr std::size_t kMaxPending = 4;        // batches queued before the algorithm waits
+
+std::string hex16(std::uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
+void put_field(std::vector<std::uint8_t>& out, const std::string& key, const std::string& value) {
+  format::put_le(out, static_cast<std::uint16_t>(key.size()));
+  out.insert(out.end(), key.begin(), key.end());
+  format::put_le(out, static_cast<std::uint32_t>(value.size()));
+  out.insert(out.end(), value.begin(), value.end());
+}
+
+}  // namespace
+
+std::string file_hash(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw InputError(path, 0, std::string("cannot read: ") + std::strerror(errno));
+  const std::streamoff size = in.tellg();
+  std::vector<std::uint8_t> bytes(size > 0 ? static_cast<std::size_t>(size) : 0);
+  in.seekg(0);
+  if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size())))
+    throw InputError(path, 0, "cannot read the whole file");
+  return hex16(format::checksum(bytes));
+}
+
+struct LogWriter::Impl {
+  std::string path, partial;
+  std::FILE* file = nullptr;
+  LogEncoder encoder;
+  bool finished = false;
+
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::deque<std::vector<std::uint32_t>> pending;
+  std::vector<std::vector<std::uint32_t>> spare;
+  bool closing = false;
+  std::exception_ptr failure;
+  std::thread worker;
+
+  Impl(std::string p, const LogWriterOptions& options)
+      : path(std::move(p)), partial(path + ".partial"),
+        encoder(options, [this](const format::BlockHeader& h, std::span<const std::uint8_t> stored) {
+          write_block(h, stored);
+        }) {}
+
+  void fail_io(const char* what) {
+    throw InputError(partial, 0, std::string(what) + ": " + std::strerror(errno));
+  }
+
+  void write_bytes(const void* data, std::size_t n) {
+    if (std::fwrite(data, 1, n, file) != n) fail_io("cannot write");
+  }
+
+  void write_block(const format::BlockHeader& h, std::span<const std::uint8_t> stored) {
+    std::uint8_t bytes[format::kBlockHeaderSize];
+    format::serialize(h, bytes);
+    write_bytes(bytes, sizeof bytes);
+    write_bytes(stored.data(), stored.size());
+    // Each finished block reaches the operating system at once: a run that dies later
+    // leaves every block before it readable.
+    if (std::fflush(file) != 0) fail_io("cannot write");
+  }
+
+  void write_header(LogHeader header) {
+    header.program_version = MESHSTEP_VERSION;
+    std::vector<std::uint8_t> fields;
+    put_field(fields, "program_version", header.program_version);
+    put_field(fields, "input", header.input);
+    put_field(fields, "input_hash", header.input_hash);
+    put_field(fields, "algorithm", header.algorithm);
+    put_field(fields, "parameters", header.parameters);
+    put_field(fields, "data_structure", header.data_structure);
+    put_field(fields, "insertion", header.insertion);
+    std::vector<std::uint8_t> bytes(format::kFileMagic, format::kFileMagic + 8);
+    format::put_le(bytes, format::kFormatVersion);
+    format::put_le(bytes, static_cast<std::uint32_t>(fields.size()));
+    bytes.insert(bytes.end(), fields.begin(), fields.end());
+    format::put_le(bytes, format::checksum(bytes));
+    write_bytes(bytes.data(), bytes.size());
+  }
+
+  void run() {
+    try {
+      for (;;) {
+        std::vector<std::uint32_t> batch;
+        {
+          std::unique_lock lock(mutex);
+          changed.wait(lock, [&] { return !pending.empty() || closing; });
+          if (pending.empty()) break;
+          batch = std::move(pending.front());
+          pending.pop_front();
+        }
+        changed.notify_all();
+        encoder.consume(batch);
+        batch.clear();
+        std::lock_guard lock(mutex);
+        spare.push_back(std::move(batch));
+      }
+      if (finished) encoder.finish();
+    } catch (...) {
+      std::lock_guard lock(mutex);
+      failure = std::current_exception();
+      pending.clear();
+    }
+    changed.notify_all();
+  }
+
+  void submit(std::vector<std::uint32_t>& words) {
+    std::unique_lock lock(mutex);
+    changed.wait(lock, [&] { return pending.size() < kMaxPending || failure; });
+    if (failure) std::rethrow_exception(failure);
+    pending.push_back(std::move(words));
+    if (!spare.empty()) {
+      words = std::move(spare.back());
+      spare.pop_back();
+    } else {
+      words = {};
+      words.reserve(kBatchWords + kBatchWords / 4);
+    }
+    changed.notify_all();
+  }
+
+  void stop() {
+    {
+      std::lock_guard lock(mutex);
+      closing = true;
+    }
+    changed.notify_all();
+    if (worker.joinable()) worker.join();
+  }
+};
+
+LogWriter::LogWriter(std::string path, LogHeader header, LogWriterOptions options)
+    : EventSink(kBatchWords), impl_(std::make_unique<Impl>(std::move(path), options)) {
+  keyframes_ = options.keyframes;
+  impl_->file = std::fopen(impl_->partial.c_str(), "wb");
+  if (!impl_->file) impl_->fail_io("cannot create");
+  try {
+    impl_->write_header(std::move(header));
+  } catch (...) {
+    std::fclose(impl_->file);
+    std::remove(impl_->partial.c_str());
+    throw;
+  }
+  impl_->worker = std::thread([this] { impl_->run(); });
+}
+
+LogWriter::~LogWriter() {
+  if (impl_->finished) return;
+  impl_->stop();
+  std::fclose(impl_->file);
+  std::remove(impl_->partial.c_str());
+}
+
+void LogWriter::hand_over(std::vector<std::uint32_t>& words) { impl_->submit(words); }
+
+void LogWriter::finish() {
+  if (impl_->finished) return;
+  if (!words_.empty()) impl_->submit(words_);
+  impl_->finished = true;  // read by the worker only after stop() below wakes it
+  impl_->stop();
+  const bool closed = std::fclose(impl_->file) == 0;
+  impl_->file = nullptr;
+  if (impl_->failure) {
+    std::remove(impl_->partial.c_str());
+    std::rethrow_exception(impl_->failure);
+  }
+  if (!closed) {
+    std::remove(impl_->partial.c_str());
+    impl_->fail_io("cannot write");
+  }
+  if (std::rename(impl_->partial.c_str(), impl_->path.c_str()) != 0) {
+    const int err = errno;
+    std::remove(impl_->partial.c_str());
+    throw InputError(impl_->path, 0, std::string("cannot create: ") + std::strerror(err));
+  }
+}
+
+const LogStats& LogWriter::stats() const { return impl_->encoder.stats(); }
+const std::string& LogWriter::path() const { return impl_->path; }
+
+}  // namespace meshstep::replay

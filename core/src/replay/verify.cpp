@@ -1,0 +1,98 @@
+// Forward, backward, forward: every hash the writer stored must come out of the replay.
+#include "meshstep/replay/verify.hpp"
+
+#include <stdexcept>
+
+#include "meshstep/replay/mesh_hash.hpp"
+#include "meshstep/replay/replay.hpp"
+
+namespace meshstep::replay {
+namespace {
+
+class Verifier {
+ public:
+  Verifier(const LogReader& log, const std::function<void(int, double)>& progress)
+      : log_(log), replay_(log, /*track_hash=*/true), progress_(progress) {}
+
+  VerifyReport run() {
+    try {
+      check_boundary(0);
+      forward(0);
+      backward();
+      forward(2);
+      if (log_.complete() && replay_.hash() != log_.final_hash())
+        fail("the mesh at the end differs from the one the end block describes");
+      if (!log_.complete()) fail("the log is incomplete: " + log_.incomplete_reason());
+    } catch (const std::exception& e) {
+      if (report_.ok) fail(e.what());
+    }
+    report_.events = log_.event_count();
+    report_.steps = log_.step_count();
+    return report_;
+  }
+
+ private:
+  void fail(const std::string& m) {
+    if (!report_.ok) return;
+    report_.ok = false;
+    report_.problem = m;
+    throw std::runtime_error(m);
+  }
+
+  // The stored hash of the mesh after `events` events (block ends and keyframes).
+  void check_boundary(std::uint64_t events) {
+    if (events == 0 && replay_.hash() != 0) fail("the mesh at the start is not empty");
+    const auto& blocks = log_.blocks();
+    const std::size_t b = events == 0 ? blocks.size() : log_.block_of_event(events - 1);
+    if (b < blocks.size() && blocks[b].first_event + blocks[b].event_count == events) {
+      ++report_.hashes_checked;
+      if (replay_.hash() != blocks[b].mesh_hash)
+        fail("the mesh after event " + std::to_string(events) + " differs from the one the log stored");
+    }
+    for (std::size_t j = 0; j < log_.keyframes().size(); ++j) {
+      const KeyframeInfo& k = log_.keyframes()[j];
+      if (k.event != events) continue;
+      ++report_.keyframes_checked;
+      const std::vector<FaceRecord>& stored = log_.keyframe(j);
+      const auto& slots = replay_.slots();
+      bool same = k.mesh_hash == mesh_hash(stored) && k.mesh_hash == replay_.hash();
+      for (std::size_t i = 0; same && i < std::max(stored.size(), slots.size()); ++i) {
+        const FaceRecord a = i < stored.size() ? stored[i] : FaceRecord{};
+        const FaceRecord b2 = i < slots.size() ? slots[i] : FaceRecord{};
+        same = a == b2;
+      }
+      if (!same) fail("the keyframe after event " + std::to_string(events) + " differs from the replayed mesh");
+    }
+  }
+
+  void forward(int pass) {
+    const auto& blocks = log_.blocks();
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+      replay_.walk_to(blocks[b].first_event + blocks[b].event_count);
+      check_boundary(replay_.position());
+      if (progress_ && b % 64 == 0) progress_(pass, static_cast<double>(b) / blocks.size());
+    }
+  }
+
+  void backward() {
+    const auto& blocks = log_.blocks();
+    for (std::size_t b = blocks.size(); b-- > 0;) {
+      replay_.walk_to(blocks[b].first_event);
+      check_boundary(replay_.position());
+      if (progress_ && b % 64 == 0) progress_(1, 1.0 - static_cast<double>(b) / blocks.size());
+    }
+  }
+
+  const LogReader& log_;
+  Replay replay_;
+  const std::function<void(int, double)>& progress_;
+  VerifyReport report_;
+};
+
+}  // namespace
+
+VerifyReport verify(const LogReader& log, const std::function<void(int, double)>& progress) {
+  return Verifier(log, progress).run();
+}
+
+}  // namespace meshstep::replay

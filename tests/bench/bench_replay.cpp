@@ -1,0 +1,113 @@
+// Google Benchmark: the cost of recording, the size of the log, and seeking in it.
+//
+//   triangulate/{off,on}/N   triangulate N uniform random points without and with a
+//                            recorder writing a replay log (wall time: the log writer
+//                            encodes on a second thread). Counters on "on": events,
+//                            bytes_per_event (whole file, keyframes included), keyframes.
+//   seek/N                   open the log of an N-point run, then 200 seeks to random
+//                            events (fixed seed), each timed alone. Counters: open_ms,
+//                            first_ms (a cold seek: nothing decoded yet), median_ms,
+//                            p90_ms, max_ms over the 200.
+//
+//   bench_replay --benchmark_filter='/1000000$'
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "meshstep/delaunay/triangulate.hpp"
+#include "meshstep/replay/log_reader.hpp"
+#include "meshstep/replay/log_writer.hpp"
+#include "meshstep/replay/replay.hpp"
+#include "random_points.hpp"
+
+namespace {
+
+std::string log_path(std::size_t n) {
+  return (std::filesystem::temp_directory_path() / ("meshstep_bench_" + std::to_string(n) + ".mslog")).string();
+}
+
+meshstep::replay::LogStats record(const std::vector<meshstep::Point>& points, const std::string& path) {
+  meshstep::replay::LogHeader header;
+  header.algorithm = "triangulate";
+  header.parameters = "input_vertices=" + std::to_string(points.size());
+  header.data_structure = "tds";
+  header.insertion = "flip";
+  meshstep::replay::LogWriter writer(path, header);
+  meshstep::TriangulateOptions options;
+  options.record = &writer;
+  meshstep::Pslg input;
+  input.points = points;
+  const meshstep::TriMesh mesh = meshstep::triangulate(std::move(input), options);
+  benchmark::DoNotOptimize(mesh.triangles.data());
+  writer.finish();
+  return writer.stats();
+}
+
+void bm_triangulate(benchmark::State& state, bool recording) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const std::vector<meshstep::Point> points = meshstep::bench::uniform_points(n);
+  meshstep::replay::LogStats stats;
+  for (auto _ : state) {
+    if (recording) {
+      stats = record(points, log_path(n));
+    } else {
+      meshstep::Pslg input;
+      input.points = points;
+      const meshstep::TriMesh mesh = meshstep::triangulate(std::move(input));
+      benchmark::DoNotOptimize(mesh.triangles.data());
+    }
+  }
+  if (recording) {
+    state.counters["events"] = static_cast<double>(stats.events);
+    state.counters["bytes_per_event"] = static_cast<double>(stats.bytes) / static_cast<double>(stats.events);
+    state.counters["keyframes"] = static_cast<double>(stats.keyframes);
+    state.counters["keyframe_bytes_per_event"] =
+        static_cast<double>(stats.keyframe_bytes) / static_cast<double>(stats.events);
+  }
+}
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void bm_seek(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const std::string path = log_path(n);
+  if (!std::filesystem::exists(path)) record(meshstep::bench::uniform_points(n), path);
+  for (auto _ : state) {
+    auto t0 = std::chrono::steady_clock::now();
+    const meshstep::replay::LogReader log(path);
+    const double open_ms = ms_since(t0);
+    meshstep::replay::Replay replay(log);
+    std::mt19937_64 engine(42);
+    std::vector<double> ms;
+    for (int i = 0; i < 200; ++i) {
+      const std::uint64_t target = engine() % (log.event_count() + 1);
+      t0 = std::chrono::steady_clock::now();
+      replay.seek_event(target);
+      benchmark::DoNotOptimize(replay.slots().data());
+      ms.push_back(ms_since(t0));
+    }
+    const double first = ms.front();
+    std::sort(ms.begin(), ms.end());
+    state.counters["open_ms"] = open_ms;
+    state.counters["first_ms"] = first;
+    state.counters["median_ms"] = ms[ms.size() / 2];
+    state.counters["p90_ms"] = ms[ms.size() * 9 / 10];
+    state.counters["max_ms"] = ms.back();
+  }
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(bm_triangulate, off, false)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(bm_triangulate, on, true)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(bm_seek)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
+
+BENCHMARK_MAIN();
