@@ -4,6 +4,8 @@
 //                            recorder writing a replay log (wall time: the log writer
 //                            encodes on a second thread). Counters on "on": events,
 //                            bytes_per_event (whole file, keyframes included), keyframes.
+//   triangulate_discard/N    recording into a sink that drops everything: the cost on the
+//                            algorithm's thread alone
 //   seek/N                   open the log of an N-point run, then 200 seeks to random
 //                            events (fixed seed), each timed alone. Counters: open_ms,
 //                            first_ms (a cold seek: nothing decoded yet), median_ms,
@@ -47,6 +49,33 @@ meshstep::replay::LogStats record(const std::vector<meshstep::Point>& points, co
   benchmark::DoNotOptimize(mesh.triangles.data());
   writer.finish();
   return writer.stats();
+}
+
+// A sink that drops every batch: what recording costs the algorithm's own thread.
+class DiscardSink final : public meshstep::replay::EventSink {
+ public:
+  DiscardSink() : EventSink(1 << 16) {}
+  std::uint64_t words = 0;
+
+ protected:
+  void hand_over(std::vector<std::uint32_t>& batch) override {
+    words += batch.size();
+    batch.clear();
+  }
+};
+
+void bm_triangulate_discard(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const std::vector<meshstep::Point> points = meshstep::bench::uniform_points(n);
+  for (auto _ : state) {
+    DiscardSink sink;
+    meshstep::TriangulateOptions options;
+    options.record = &sink;
+    meshstep::Pslg input;
+    input.points = points;
+    const meshstep::TriMesh mesh = meshstep::triangulate(std::move(input), options);
+    benchmark::DoNotOptimize(mesh.triangles.data());
+  }
 }
 
 void bm_triangulate(benchmark::State& state, bool recording) {
@@ -108,6 +137,7 @@ void bm_seek(benchmark::State& state) {
 
 BENCHMARK_CAPTURE(bm_triangulate, off, false)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(bm_triangulate, on, true)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(bm_triangulate_discard)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(bm_seek)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
 
 BENCHMARK_MAIN();

@@ -10,35 +10,16 @@
 #include <sys/wait.h>
 
 #include "meshstep/io/triangle_io.hpp"
+#include "run_cli.hpp"
 
 namespace meshstep {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandResult {
-  int status = -1;
-  std::string out, err;
-};
+using testing::CommandResult;
 
-// Runs the meshstep binary with `args` (already shell-quoted where needed).
-CommandResult meshstep(const std::string& args, const fs::path& dir) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = std::string(MESHSTEP_BINARY) + " " + args + " >" + out.string() +
-                              " 2>" + err.string();
-  const int raw = std::system(command.c_str());
-  CommandResult r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  };
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
+CommandResult meshstep(const std::string& args, const fs::path& dir) { return testing::run_meshstep(args, dir); }
 
 class Cli : public ::testing::Test {
  protected:

@@ -10,124 +10,186 @@
 namespace meshstep::replay::codec {
 namespace {
 
-using format::put_varint;
 using format::unzigzag;
 using format::zigzag;
 
-constexpr std::uint8_t kDeadFlag = 0x80;
-// Vertex references inside an event: a table position, or one of these.
-constexpr std::uint8_t kTableCapacity = 253;
-constexpr std::uint8_t kRefInfinite = 253;
-constexpr std::uint8_t kRefNew = 254;
+// Vertex codes: 0 none, 1 the vertex at infinity, 2 + slot for a hit in the recent-vertex
+// cache, kFullVertex + zigzag(difference from the last vertex written in full) otherwise.
+constexpr std::uint64_t kFullVertex = 2 + CoderState::kCache;
+// Record headers: constraint bits 0..7 then three vertex codes; kDead; or kTableRecord |
+// three 2-bit table positions, plus kTableFlags when a byte of constraint bits follows.
+constexpr std::uint8_t kDead = 0x08;
+constexpr std::uint8_t kTableRecord = 0x80;
+constexpr std::uint8_t kTableFlags = 0x40;
 
-void put_f64(std::vector<std::uint8_t>& out, double d) { format::put_le(out, d); }
+std::uint8_t* put_varint(std::uint8_t* out, std::uint64_t v) {
+  while (v >= 0x80) {
+    *out++ = static_cast<std::uint8_t>(v | 0x80);
+    v >>= 7;
+  }
+  *out++ = static_cast<std::uint8_t>(v);
+  return out;
+}
+
+std::uint8_t* put_f64(std::uint8_t* out, double d) {
+  std::memcpy(out, &d, 8);
+  return out + 8;
+}
 
 }  // namespace
 
-// Vertex ids: 0 = kNone, 1 = kInfiniteVertex, else 2 + zigzag(difference from the previous).
-void Encoder::vertex(std::uint32_t v, std::vector<std::uint8_t>& out) {
-  if (v == kNone) {
-    out.push_back(0);
-  } else if (v == kInfiniteVertex) {
-    out.push_back(1);
-  } else {
-    put_varint(out, 2 + zigzag(std::int64_t{v} - std::int64_t{vertex_ref_}));
-    vertex_ref_ = v;
+std::size_t flip_writes(const std::array<std::uint32_t, 4>& abcd, const std::array<FaceId, 4>& slots,
+                        std::uint32_t packed, SlotWrite out[4]) {
+  const auto [a, b, c, d] = abcd;
+  const auto face = [&](int i, VertexId x, VertexId y, VertexId z) {
+    const std::uint32_t bits = packed >> (5 * i);
+    const std::uint32_t k = bits & 3;
+    const VertexId order[3] = {x, y, z};
+    FaceRecord r;
+    r.v = {order[k % 3], order[(k + 1) % 3], order[(k + 2) % 3]};
+    r.constrained = static_cast<std::uint8_t>((bits >> 2) & 7);
+    return r;
+  };
+  out[0] = {slots[0], face(0, a, b, c), FaceRecord{}};
+  out[1] = {slots[1], face(1, b, a, d), FaceRecord{}};
+  std::size_t n = 2;
+  const FaceRecord after[2] = {face(2, c, d, b), face(3, d, c, a)};
+  for (int j = 0; j < 2; ++j) {
+    const FaceId slot = slots[2 + j];
+    if (out[0].slot == slot) out[0].after = after[j];
+    else if (out[1].slot == slot) out[1].after = after[j];
+    else out[n++] = {slot, FaceRecord{}, after[j]};
   }
+  return n;
 }
 
-void Encoder::id(IdKind kind, std::uint32_t value, std::vector<std::uint8_t>& out) {
+std::size_t Encoder::max_bytes(const Event& e) {
+  return 2 + 4 * 10 + 16 + 8 + 10 + 10 * e.list.size() + 10 + 16 * e.points.size() + 10 +
+         e.writes.size() * (10 + 2 * kMaxRecordBytes + 2);
+}
+
+std::uint8_t* Encoder::vertex(std::uint32_t v, std::uint8_t* out) {
+  if (v == kNone) {
+    *out++ = 0;
+    return out;
+  }
+  if (v == kInfiniteVertex) {
+    *out++ = 1;
+    return out;
+  }
+  const std::size_t slot = v % CoderState::kCache;
+  if (state_.cache[slot] == v) {
+    *out++ = static_cast<std::uint8_t>(2 + slot);
+    return out;
+  }
+  out = put_varint(out, kFullVertex + zigzag(std::int64_t{v} - std::int64_t{state_.last_vertex}));
+  state_.last_vertex = v;
+  state_.cache[slot] = v;
+  return out;
+}
+
+std::uint8_t* Encoder::id(IdKind kind, std::uint32_t value, std::uint8_t* out) {
   switch (kind) {
-    case IdKind::vertex: vertex(value, out); return;
-    case IdKind::count: put_varint(out, value); return;
-    case IdKind::marker: put_varint(out, zigzag(static_cast<std::int32_t>(value))); return;
+    case IdKind::vertex:
+      out = vertex(value, out);
+      state_.remember(value);
+      return out;
+    case IdKind::count: return put_varint(out, value);
+    case IdKind::marker: return put_varint(out, zigzag(static_cast<std::int32_t>(value)));
     case IdKind::slot:
     case IdKind::input: {
-      std::uint32_t& ref = kind == IdKind::slot ? slot_ref_ : input_ref_;
+      std::uint32_t& ref = kind == IdKind::slot ? state_.slot_ref : state_.input_ref;
       if (value == kNone) {
-        out.push_back(0);
-      } else {
-        put_varint(out, 1 + zigzag(std::int64_t{value} - std::int64_t{ref}));
-        ref = value;
+        *out++ = 0;
+        return out;
       }
-      return;
+      out = put_varint(out, 1 + zigzag(std::int64_t{value} - std::int64_t{ref}));
+      ref = value;
+      return out;
     }
   }
+  return out;
 }
 
-void Encoder::table_vertex(std::uint32_t v, std::vector<std::uint8_t>& out) {
-  if (v == kInfiniteVertex) {
-    out.push_back(kRefInfinite);
-    return;
+std::uint8_t* Encoder::record(const FaceRecord& r, std::uint8_t* out) {
+  if (r.dead()) {
+    *out++ = kDead;
+    return out;
   }
-  for (std::size_t i = 0; i < table_size_; ++i)
-    if (table_[i] == v) {
-      out.push_back(static_cast<std::uint8_t>(i));
-      return;
+  *out++ = r.constrained & 7;
+  for (const VertexId v : r.v) out = vertex(v, out);
+  return out;
+}
+
+std::uint8_t* Encoder::table_record(const FaceRecord& r, std::uint8_t* out) {
+  if (!r.dead()) {
+    const int i0 = state_.find(r.v[0]), i1 = state_.find(r.v[1]), i2 = state_.find(r.v[2]);
+    if (i0 >= 0 && i1 >= 0 && i2 >= 0) {
+      const auto flags = static_cast<std::uint8_t>(r.constrained & 7);
+      *out++ = static_cast<std::uint8_t>(kTableRecord | (flags ? kTableFlags : 0) | i0 | i1 << 2 | i2 << 4);
+      if (flags) *out++ = flags;
+      return out;
     }
-  out.push_back(kRefNew);
-  vertex(v, out);
-  if (table_size_ < kTableCapacity) table_[table_size_++] = v;
-}
-
-void Encoder::table_record(const FaceRecord& r, std::vector<std::uint8_t>& out) {
-  if (r.dead()) {
-    out.push_back(kDeadFlag);
-    return;
   }
-  out.push_back(r.constrained & 7);
-  for (const VertexId v : r.v) table_vertex(v, out);
+  out = record(r, out);
+  if (!r.dead())
+    for (const VertexId v : r.v) state_.remember(v);
+  return out;
 }
 
-void Encoder::record(const FaceRecord& r, std::vector<std::uint8_t>& out) {
-  if (r.dead()) {
-    out.push_back(kDeadFlag);
-    return;
-  }
-  out.push_back(r.constrained & 7);
-  for (const VertexId v : r.v) vertex(v, out);
-}
-
-void Encoder::event(const Event& e, std::vector<std::uint8_t>& out) {
+// Flattened: the per-vertex helpers run a dozen times per event and GCC keeps them out of
+// line otherwise.
+[[gnu::flatten]] std::uint8_t* Encoder::event(const Event& e, std::uint8_t* out) {
   const EventSchema& s = schema(e.type);
-  out.push_back(static_cast<std::uint8_t>(e.type));
-  out.push_back(e.code);
-  table_size_ = 0;
-  for (int i = 0; i < s.id_count; ++i) {
-    id(s.id_kinds[i], e.ids[i], out);
-    if (s.id_kinds[i] == IdKind::vertex && e.ids[i] < kInfiniteVertex) table_[table_size_++] = e.ids[i];
-  }
+  *out++ = static_cast<std::uint8_t>(e.type);
+  *out++ = e.code;
+  state_.table_size = 0;
+  for (int i = 0; i < s.id_count; ++i) out = id(s.id_kinds[i], e.ids[i], out);
   if (s.has_point) {
-    put_f64(out, e.point.x);
-    put_f64(out, e.point.y);
+    out = put_f64(out, e.point.x);
+    out = put_f64(out, e.point.y);
   }
-  if (s.has_value) put_f64(out, e.value);
+  if (s.has_value) out = put_f64(out, e.value);
   if (s.has_list) {
-    put_varint(out, e.list.size());
-    for (const std::uint32_t x : e.list) vertex(x, out);
+    out = put_varint(out, e.list.size());
+    for (const std::uint32_t x : e.list) out = vertex(x, out);
   }
   if (s.has_points) {
-    put_varint(out, e.points.size());
+    out = put_varint(out, e.points.size());
     for (const Point& p : e.points) {
-      put_f64(out, p.x);
-      put_f64(out, p.y);
+      out = put_f64(out, p.x);
+      out = put_f64(out, p.y);
     }
   }
   if (s.has_writes) {
-    put_varint(out, e.writes.size());
+    out = put_varint(out, e.writes.size());
     for (const SlotWrite& w : e.writes) {
-      id(IdKind::slot, w.slot, out);
-      table_record(w.before, out);
-      table_record(w.after, out);
+      out = id(IdKind::slot, w.slot, out);
+      out = table_record(w.before, out);
+      out = table_record(w.after, out);
     }
   }
+  return out;
+}
+
+std::uint8_t* Encoder::flip(std::uint8_t code, const std::array<std::uint32_t, 4>& abcd,
+                            const std::array<FaceId, 4>& slots, std::uint32_t packed, std::uint8_t* out) {
+  *out++ = static_cast<std::uint8_t>(EventType::flip);
+  *out++ = code;
+  for (const std::uint32_t v : abcd) out = vertex(v, out);
+  for (const FaceId f : slots) out = id(IdKind::slot, f, out);
+  return put_varint(out, packed);
+}
+
+std::uint8_t Decoder::byte(const char* what) {
+  if (p_ == end_) throw FormatError(std::string("event data ends in the middle of ") + what);
+  return *p_++;
 }
 
 std::uint64_t Decoder::varint() {
   std::uint64_t v = 0;
   for (int shift = 0; shift < 64; shift += 7) {
-    if (p_ == end_) throw FormatError("event data ends in the middle of a number");
-    const std::uint8_t b = *p_++;
+    const std::uint8_t b = byte("a number");
     v |= std::uint64_t{b & 0x7Fu} << shift;
     if (!(b & 0x80)) return v;
   }
@@ -144,15 +206,25 @@ std::uint32_t Decoder::vertex() {
   const std::uint64_t code = varint();
   if (code == 0) return kNone;
   if (code == 1) return kInfiniteVertex;
-  const std::int64_t v = std::int64_t{vertex_ref_} + unzigzag(code - 2);
+  if (code < kFullVertex) {
+    const std::uint32_t v = state_.cache[code - 2];
+    if (v == kNone) throw FormatError("vertex refers to an empty cache slot");
+    return v;
+  }
+  const std::int64_t v = std::int64_t{state_.last_vertex} + unzigzag(code - kFullVertex);
   if (v < 0 || v >= std::int64_t{kInfiniteVertex}) throw FormatError("vertex id out of range");
-  vertex_ref_ = static_cast<std::uint32_t>(v);
-  return vertex_ref_;
+  state_.last_vertex = static_cast<std::uint32_t>(v);
+  state_.cache[state_.last_vertex % CoderState::kCache] = state_.last_vertex;
+  return state_.last_vertex;
 }
 
 std::uint32_t Decoder::id(IdKind kind) {
   switch (kind) {
-    case IdKind::vertex: return vertex();
+    case IdKind::vertex: {
+      const std::uint32_t v = vertex();
+      state_.remember(v);
+      return v;
+    }
     case IdKind::count: return u32("count");
     case IdKind::marker: {
       const std::int64_t m = unzigzag(varint());
@@ -161,7 +233,7 @@ std::uint32_t Decoder::id(IdKind kind) {
     }
     case IdKind::slot:
     case IdKind::input: {
-      std::uint32_t& ref = kind == IdKind::slot ? slot_ref_ : input_ref_;
+      std::uint32_t& ref = kind == IdKind::slot ? state_.slot_ref : state_.input_ref;
       const std::uint64_t code = varint();
       if (code == 0) return kNone;
       const std::int64_t v = std::int64_t{ref} + unzigzag(code - 1);
@@ -182,37 +254,11 @@ double Decoder::f64() {
   return d;
 }
 
-std::uint32_t Decoder::table_vertex() {
-  if (p_ == end_) throw FormatError("event data ends in the middle of a face record");
-  const std::uint8_t ref = *p_++;
-  if (ref == kRefInfinite) return kInfiniteVertex;
-  if (ref == kRefNew) {
-    const std::uint32_t v = vertex();
-    if (v == kNone || v == kInfiniteVertex) throw FormatError("bad vertex in a face record");
-    if (table_size_ < kTableCapacity) table_[table_size_++] = v;
-    return v;
-  }
-  if (ref >= table_size_) throw FormatError("face record names a vertex the event does not have");
-  return table_[ref];
-}
-
-FaceRecord Decoder::table_record() {
-  if (p_ == end_) throw FormatError("event data ends in the middle of a face record");
-  const std::uint8_t flags = *p_++;
-  FaceRecord r;
-  if (flags == kDeadFlag) return r;
-  if (flags & ~7u) throw FormatError("bad face record flags");
-  r.constrained = flags;
-  for (VertexId& v : r.v) v = table_vertex();
-  return r;
-}
-
 FaceRecord Decoder::record() {
-  if (p_ == end_) throw FormatError("event data ends in the middle of a face record");
-  const std::uint8_t flags = *p_++;
+  const std::uint8_t flags = byte("a face record");
   FaceRecord r;
-  if (flags == kDeadFlag) return r;
-  if (flags & ~7u) throw FormatError("bad face record flags");
+  if (flags == kDead) return r;
+  if (flags > 7) throw FormatError("bad face record header");
   r.constrained = flags;
   for (VertexId& v : r.v) {
     v = vertex();
@@ -221,23 +267,68 @@ FaceRecord Decoder::record() {
   return r;
 }
 
+FaceRecord Decoder::table_record() {
+  if (p_ == end_ || !(*p_ & kTableRecord)) {  // record() reads the header itself
+    const FaceRecord r = record();
+    if (!r.dead())
+      for (const VertexId v : r.v) state_.remember(v);
+    return r;
+  }
+  const std::uint8_t head = *p_++;
+  FaceRecord r;
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t at = (head >> (2 * i)) & 3u;
+    if (at >= state_.table_size) throw FormatError("face record names a vertex the event does not have");
+    r.v[i] = state_.table[at];
+  }
+  if (head & kTableFlags) {
+    r.constrained = byte("a face record");
+    if (r.constrained == 0 || r.constrained > 7) throw FormatError("bad face record flags");
+  }
+  return r;
+}
+
 void Decoder::event(DecodedEvents& out) {
   if (end_ - p_ < 2) throw FormatError("event data ends in the middle of an event");
   const std::uint8_t type = *p_++;
   if (type >= kEventTypeCount)
-    throw FormatError("unknown event type " + std::to_string(type) +
-                      " (written by a newer meshstep?)");
+    throw FormatError("unknown event type " + std::to_string(type) + " (written by a newer meshstep?)");
   EventHead h{};
   h.type = static_cast<EventType>(type);
   h.code = *p_++;
   h.ids = {kNone, kNone, kNone, kNone};
-  const EventSchema& s = schema(h.type);
-  table_size_ = 0;
-  for (int i = 0; i < s.id_count; ++i) {
-    h.ids[i] = id(s.id_kinds[i]);
-    if (s.id_kinds[i] == IdKind::vertex && h.ids[i] < kInfiniteVertex) table_[table_size_++] = h.ids[i];
+  if (h.type == EventType::flip) {
+    std::array<std::uint32_t, 4> abcd;
+    for (std::uint32_t& v : abcd) {
+      v = vertex();
+      if (v == kNone) throw FormatError("a flip names no vertex");
+    }
+    std::array<FaceId, 4> slots;
+    for (FaceId& f : slots) {
+      f = id(IdKind::slot);
+      if (f == kNone) throw FormatError("a flip names no face slot");
+    }
+    const std::uint64_t packed = varint();
+    if (packed >= (1u << 20)) throw FormatError("bad flip bits");
+    for (int i = 0; i < 4; ++i)
+      if (((packed >> (5 * i)) & 3u) == 3u) throw FormatError("bad flip rotation");
+    SlotWrite writes[4];
+    const std::size_t n = flip_writes(abcd, slots, static_cast<std::uint32_t>(packed), writes);
+    out.writes.insert(out.writes.end(), writes, writes + n);
+    std::copy(abcd.begin(), abcd.end(), h.ids.begin());
+    h.list_end = static_cast<std::uint32_t>(out.lists.size());
+    h.points_end = static_cast<std::uint32_t>(out.points.size());
+    h.writes_end = static_cast<std::uint32_t>(out.writes.size());
+    out.heads.push_back(h);
+    return;
   }
-  if (s.has_point) h.point = {f64(), f64()};
+  const EventSchema& s = schema(h.type);
+  state_.table_size = 0;
+  for (int i = 0; i < s.id_count; ++i) h.ids[i] = id(s.id_kinds[i]);
+  if (s.has_point) {
+    const double x = f64();
+    h.point = {x, f64()};
+  }
   if (s.has_value) h.value = f64();
   // Counts are bounded by the bytes left (every element takes at least one byte), so a
   // corrupted count cannot make us allocate without bound.
@@ -276,7 +367,11 @@ void Decoder::event(DecodedEvents& out) {
 
 void encode_keyframe(std::span<const FaceRecord> slots, std::vector<std::uint8_t>& out) {
   Encoder e;
-  for (const FaceRecord& r : slots) e.record(r, out);
+  const std::size_t start = out.size();
+  out.resize(start + slots.size() * Encoder::kMaxRecordBytes);
+  std::uint8_t* p = out.data() + start;
+  for (const FaceRecord& r : slots) p = e.record(r, p);
+  out.resize(static_cast<std::size_t>(p - out.data()));
 }
 
 std::vector<FaceRecord> decode_keyframe(std::span<const std::uint8_t> bytes, std::size_t count) {

@@ -1,14 +1,17 @@
-// Events to bytes and back. The encoding is driven by each type's schema; ids are stored
-// as varints, vertex ids and slots as differences from the previous one (neighbouring
-// faces have neighbouring ids, so most differences fit in a byte), which zstd then
-// compresses further. A block starts from reset coders so that it decodes on its own.
+// Events to bytes and back, driven by each type's schema.
 //
-// Within one event, the faces of the mesh delta mostly reuse a few vertices (a flip's four,
-// a split's new vertex and its ring): every vertex an event names goes into a small table,
-// and a face record names its vertices by one-byte table positions; a vertex not yet in
-// the table is written in full once (escape byte) and added.
+// Vertex ids dominate the data, and most of them repeat ones just written: a flip names
+// the vertex being inserted and the edge the previous change made. So a vertex is written
+// as one byte when it is in a small direct-mapped cache of recent vertices (slot v % 64),
+// and otherwise as the difference from the last vertex written in full. Within one event,
+// face records name their vertices through a table of the event's first four vertices
+// (its ids, then the vertices of its records as they come): a record whose three vertices
+// are in the table is one byte. Slots and input indices are differences from the previous
+// one. zstd compresses the result further. A block starts from a reset coder so that it
+// decodes on its own.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <stdexcept>
@@ -25,20 +28,51 @@ class FormatError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The state both sides keep in step: the recent-vertex cache and the running references.
+struct CoderState {
+  static constexpr std::size_t kCache = 64;
+  std::array<std::uint32_t, kCache> cache;
+  std::uint32_t last_vertex = 0, slot_ref = 0, input_ref = 0;
+  std::array<std::uint32_t, 4> table;  // the current event's first vertices
+  std::size_t table_size = 0;
+  CoderState() { cache.fill(kNone); }
+  int find(std::uint32_t v) const {
+    for (std::size_t i = 0; i < table_size; ++i)
+      if (table[i] == v) return static_cast<int>(i);
+    return -1;
+  }
+  void remember(std::uint32_t v) {
+    if (v != kNone && table_size < table.size() && find(v) < 0) table[table_size++] = v;
+  }
+};
+
+// The face writes of a flip, from its packed form (event_sink.hpp): the four faces before
+// and after, paired by slot. Returns the number of writes (2 when the data structure reuses
+// both slots, as Tds and Dcel do; up to 4).
+std::size_t flip_writes(const std::array<std::uint32_t, 4>& abcd, const std::array<FaceId, 4>& slots,
+                        std::uint32_t packed, SlotWrite out[4]);
+
+// Writes through a raw pointer: the caller makes room for max_bytes(e) first (a block
+// buffer grows once in a while instead of checking capacity at every byte).
 class Encoder {
  public:
-  void reset() { *this = Encoder{}; }
-  void event(const Event& e, std::vector<std::uint8_t>& out);
-  void record(const FaceRecord& r, std::vector<std::uint8_t>& out);
+  void reset() { state_ = CoderState{}; }
+  static std::size_t max_bytes(const Event& e);
+  static constexpr std::size_t kMaxRecordBytes = 1 + 3 * 10;
+  // Any event but a flip.
+  std::uint8_t* event(const Event& e, std::uint8_t* out);
+  // A flip, stored packed: its four vertices, the four slots and the rotation and
+  // constraint bits that determine the records (flip_writes).
+  std::uint8_t* flip(std::uint8_t code, const std::array<std::uint32_t, 4>& abcd,
+                     const std::array<FaceId, 4>& slots, std::uint32_t packed, std::uint8_t* out);
+  static constexpr std::size_t kMaxFlipBytes = 2 + 8 * 10 + 5;
+  std::uint8_t* record(const FaceRecord& r, std::uint8_t* out);  // without the table
 
  private:
-  void vertex(std::uint32_t v, std::vector<std::uint8_t>& out);
-  void table_vertex(std::uint32_t v, std::vector<std::uint8_t>& out);
-  void table_record(const FaceRecord& r, std::vector<std::uint8_t>& out);
-  std::uint32_t table_[253];
-  std::size_t table_size_ = 0;
-  void id(IdKind kind, std::uint32_t value, std::vector<std::uint8_t>& out);
-  std::uint32_t vertex_ref_ = 0, slot_ref_ = 0, input_ref_ = 0;
+  std::uint8_t* vertex(std::uint32_t v, std::uint8_t* out);
+  std::uint8_t* table_record(const FaceRecord& r, std::uint8_t* out);
+  std::uint8_t* id(IdKind kind, std::uint32_t value, std::uint8_t* out);
+  CoderState state_;
 };
 
 class Decoder {
@@ -48,22 +82,20 @@ class Decoder {
   std::size_t offset() const { return static_cast<std::size_t>(p_ - begin_); }
   // Appends the next event to `out`. Throws FormatError.
   void event(DecodedEvents& out);
-  FaceRecord record();
+  FaceRecord record();  // without the table
 
  private:
-  std::uint32_t table_vertex();
   FaceRecord table_record();
   std::uint64_t varint();
   std::uint32_t u32(const char* what);
   std::uint32_t vertex();
   std::uint32_t id(IdKind kind);
   double f64();
+  std::uint8_t byte(const char* what);
   const std::uint8_t* p_;
   const std::uint8_t* begin_;
   const std::uint8_t* end_;
-  std::uint32_t vertex_ref_ = 0, slot_ref_ = 0, input_ref_ = 0;
-  std::uint32_t table_[253];
-  std::size_t table_size_ = 0;
+  CoderState state_;
 };
 
 // Keyframes: the record of every slot, in slot order.

@@ -44,7 +44,13 @@ void serialize(const BlockHeader& h, std::uint8_t out[kBlockHeaderSize]) {
   std::memcpy(out + 24, &h.count, 8);
   std::memcpy(out + 32, &h.mesh_hash, 8);
   std::memcpy(out + 40, &h.steps, 4);
+  const auto check = static_cast<std::uint32_t>(checksum({out, 44}));
+  std::memcpy(out + 44, &check, 4);
   std::memcpy(out + 48, &h.checksum, 8);
+}
+
+bool header_intact(const std::uint8_t in[kBlockHeaderSize]) {
+  return get_le<std::uint32_t>(in + 44) == static_cast<std::uint32_t>(checksum({in, 44}));
 }
 
 BlockHeader parse_block_header(const std::uint8_t in[kBlockHeaderSize]) {

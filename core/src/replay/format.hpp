@@ -7,14 +7,19 @@
 //   block   := block_header payload
 //   block_header (56 bytes):
 //     u32 magic "MSBK"   u8 kind   u8[3] zero   u32 stored_size   u32 raw_size
-//     u64 first_event    u64 count   u64 mesh_hash   u32 steps   u32 zero   u64 checksum
+//     u64 first_event    u64 count   u64 mesh_hash   u32 steps   u32 header_check
+//     u64 checksum
+//   header_check: 32 bits of the checksum of the first 44 bytes, so that a damaged size is
+//   reported as damage, not as a file that ends early
 //   kind events:   payload = zstd(encoded events), count = number of events, first_event =
-//                  index of the first, mesh_hash = hash of the mesh after the last, steps =
-//                  number of step_begin events in the block
+//                  index of the first, mesh_hash = 0, steps = number of step_begin events
 //   kind keyframe: payload = zstd(face records of every slot), count = number of slots,
-//                  first_event = number of events applied, mesh_hash = hash of that mesh
+//                  first_event = number of events applied, mesh_hash = hash of that mesh;
+//                  read from the algorithm's data structure (not rebuilt from events), the
+//                  last one at the end of the run
 //   kind end:      payload = zstd(summary: u64 events, u64 steps, u64 per event type),
-//                  written when the run finished; a file without it is truncated
+//                  mesh_hash = the final keyframe's; written when the run finished; a
+//                  file without it is truncated
 //   checksum: of the header's first 48 bytes and the stored payload.
 #pragma once
 
@@ -54,6 +59,8 @@ std::uint64_t checksum(std::span<const std::uint8_t> bytes, std::uint64_t seed =
 
 void serialize(const BlockHeader& h, std::uint8_t out[kBlockHeaderSize]);
 BlockHeader parse_block_header(const std::uint8_t in[kBlockHeaderSize]);
+// Whether the header's own 32-bit check (over its first 44 bytes) holds.
+bool header_intact(const std::uint8_t in[kBlockHeaderSize]);
 // Checksum over the first 48 header bytes (checksum field excluded) and the payload.
 std::uint64_t block_checksum(const std::uint8_t header[kBlockHeaderSize],
                              std::span<const std::uint8_t> payload);
@@ -71,13 +78,6 @@ T get_le(const std::uint8_t* p) {
   return value;
 }
 
-inline void put_varint(std::vector<std::uint8_t>& out, std::uint64_t v) {
-  while (v >= 0x80) {
-    out.push_back(static_cast<std::uint8_t>(v | 0x80));
-    v >>= 7;
-  }
-  out.push_back(static_cast<std::uint8_t>(v));
-}
 inline std::uint64_t zigzag(std::int64_t v) {
   return (static_cast<std::uint64_t>(v) << 1) ^ static_cast<std::uint64_t>(v >> 63);
 }

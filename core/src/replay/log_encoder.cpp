@@ -18,7 +18,7 @@ double take_double(std::span<const std::uint32_t>::iterator& it) {
 
 LogEncoder::LogEncoder(const LogWriterOptions& options, BlockOut out)
     : options_(options), out_(std::move(out)), compressor_(options.zstd_level) {
-  block_.reserve(options_.block_bytes + 4096);
+  block_.resize(options_.block_bytes + 65536);
 }
 
 namespace {
@@ -48,7 +48,6 @@ void LogEncoder::pair_writes(std::span<const std::uint32_t> before, std::span<co
     if (match) match->after = record_at(after, j);
     else writes_.push_back({slot, FaceRecord{}, record_at(after, j)});
   }
-  for (const SlotWrite& w : writes_) hash_ += face_hash(w.after) - face_hash(w.before);
 }
 
 void LogEncoder::consume(std::span<const std::uint32_t> words) {
@@ -56,10 +55,11 @@ void LogEncoder::consume(std::span<const std::uint32_t> words) {
   while (it != words.end()) it = parse(it, words.end());
 }
 
-std::span<const std::uint32_t>::iterator LogEncoder::parse(
+[[gnu::flatten]] std::span<const std::uint32_t>::iterator LogEncoder::parse(
     std::span<const std::uint32_t>::iterator it, std::span<const std::uint32_t>::iterator end) {
   (void)end;  // the recorder writes whole events; batches never split one
   if (*it == kKeyframeWord) return keyframe(it + 1);
+  if ((*it & 0xFF) == kFlipWord) return flip(it);
   Event e;
   const std::uint32_t head = *it++;
   e.type = static_cast<EventType>(head & 0xFF);
@@ -96,15 +96,25 @@ std::span<const std::uint32_t>::iterator LogEncoder::parse(
     e.writes = writes_;
   }
 
-  encoder_.event(e, block_);
+  finish_event(e);
+  return it;
+}
+
+void LogEncoder::finish_event(const Event& e) {
+  const std::size_t room = codec::Encoder::max_bytes(e);
+  if (block_used_ + room > block_.size()) block_.resize(2 * (block_used_ + room));
+  block_used_ = static_cast<std::size_t>(encoder_.event(e, block_.data() + block_used_) - block_.data());
+  count_event(e.type);
+}
+
+void LogEncoder::count_event(EventType type) {
   ++stats_.events;
-  ++stats_.by_type[static_cast<std::size_t>(e.type)];
-  if (e.type == EventType::step_begin) {
+  ++stats_.by_type[static_cast<std::size_t>(type)];
+  if (type == EventType::step_begin) {
     ++stats_.steps;
     ++block_steps_;
   }
-  if (block_.size() >= options_.block_bytes) flush_events();
-  return it;
+  if (block_used_ >= options_.block_bytes) flush_events();
 }
 
 void LogEncoder::emit(format::BlockHeader header, std::span<const std::uint8_t> raw) {
@@ -126,13 +136,25 @@ void LogEncoder::flush_events() {
   h.kind = format::BlockKind::events;
   h.first_event = block_first_event_;
   h.count = count;
-  h.mesh_hash = hash_;
   h.steps = block_steps_;
-  emit(h, block_);
-  block_.clear();
+  emit(h, {block_.data(), block_used_});
+  block_used_ = 0;
   encoder_.reset();
   block_first_event_ = stats_.events;
   block_steps_ = 0;
+}
+
+// A packed flip (event_sink.hpp) is stored as it is packed: the bulk of every run costs a
+// few bytes copied.
+std::span<const std::uint32_t>::iterator LogEncoder::flip(std::span<const std::uint32_t>::iterator it) {
+  if (block_used_ + codec::Encoder::kMaxFlipBytes > block_.size()) block_.resize(2 * block_.size());
+  const auto code = static_cast<std::uint8_t>(it[0] >> 8);
+  block_used_ = static_cast<std::size_t>(
+      encoder_.flip(code, {it[1], it[2], it[3], it[4]}, {it[5], it[6], it[7], it[8]}, it[9],
+                    block_.data() + block_used_) -
+      block_.data());
+  count_event(EventType::flip);
+  return it + 10;
 }
 
 // A keyframe sits between blocks: the events block so far ends where it is taken.
@@ -152,6 +174,7 @@ std::span<const std::uint32_t>::iterator LogEncoder::keyframe(std::span<const st
   h.kind = format::BlockKind::keyframe;
   h.first_event = stats_.events;
   h.count = count;
+  hash_ = mesh_hash(slots);  // of the data structure's own faces, not of the events
   h.mesh_hash = hash_;
   const std::uint64_t before = stats_.bytes;
   emit(h, raw);

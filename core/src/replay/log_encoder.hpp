@@ -1,6 +1,6 @@
 // The log writer's encoding stage, free of threads and files: takes batches of raw events
-// (event_sink.hpp), pairs each change's replaced and new faces by slot, keeps the mesh hash
-// current, encodes, and emits finished blocks (header + stored payload).
+// (event_sink.hpp), pairs each change's replaced and new faces by slot, encodes, and emits
+// finished blocks (header + stored payload).
 #pragma once
 
 #include <cstdint>
@@ -27,6 +27,9 @@ class LogEncoder {
  private:
   std::span<const std::uint32_t>::iterator parse(std::span<const std::uint32_t>::iterator it,
                                                  std::span<const std::uint32_t>::iterator end);
+  std::span<const std::uint32_t>::iterator flip(std::span<const std::uint32_t>::iterator it);
+  void finish_event(const Event& e);
+  void count_event(EventType type);
   void pair_writes(std::span<const std::uint32_t> before, std::span<const std::uint32_t> after);
   void flush_events();
   std::span<const std::uint32_t>::iterator keyframe(std::span<const std::uint32_t>::iterator it);
@@ -36,11 +39,12 @@ class LogEncoder {
   BlockOut out_;
   format::Compressor compressor_;
   codec::Encoder encoder_;
-  std::vector<std::uint8_t> block_;       // encoded events of the current block
+  std::vector<std::uint8_t> block_;       // encoded events of the current block: block_used_
+  std::size_t block_used_ = 0;            // bytes, the rest is room to write into
   std::vector<std::uint8_t> stored_;      // compression output
   std::uint64_t block_first_event_ = 0;
   std::uint32_t block_steps_ = 0;
-  std::uint64_t hash_ = 0;  // of the mesh as the events so far leave it
+  std::uint64_t hash_ = 0;  // of the last keyframe: at the end, of the final mesh
 
   // Scratch for the event being parsed.
   std::vector<std::uint32_t> list_;

@@ -46,13 +46,14 @@ LogReader::LogReader(const std::string& path) : path_(path), cache_(std::make_un
 
 std::string LogReader::where(std::size_t block) const {
   const std::uint64_t offset = block < blocks_.size() ? blocks_[block].offset : 0;
-  return "block " + std::to_string(block) + " (byte " + std::to_string(offset) + ")";
+  return "events block " + std::to_string(block) + " (byte " + std::to_string(offset) + ")";
 }
 
 void LogReader::read_header() {
   const auto fail = [&](const std::string& m) { throw InputError(path_, 0, m); };
-  if (file_.size() < 16 || std::memcmp(file_.data(), format::kFileMagic, 8) != 0)
+  if (file_.size() < 8 || std::memcmp(file_.data(), format::kFileMagic, 8) != 0)
     fail("not a meshstep replay log (it does not begin with \"MSTEPLOG\")");
+  if (file_.size() < 16) fail("truncated in its header");
   format_version_ = format::get_le<std::uint32_t>(file_.data() + 8);
   if (format_version_ == 0 || format_version_ > format::kFormatVersion)
     fail("replay log format version " + std::to_string(format_version_) +
@@ -102,7 +103,8 @@ void LogReader::scan_blocks() {
   std::size_t block_number = 0;
   DecodedEvents events;
   while (at < file_.size()) {
-    const std::string here = "block " + std::to_string(block_number) + " (byte " + std::to_string(at) + ")";
+    // Blocks are numbered in file order, keyframes included; blocks() lists events blocks only.
+    const std::string here = "block " + std::to_string(block_number) + " of the file (byte " + std::to_string(at) + ")";
     const auto corrupt = [&](const std::string& m) {
       throw InputError(path_, 0, here + ": " + m + " (the file is corrupted)");
     };
@@ -112,6 +114,7 @@ void LogReader::scan_blocks() {
     }
     const std::uint8_t* head = file_.data() + at;
     if (format::get_le<std::uint32_t>(head) != format::kBlockMagic) corrupt("not a block header");
+    if (!format::header_intact(head)) corrupt("the block header is damaged");
     const format::BlockHeader h = format::parse_block_header(head);
     if (file_.size() - at - format::kBlockHeaderSize < h.stored_size) {
       incomplete_reason_ = "the file ends inside " + here;
@@ -151,6 +154,10 @@ void LogReader::scan_blocks() {
         case format::BlockKind::end:
           read_end_block(payload, h.stored_size, h.raw_size);
           final_hash_ = h.mesh_hash;
+          // A finished run ends with a keyframe of the algorithm's final mesh.
+          if (keyframes_.empty() || keyframes_.back().event != event_count_ ||
+              keyframes_.back().mesh_hash != final_hash_)
+            corrupt("the keyframe of the final mesh is missing or does not match the end block");
           complete_ = true;
           if (at + format::kBlockHeaderSize + h.stored_size != file_.size())
             corrupt("data after the end block");
@@ -173,6 +180,9 @@ void LogReader::index_events(std::size_t block, const DecodedEvents& events) {
     const std::uint64_t e = event_count_ + i;
     const EventHead& h = events.heads[i];
     ++counts_[static_cast<std::size_t>(h.type)];
+    const auto w = events.writes_of(i);
+    writes_.insert(writes_.end(), w.begin(), w.end());
+    write_end_.push_back(writes_.size());
     if (h.type == EventType::step_begin) step_starts_.push_back(e);
     if (h.type == EventType::vertex || h.type == EventType::duplicate) {
       const VertexId v = h.ids[0];

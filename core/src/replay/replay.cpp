@@ -2,6 +2,7 @@
 #include "meshstep/replay/replay.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <map>
 #include <numeric>
 
@@ -46,26 +47,14 @@ void Replay::write(const SlotWrite& w, bool forward, std::uint64_t event) {
 }
 
 void Replay::forward_to(std::uint64_t target) {
-  while (position_ < target) {
-    const std::size_t b = log_->block_of_event(position_);
-    const BlockInfo& info = log_->blocks()[b];
-    const DecodedEvents& events = log_->block_events(b);
-    const std::uint64_t stop = std::min(target, info.first_event + info.event_count);
-    for (; position_ < stop; ++position_)
-      for (const SlotWrite& w : events.writes_of(position_ - info.first_event)) write(w, true, position_);
-  }
+  for (; position_ < target; ++position_)
+    for (const SlotWrite& w : log_->writes(position_)) write(w, true, position_);
 }
 
 void Replay::backward_to(std::uint64_t target) {
-  while (position_ > target) {
-    const std::size_t b = log_->block_of_event(position_ - 1);
-    const BlockInfo& info = log_->blocks()[b];
-    const DecodedEvents& events = log_->block_events(b);
-    const std::uint64_t stop = std::max(target, info.first_event);
-    for (; position_ > stop; --position_) {
-      const auto writes = events.writes_of(position_ - 1 - info.first_event);
-      for (auto it = writes.rbegin(); it != writes.rend(); ++it) write(*it, false, position_ - 1);
-    }
+  for (; position_ > target; --position_) {
+    const auto writes = log_->writes(position_ - 1);
+    for (auto it = writes.rbegin(); it != writes.rend(); ++it) write(*it, false, position_ - 1);
   }
 }
 
@@ -166,6 +155,16 @@ std::optional<Event> Replay::last_event() const {
   return log_->event(position_ - 1);
 }
 
+std::uint64_t Replay::numeric_parameter(const std::string& key, std::uint64_t fallback) const {
+  const std::string text = log_->parameter(key);
+  if (text.empty()) return fallback;
+  std::uint64_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc{} || end != text.data() + text.size())
+    throw InputError(log_->path(), 0, "the header's parameter " + key + "=" + text + " is not a number");
+  return value;
+}
+
 TriMesh Replay::mesh() const {
   const std::vector<VertexInfo>& vertices = log_->vertices();
   // Input numbering, with duplicates resolved as the triangulator does: a group of vertices
@@ -185,8 +184,8 @@ TriMesh Replay::mesh() const {
   std::vector<std::uint32_t> index(vertices.size(), kNoIndex);
   TriMesh out;
   // The header's parameters say how many vertices the input had and how it numbers them.
-  const std::uint64_t input_count = std::stoull(log_->parameter("input_vertices", "0"));
-  out.first_index = std::stoi(log_->parameter("first_index", "0"));
+  const std::uint64_t input_count = numeric_parameter("input_vertices", 0);
+  out.first_index = static_cast<int>(numeric_parameter("first_index", 0));
   for (const VertexId v : present) {
     index[v] = static_cast<std::uint32_t>(out.points.size());
     out.points.push_back(vertices[v].point);

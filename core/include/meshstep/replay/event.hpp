@@ -116,7 +116,37 @@ struct EventSchema {
   bool changes_mesh() const { return has_writes; }
 };
 
-const EventSchema& schema(EventType type);
+namespace detail {
+using K = IdKind;
+inline constexpr K V = K::vertex;
+
+// name, ids, id kinds, id names, point, value, list, points, writes
+inline constexpr EventSchema kSchemas[kEventTypeCount] = {
+    {"step_begin", 2, {V, V}, {"subject", "subject2"}, false, false, false, false, false},
+    {"phase_begin", 0, {}, {}, false, false, false, false, false},
+    {"phase_end", 0, {}, {}, false, false, false, false, false},
+    {"locate", 3, {V, K::count, K::slot}, {"vertex", "visited", "face"}, false, false, false, false, false},
+    {"vertex", 2, {V, K::input}, {"vertex", "input"}, true, false, false, false, false},
+    {"duplicate", 3, {V, V, K::input}, {"vertex", "same_as", "input"}, true, false, false, false, false},
+    {"init", 3, {V, V, V}, {"a", "b", "c"}, false, false, false, false, true},
+    {"split_face", 1, {V}, {"vertex"}, false, false, false, false, true},
+    {"split_edge", 3, {V, V, V}, {"vertex", "a", "b"}, false, false, false, false, true},
+    {"flip", 4, {V, V, V, V}, {"a", "b", "c", "d"}, false, false, false, false, true},
+    {"cavity", 1, {V}, {"vertex"}, false, false, false, false, true},
+    {"constrain", 3, {V, V, K::marker}, {"a", "b", "marker"}, false, false, false, false, true},
+    {"remove_face", 0, {}, {}, false, false, false, false, true},
+    {"remove_vertex", 1, {V}, {"vertex"}, false, false, false, false, true},
+    {"point_selected", 3, {V, V, V}, {"a", "b", "c"}, true, false, true, true, false},
+    {"lepp_path", 3, {V, V, K::count}, {"a", "b", "terminal_triangles"}, false, false, true, false, false},
+    {"encroached", 3, {V, V, V}, {"a", "b", "vertex"}, true, false, false, false, false},
+    {"criterion_test", 3, {V, V, V}, {"a", "b", "c"}, false, true, false, false, false},
+};
+
+}  // namespace detail
+
+// The schema of a valid event type (decoders check the type first): inline, since the
+// codec asks for every event.
+inline const EventSchema& schema(EventType type) { return detail::kSchemas[static_cast<std::size_t>(type)]; }
 const char* name(EventType type);
 const char* name(StepKind kind);
 const char* name(Phase phase);

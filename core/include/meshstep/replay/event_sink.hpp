@@ -14,6 +14,12 @@
 //                                each), then the faces it made, the same way; a slot only
 //                                in the first list is dead afterwards, one only in the
 //                                second was dead before
+// except flips, the bulk of every run, which are packed (kFlipWord):
+//   kFlipWord | reason << 8, a, b, c, d (edge a-b, apex c on its left, d on its right),
+//   slots of the faces of a->b and b->a before, slots of the faces of c->d and d->c after,
+//   then one word: per face, in that order, 2 bits of rotation and 3 constraint bits.
+//   The faces are (a, b, c), (b, a, d), (c, d, b), (d, c, a), each listed by the data
+//   structure starting at vertex `rotation` of that order.
 // and a keyframe, when the recorder decides one is due (at a step boundary):
 //   kKeyframeWord, slot count, then v0, v1, v2, constraint bits per slot (kNone: dead)
 #pragma once
@@ -29,13 +35,14 @@
 namespace meshstep::replay {
 
 inline constexpr std::uint32_t kKeyframeWord = 0xFFu;
+inline constexpr std::uint32_t kFlipWord = 0xFEu;
 
 // When a keyframe (a copy of every face slot) is due: once at least
 // max(min_events, factor * live faces) events have passed since the last one. Seeking then
 // replays at most that many events on top of a keyframe, a cost proportional to the mesh
 // size, like restoring the keyframe itself.
 struct KeyframePolicy {
-  double factor = 1.0;
+  double factor = 2.0;
   std::uint64_t min_events = 65536;
 };
 
@@ -60,6 +67,11 @@ class EventSink {
     return words_.size() - 1;
   }
   void fill(std::size_t at, std::uint32_t w) { words_[at] = w; }
+  // Appends n words to be written through the returned pointer (valid until the next put).
+  std::uint32_t* extend(std::size_t n) {
+    words_.resize(words_.size() + n);
+    return words_.data() + words_.size() - n;
+  }
   std::size_t size() const { return words_.size(); }
 
   // Called after each complete event: hands the batch over when it is big enough.

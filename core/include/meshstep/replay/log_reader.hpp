@@ -73,6 +73,12 @@ class LogReader {
   const DecodedEvents& block_events(std::size_t block) const;
   // Event e; its spans stay valid until the next call of block_events or event.
   Event event(std::uint64_t e) const;
+  // The face writes of event e. All of them stay decoded in memory (about 36 bytes per
+  // write), so that moving through the log costs a memory copy per write.
+  std::span<const SlotWrite> writes(std::uint64_t e) const {
+    const std::uint64_t begin = e ? write_end_[e - 1] : 0;
+    return {writes_.data() + begin, write_end_[e] - begin};
+  }
   // The face records of keyframe j (decoded once, then cached).
   const std::vector<FaceRecord>& keyframe(std::size_t j) const;
 
@@ -104,6 +110,8 @@ class LogReader {
   std::vector<BlockInfo> blocks_;
   std::vector<KeyframeInfo> keyframes_;
   std::vector<VertexInfo> vertices_;
+  std::vector<SlotWrite> writes_;
+  std::vector<std::uint64_t> write_end_;  // per event: end of its writes in writes_
 
   struct Cache;
   std::unique_ptr<Cache> cache_;

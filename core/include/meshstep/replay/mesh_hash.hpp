@@ -5,6 +5,7 @@
 // with the replayed one.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <span>
@@ -27,20 +28,33 @@ inline FaceRecord canonical(const FaceRecord& r) {
   return c;
 }
 
-inline std::uint64_t face_hash(const FaceRecord& r) {
-  if (r.dead()) return 0;
-  const FaceRecord c = canonical(r);
-  std::uint64_t x = c.v[0] * 0x9E3779B97F4A7C15ull;
-  x ^= std::rotl(c.v[1] * 0xC2B2AE3D27D4EB4Full, 21);
-  x ^= std::rotl(c.v[2] * 0x165667B19E3779F9ull, 42);
-  x ^= (std::uint64_t{c.constrained} + 1) * 0xD6E8FEB86659FD93ull;
-  // splitmix64 finaliser: every input bit affects every output bit.
+namespace detail {
+inline std::uint64_t mix(std::uint64_t x) {  // splitmix64's finaliser
   x ^= x >> 30;
   x *= 0xBF58476D1CE4E5B9ull;
   x ^= x >> 27;
   x *= 0x94D049BB133111EBull;
   x ^= x >> 31;
   return x;
+}
+}  // namespace detail
+
+// A sum over the three vertices and the constrained edges, so that it does not depend on
+// which vertex a data structure lists first (and needs no branches to rotate), then mixed.
+// It does not see orientation: in a valid mesh three vertices have one orientation, and
+// replays compare records exactly besides.
+inline std::uint64_t face_hash(const FaceRecord& r) {
+  if (r.dead()) return 0;
+  constexpr std::uint64_t k1 = 0x9E3779B97F4A7C15ull, k2 = 0xC2B2AE3D27D4EB4Full;
+  const auto term = [&](std::uint64_t v) { return (v ^ k2) * k1; };
+  std::uint64_t s = term(r.v[0]) + term(r.v[1]) + term(r.v[2]);
+  if (r.constrained)
+    for (int i = 0; i < 3; ++i)
+      if (r.constrained >> i & 1) {
+        const std::uint64_t a = r.v[i], b = r.v[(i + 1) % 3];
+        s += term(std::min(a, b) << 32 | std::max(a, b)) * k2;
+      }
+  return detail::mix(s);
 }
 
 inline std::uint64_t mesh_hash(std::span<const FaceRecord> slots) {

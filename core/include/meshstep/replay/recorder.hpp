@@ -112,13 +112,26 @@ class Recorder {
     return h;
   }
 
+  // Flips are most of a run's events: packed (see event_sink.hpp) rather than as records.
   template <TriangleMesh M> HalfEdge flip(M& m, HalfEdge h, FlipReason reason) {
     const HalfEdge t = m.twin(h);
-    begin(EventType::flip, static_cast<std::uint8_t>(reason));
-    ids(m.origin(h), m.dest(h), m.apex(h), m.apex(t));
-    put_faces(m, {m.face(h), m.face(t)});
+    const VertexId a = m.origin(h), b = m.dest(h), c = m.apex(h), d = m.apex(t);
+    const FaceId f = m.face(h), g = m.face(t);
+    std::uint32_t packed = face_bits(m, f, a, b) | face_bits(m, g, b, a) << 5;
     const HalfEdge e = m.flip(h);
-    put_faces(m, {m.face(e), m.face(m.twin(e))});
+    const FaceId f2 = m.face(e), g2 = m.face(m.twin(e));
+    packed |= face_bits(m, f2, c, d) << 10 | face_bits(m, g2, d, c) << 15;
+    std::uint32_t* out = sink_->extend(10);
+    out[0] = kFlipWord | std::uint32_t{static_cast<std::uint8_t>(reason)} << 8;
+    out[1] = a;
+    out[2] = b;
+    out[3] = c;
+    out[4] = d;
+    out[5] = f;
+    out[6] = g;
+    out[7] = f2;
+    out[8] = g2;
+    out[9] = packed;
     end_event();
     return e;
   }
@@ -191,8 +204,11 @@ class Recorder {
     ids(s0, s1);
     end_event();
   }
+  // The end of the run: a last keyframe, read from the data structure, is what a replay
+  // of all the events must reproduce.
   template <TriangleMesh M> void run_end(const M& m) {
     if (observer_) observer_(face_records(m));
+    keyframe(m);
   }
   void phase_begin(Phase phase) { simple(EventType::phase_begin, static_cast<std::uint8_t>(phase)); }
   void phase_end(Phase phase) { simple(EventType::phase_end, static_cast<std::uint8_t>(phase)); }
@@ -231,15 +247,23 @@ class Recorder {
   template <TriangleMesh M> void keyframe(const M& m) {
     sink_->put(kKeyframeWord);
     sink_->put(static_cast<std::uint32_t>(m.face_capacity()));
-    for (FaceId f = 0; f < m.face_capacity(); ++f) {
+    std::uint32_t* out = sink_->extend(4 * m.face_capacity());  // millions of faces: no push_back
+    for (FaceId f = 0; f < m.face_capacity(); ++f, out += 4) {
       const FaceRecord r = face_record(m, f);
-      sink_->put(r.v[0]);
-      sink_->put(r.v[1]);
-      sink_->put(r.v[2]);
-      sink_->put(std::uint32_t{r.constrained});
+      out[0] = r.v[0];
+      out[1] = r.v[1];
+      out[2] = r.v[2];
+      out[3] = r.constrained;
     }
     sink_->end_event();
     since_keyframe_ = 0;
+  }
+  // Rotation (which of u, v, the third vertex the data structure lists first for face f,
+  // whose edge u->v is known) and constraint bits of f, packed in 5 bits.
+  template <TriangleMesh M> static std::uint32_t face_bits(const M& m, FaceId f, VertexId u, VertexId v) {
+    const FaceRecord r = face_record(m, f);
+    const std::uint32_t rotation = r.v[0] == u ? 0 : r.v[0] == v ? 1 : 2;
+    return rotation | std::uint32_t{r.constrained} << 2;
   }
   template <TriangleMesh M> void put_faces(const M& m, std::initializer_list<FaceId> faces) {
     sink_->put(static_cast<std::uint32_t>(faces.size()));
@@ -250,7 +274,7 @@ class Recorder {
     return v < input_of_.size() ? input_of_[v] : v;
   }
   void put_point(const Point& p) {
-    sink_->put(Point{std::ldexp(p.x, -exponent_), std::ldexp(p.y, -exponent_)});
+    sink_->put(exponent_ == 0 ? p : Point{std::ldexp(p.x, -exponent_), std::ldexp(p.y, -exponent_)});
   }
   template <TriangleMesh M> void put_face(const M& m, FaceId f) {
     const FaceRecord r = face_record(m, f);

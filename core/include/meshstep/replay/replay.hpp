@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "meshstep/mesh/tri_mesh.hpp"
@@ -61,6 +62,7 @@ class Replay {
   void forward_to(std::uint64_t target);
   void backward_to(std::uint64_t target);
   void write(const SlotWrite& w, bool forward, std::uint64_t event);
+  std::uint64_t numeric_parameter(const std::string& key, std::uint64_t fallback) const;
 
   const LogReader* log_;
   std::uint64_t position_ = 0;

@@ -1,6 +1,7 @@
 // log verify: replay a whole log forward, back to the start and forward again, checking
-// every face write against the mesh it applies to, the mesh hash after every block, every
-// keyframe slot by slot, and the final hash.
+// every face write against the mesh it applies to, and the replayed mesh against every
+// keyframe (a copy of the algorithm's own mesh) slot by slot and by hash, the final one
+// included.
 #pragma once
 
 #include <cstdint>
