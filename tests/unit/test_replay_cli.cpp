@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <regex>
+#include <cctype>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -34,11 +34,15 @@ std::vector<std::string> lines(const std::string& text) {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-// The first number matched by group 1 of `pattern` in `text`, or -1.
-long long number_in(const std::string& text, const std::string& pattern) {
-  std::smatch m;
-  if (!std::regex_search(text, m, std::regex(pattern))) return -1;
-  return std::stoll(m[1].str());
+// The number right after the first `before` in `text` (digits only), or -1.
+long long number_after(const std::string& text, const std::string& before) {
+  const std::size_t at = text.find(before);
+  if (at == std::string::npos) return -1;
+  std::size_t end = at + before.size();
+  long long value = -1;
+  for (; end < text.size() && std::isdigit(static_cast<unsigned char>(text[end])); ++end)
+    value = (value < 0 ? 0 : value * 10) + (text[end] - '0');
+  return value;
 }
 
 class ReplayCli : public ::testing::Test {
@@ -82,7 +86,7 @@ TEST_F(ReplayCli, InfoDescribesTheRun) {
                           "\"insertion\":\"flip\"", "\"algorithm\":\"triangulate\""})
     EXPECT_TRUE(contains(last, key)) << key << " in " << last;
   // There is always a keyframe: the final one, at the end of the run.
-  EXPECT_GE(number_in(last, R"("keyframes":(\d+))"), 1) << last;
+  EXPECT_GE(number_after(last, "\"keyframes\":"), 1) << last;
 }
 
 TEST_F(ReplayCli, DumpPrintsOneLinePerEvent) {
@@ -135,7 +139,7 @@ TEST_F(ReplayCli, VerifyAcceptsTheLogAndRejectsDamage) {
   // final one is not revisited going back.
   const replay::LogReader log(log_);
   const long long keyframes = static_cast<long long>(log.keyframes().size());
-  EXPECT_EQ(number_in(ok.out, R"(at (\d+) keyframe visits)"), 3 * keyframes - 1) << ok.out;
+  EXPECT_EQ(number_after(ok.out, "matched the algorithm's own at "), 3 * keyframes - 1) << ok.out;
 
   // One byte flipped in the middle of the file (inside a block's compressed payload).
   std::string bytes = slurp(log_);

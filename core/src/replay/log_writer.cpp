@@ -18,8 +18,8 @@
 namespace meshstep::replay {
 namespace {
 
-constexpr std::size_t kBatchWords = 1 << 16;  // 256 KiB of raw events per hand-over
-constexpr std::size_t kMaxPending = 4;        // batches queued before the algorithm waits
+constexpr std::size_t kBatchWords = 1 << 14;  // 64 KiB of raw events per hand-over
+constexpr std::size_t kMaxPending = 16;       // batches queued before the algorithm waits
 
 std::string hex16(std::uint64_t v) {
   char buf[17];

@@ -32,7 +32,7 @@ struct LogHeader {
 };
 
 struct LogWriterOptions {
-  int zstd_level = -1;
+  int zstd_level = -5;
   std::size_t block_bytes = 256 * 1024;  // encoded events per block, before compression
   KeyframePolicy keyframes;
 };
