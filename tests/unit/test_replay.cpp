@@ -830,10 +830,10 @@ TEST(ReplayFinalKeyframe, IsTheAlgorithmsFinalMeshSlotBySlot) {
 
 TEST(ReplayKeyframePolicy, Defaults) {
   const replay::KeyframePolicy policy;
-  EXPECT_EQ(policy.factor, 2.0);
+  EXPECT_EQ(policy.factor, 3.0);
   EXPECT_EQ(policy.min_events, 65536u);
   const replay::LogWriterOptions options;
-  EXPECT_EQ(options.keyframes.factor, 2.0);
+  EXPECT_EQ(options.keyframes.factor, 3.0);
   EXPECT_EQ(options.keyframes.min_events, 65536u);
 }
 

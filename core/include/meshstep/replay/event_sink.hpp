@@ -42,7 +42,7 @@ inline constexpr std::uint32_t kFlipWord = 0xFEu;
 // replays at most that many events on top of a keyframe, a cost proportional to the mesh
 // size, like restoring the keyframe itself.
 struct KeyframePolicy {
-  double factor = 2.0;
+  double factor = 3.0;
   std::uint64_t min_events = 65536;
 };
 
