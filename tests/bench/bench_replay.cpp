@@ -34,6 +34,16 @@ std::string log_path(std::size_t n) {
   return (std::filesystem::temp_directory_path() / ("meshstep_bench_" + std::to_string(n) + ".mslog")).string();
 }
 
+// Triangulates `points` with every step recorded into `sink`.
+void triangulate_into(meshstep::replay::EventSink& sink, const std::vector<meshstep::Point>& points) {
+  meshstep::TriangulateOptions options;
+  options.record = &sink;
+  meshstep::Pslg input;
+  input.points = points;
+  const meshstep::TriMesh mesh = meshstep::triangulate(std::move(input), options);
+  benchmark::DoNotOptimize(mesh.triangles.data());
+}
+
 meshstep::replay::LogStats record(const std::vector<meshstep::Point>& points, const std::string& path) {
   meshstep::replay::LogHeader header;
   header.algorithm = "triangulate";
@@ -41,12 +51,7 @@ meshstep::replay::LogStats record(const std::vector<meshstep::Point>& points, co
   header.data_structure = "tds";
   header.insertion = "flip";
   meshstep::replay::LogWriter writer(path, header);
-  meshstep::TriangulateOptions options;
-  options.record = &writer;
-  meshstep::Pslg input;
-  input.points = points;
-  const meshstep::TriMesh mesh = meshstep::triangulate(std::move(input), options);
-  benchmark::DoNotOptimize(mesh.triangles.data());
+  triangulate_into(writer, points);
   writer.finish();
   return writer.stats();
 }
@@ -54,7 +59,7 @@ meshstep::replay::LogStats record(const std::vector<meshstep::Point>& points, co
 // A sink that drops every batch: what recording costs the algorithm's own thread.
 class DiscardSink final : public meshstep::replay::EventSink {
  public:
-  DiscardSink() : EventSink(1 << 16) {}
+  DiscardSink() : EventSink(1 << 14) {}  // the log writer's batch size
   std::uint64_t words = 0;
 
  protected:
@@ -69,12 +74,7 @@ void bm_triangulate_discard(benchmark::State& state) {
   const std::vector<meshstep::Point> points = meshstep::bench::uniform_points(n);
   for (auto _ : state) {
     DiscardSink sink;
-    meshstep::TriangulateOptions options;
-    options.record = &sink;
-    meshstep::Pslg input;
-    input.points = points;
-    const meshstep::TriMesh mesh = meshstep::triangulate(std::move(input), options);
-    benchmark::DoNotOptimize(mesh.triangles.data());
+    triangulate_into(sink, points);
   }
 }
 
