@@ -203,9 +203,8 @@ void LogReader::index_events(std::size_t block, const DecodedEvents& events) {
 }
 
 void LogReader::read_end_block(const std::uint8_t* payload, std::size_t stored, std::size_t raw_size) {
-  format::Decompressor d;
   std::vector<std::uint8_t> raw;
-  d.decompress({payload, stored}, raw_size, raw);
+  cache_->decompressor.decompress({payload, stored}, raw_size, raw);
   if (raw.size() < 16 + 8 * kEventTypeCount) throw std::runtime_error("end block too short");
   const auto events = format::get_le<std::uint64_t>(raw.data());
   const auto steps = format::get_le<std::uint64_t>(raw.data() + 8);

@@ -151,8 +151,7 @@ class Recorder {
     const HalfEdge t = m.twin(h);
     begin(EventType::split_edge, static_cast<std::uint8_t>(reason));
     ids(v, m.origin(h), m.dest(h));
-    if (t == kNone) put_faces(m, {m.face(h)});
-    else put_faces(m, {m.face(h), m.face(t)});
+    put_edge_faces(m, h, t);
     const HalfEdge out = m.split_edge(h, v);
     put_star(m, out);
     end_event();
@@ -184,11 +183,9 @@ class Recorder {
     const HalfEdge t = m.twin(h);
     begin(EventType::constrain, on ? 1 : 0);
     ids(m.origin(h), m.dest(h), static_cast<std::uint32_t>(marker));
-    if (t == kNone) put_faces(m, {m.face(h)});
-    else put_faces(m, {m.face(h), m.face(t)});
+    put_edge_faces(m, h, t);
     m.set_constrained(h, on);
-    if (t == kNone) put_faces(m, {m.face(h)});
-    else put_faces(m, {m.face(h), m.face(t)});
+    put_edge_faces(m, h, t);
     end_event();
   }
 
@@ -264,6 +261,11 @@ class Recorder {
     const FaceRecord r = face_record(m, f);
     const std::uint32_t rotation = r.v[0] == u ? 0 : r.v[0] == v ? 1 : 2;
     return rotation | std::uint32_t{r.constrained} << 2;
+  }
+  // The faces on both sides of the edge of h (t: its twin, kNone on the boundary).
+  template <TriangleMesh M> void put_edge_faces(const M& m, HalfEdge h, HalfEdge t) {
+    if (t == kNone) put_faces(m, {m.face(h)});
+    else put_faces(m, {m.face(h), m.face(t)});
   }
   template <TriangleMesh M> void put_faces(const M& m, std::initializer_list<FaceId> faces) {
     sink_->put(static_cast<std::uint32_t>(faces.size()));
