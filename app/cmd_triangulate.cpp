@@ -73,16 +73,17 @@ int run_triangulate(const TriangulateArgs& args) {
       options.record = log.get();
     }
     mesh = triangulate(std::move(input), options, &report);
-    if (log) {
-      log->finish();
-      print_progress(verbosity, record_summary(*log));
-    }
     triangulate_ms = clock.lap_ms();
     for (const std::string& w : report.warnings) print_warning(verbosity, args.input + ": " + w);
     if (!args.no_output) {
       print_progress(verbosity, "writing " + prefix + ".node/.ele/.poly");
       io::write_mesh(prefix, mesh, {.edges = args.edges, .neighbors = args.neighbors});
       write_ms = clock.lap_ms();
+    }
+    // Last: the log writer's thread finishes its backlog while the mesh is written.
+    if (log) {
+      log->finish();
+      print_progress(verbosity, record_summary(*log));
     }
   } catch (const InputError& e) {
     print_error(with_input(args.input, e));

@@ -28,9 +28,12 @@
 #include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/triangle_io.hpp"
+#include "meshstep/mesh/dcel.hpp"
+#include "meshstep/mesh/tds.hpp"
 #include "meshstep/replay/log_reader.hpp"
 #include "meshstep/replay/log_writer.hpp"
 #include "meshstep/replay/mesh_hash.hpp"
+#include "meshstep/replay/recorder.hpp"
 #include "meshstep/replay/replay.hpp"
 #include "meshstep/replay/verify.hpp"
 #include "temp_dir.hpp"
@@ -826,6 +829,53 @@ TEST(ReplayFinalKeyframe, IsTheAlgorithmsFinalMeshSlotBySlot) {
     }
   }
 }
+
+// Splits of faces with constrained edges (none happen in a triangulation, where vertices go
+// in before segments; refinement splits such faces all the time): the packed split_face
+// must carry each new face's constraint bits and rotation, on both data structures, with a
+// keyframe taken after each split so that the stored copy is checked as well.
+template <class Mesh>
+void split_constrained_faces() {
+  TempDir dir("meshstep_replay_");
+  const std::string path = dir.file("split.mslog");
+  Mesh m;
+  m.set_vertex_count(6);
+  {
+    replay::LogWriterOptions options;
+    options.keyframes = {.factor = 0.0, .min_events = 1};  // a keyframe at every step boundary
+    replay::LogWriter writer(path, replay::LogHeader{}, options);
+    replay::Recorder rec(writer);
+    rec.step_begin(m, replay::StepKind::start);
+    const HalfEdge h = rec.init_sphere(m, 0, 1, 2);
+    rec.set_constrained(m, h, true, 1);
+    rec.set_constrained(m, m.next(h), true, 2);
+    rec.step_begin(m, replay::StepKind::insert_vertex, 3);
+    rec.split_face(m, m.face(h), 3);
+    // The ghost face across 0-1 (constrained on that edge) and the face holding 1-2 now.
+    rec.step_begin(m, replay::StepKind::insert_vertex, 4);
+    rec.split_face(m, m.face(m.twin(h)), 4);
+    rec.step_begin(m, replay::StepKind::insert_vertex, 5);
+    rec.split_face(m, m.face(m.next(h)), 5);
+    rec.run_end(m);
+    writer.finish();
+  }
+  const replay::LogReader log(path);
+  ASSERT_TRUE(log.complete());
+  EXPECT_EQ(log.counts_by_type()[static_cast<std::size_t>(replay::EventType::split_face)], 3u);
+  EXPECT_GE(log.keyframes().size(), 4u);
+  const replay::VerifyReport report = replay::verify(log);
+  EXPECT_TRUE(report.ok) << report.problem;
+  replay::Replay r(log);
+  r.seek_event(log.event_count());
+  const Slots expected = replay::face_records(m);
+  EXPECT_TRUE(same_slots(r.slots(), expected));
+  std::size_t constrained_records = 0;
+  for (const FaceRecord& f : expected) constrained_records += f.constrained != 0;
+  EXPECT_GE(constrained_records, 4u) << "the test no longer splits constrained faces";
+}
+
+TEST(ReplaySplitFace, CarriesConstraintBitsOnTds) { split_constrained_faces<Tds>(); }
+TEST(ReplaySplitFace, CarriesConstraintBitsOnDcel) { split_constrained_faces<Dcel>(); }
 
 TEST(ReplayKeyframePolicy, Defaults) {
   const replay::KeyframePolicy policy;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "format.hpp"
+#include "meshstep/replay/mesh_hash.hpp"
 
 namespace meshstep::replay::codec {
 namespace {
@@ -38,27 +39,53 @@ std::uint8_t* put_f64(std::uint8_t* out, double d) {
 
 }  // namespace
 
+namespace {
+
+// The record of a face whose vertices, counterclockwise, are `order`, listed by the data
+// structure from order[rotation], with the given constraint bits.
+FaceRecord rotated(const std::array<VertexId, 3>& order, std::uint32_t rotation, std::uint32_t flags) {
+  FaceRecord r;
+  r.v = {order[rotation % 3], order[(rotation + 1) % 3], order[(rotation + 2) % 3]};
+  r.constrained = static_cast<std::uint8_t>(flags & 7);
+  return r;
+}
+
+// Adds `after` as what `slot` holds after the change: on the write that emptied the slot if
+// there is one, else as a write to a slot that was dead.
+void pair_after(SlotWrite out[4], std::size_t& n, FaceId slot, const FaceRecord& after) {
+  for (std::size_t i = 0; i < n; ++i)
+    if (out[i].slot == slot && out[i].after.dead()) {
+      out[i].after = after;
+      return;
+    }
+  out[n++] = {slot, FaceRecord{}, after};
+}
+
+}  // namespace
+
 std::size_t flip_writes(const std::array<std::uint32_t, 4>& abcd, const std::array<FaceId, 4>& slots,
                         std::uint32_t packed, SlotWrite out[4]) {
   const auto [a, b, c, d] = abcd;
   const auto face = [&](int i, VertexId x, VertexId y, VertexId z) {
     const std::uint32_t bits = packed >> (5 * i);
-    const std::uint32_t k = bits & 3;
-    const VertexId order[3] = {x, y, z};
-    FaceRecord r;
-    r.v = {order[k % 3], order[(k + 1) % 3], order[(k + 2) % 3]};
-    r.constrained = static_cast<std::uint8_t>((bits >> 2) & 7);
-    return r;
+    return rotated({x, y, z}, bits & 3, bits >> 2);
   };
   out[0] = {slots[0], face(0, a, b, c), FaceRecord{}};
   out[1] = {slots[1], face(1, b, a, d), FaceRecord{}};
   std::size_t n = 2;
-  const FaceRecord after[2] = {face(2, c, d, b), face(3, d, c, a)};
-  for (int j = 0; j < 2; ++j) {
-    const FaceId slot = slots[2 + j];
-    if (out[0].slot == slot) out[0].after = after[j];
-    else if (out[1].slot == slot) out[1].after = after[j];
-    else out[n++] = {slot, FaceRecord{}, after[j]};
+  pair_after(out, n, slots[2], face(2, c, d, b));
+  pair_after(out, n, slots[3], face(3, d, c, a));
+  return n;
+}
+
+std::size_t split_face_writes(VertexId v, const std::array<std::uint32_t, 3>& abc, FaceId slot,
+                              const std::array<FaceId, 3>& spokes, std::uint32_t packed, SlotWrite out[4]) {
+  out[0] = {slot, rotated(abc, 0, packed), FaceRecord{}};
+  std::size_t n = 1;
+  for (int i = 0; i < 3; ++i) {
+    const std::uint32_t bits = packed >> (3 + 7 * i);
+    const std::uint32_t edge = bits & 3;
+    pair_after(out, n, spokes[i], rotated({abc[edge], abc[(edge + 1) % 3], v}, (bits >> 2) & 3, bits >> 4));
   }
   return n;
 }
@@ -172,12 +199,24 @@ std::uint8_t* Encoder::table_record(const FaceRecord& r, std::uint8_t* out) {
   return out;
 }
 
-std::uint8_t* Encoder::flip(std::uint8_t code, const std::array<std::uint32_t, 4>& abcd,
+[[gnu::flatten]] std::uint8_t* Encoder::flip(std::uint8_t code, const std::array<std::uint32_t, 4>& abcd,
                             const std::array<FaceId, 4>& slots, std::uint32_t packed, std::uint8_t* out) {
   *out++ = static_cast<std::uint8_t>(EventType::flip);
   *out++ = code;
   for (const std::uint32_t v : abcd) out = vertex(v, out);
   for (const FaceId f : slots) out = id(IdKind::slot, f, out);
+  return put_varint(out, packed);
+}
+
+[[gnu::flatten]] std::uint8_t* Encoder::split_face(VertexId v, const std::array<std::uint32_t, 3>& abc, FaceId slot,
+                                  const std::array<FaceId, 3>& spokes, std::uint32_t packed,
+                                  std::uint8_t* out) {
+  *out++ = static_cast<std::uint8_t>(EventType::split_face);
+  *out++ = 0;
+  out = vertex(v, out);
+  for (const std::uint32_t x : abc) out = vertex(x, out);
+  out = id(IdKind::slot, slot, out);
+  for (const FaceId f : spokes) out = id(IdKind::slot, f, out);
   return put_varint(out, packed);
 }
 
@@ -297,31 +336,8 @@ void Decoder::event(DecodedEvents& out) {
   h.type = static_cast<EventType>(type);
   h.code = *p_++;
   h.ids = {kNone, kNone, kNone, kNone};
-  if (h.type == EventType::flip) {
-    std::array<std::uint32_t, 4> abcd;
-    for (std::uint32_t& v : abcd) {
-      v = vertex();
-      if (v == kNone) throw FormatError("a flip names no vertex");
-    }
-    std::array<FaceId, 4> slots;
-    for (FaceId& f : slots) {
-      f = id(IdKind::slot);
-      if (f == kNone) throw FormatError("a flip names no face slot");
-    }
-    const std::uint64_t packed = varint();
-    if (packed >= (1u << 20)) throw FormatError("bad flip bits");
-    for (int i = 0; i < 4; ++i)
-      if (((packed >> (5 * i)) & 3u) == 3u) throw FormatError("bad flip rotation");
-    SlotWrite writes[4];
-    const std::size_t n = flip_writes(abcd, slots, static_cast<std::uint32_t>(packed), writes);
-    out.writes.insert(out.writes.end(), writes, writes + n);
-    std::copy(abcd.begin(), abcd.end(), h.ids.begin());
-    h.list_end = static_cast<std::uint32_t>(out.lists.size());
-    h.points_end = static_cast<std::uint32_t>(out.points.size());
-    h.writes_end = static_cast<std::uint32_t>(out.writes.size());
-    out.heads.push_back(h);
-    return;
-  }
+  if (h.type == EventType::flip) return flip(h, out);
+  if (h.type == EventType::split_face) return split_face(h, out);
   const EventSchema& s = schema(h.type);
   state_.table_size = 0;
   for (int i = 0; i < s.id_count; ++i) h.ids[i] = id(s.id_kinds[i]);
@@ -359,27 +375,135 @@ void Decoder::event(DecodedEvents& out) {
       out.writes.push_back(w);
     }
   }
+  push(h, out);
+}
+
+void Decoder::push(EventHead& h, DecodedEvents& out) {
   h.list_end = static_cast<std::uint32_t>(out.lists.size());
   h.points_end = static_cast<std::uint32_t>(out.points.size());
   h.writes_end = static_cast<std::uint32_t>(out.writes.size());
   out.heads.push_back(h);
 }
 
-void encode_keyframe(std::span<const FaceRecord> slots, std::vector<std::uint8_t>& out) {
-  Encoder e;
-  const std::size_t start = out.size();
-  out.resize(start + slots.size() * Encoder::kMaxRecordBytes);
-  std::uint8_t* p = out.data() + start;
-  for (const FaceRecord& r : slots) p = e.record(r, p);
-  out.resize(static_cast<std::size_t>(p - out.data()));
+void Decoder::flip(EventHead& h, DecodedEvents& out) {
+  std::array<std::uint32_t, 4> abcd;
+  for (std::uint32_t& v : abcd) {
+    v = vertex();
+    if (v == kNone) throw FormatError("a flip names no vertex");
+  }
+  std::array<FaceId, 4> slots;
+  for (FaceId& f : slots) {
+    f = id(IdKind::slot);
+    if (f == kNone) throw FormatError("a flip names no face slot");
+  }
+  const std::uint64_t packed = varint();
+  if (packed >= (1u << 20)) throw FormatError("bad flip bits");
+  for (int i = 0; i < 4; ++i)
+    if (((packed >> (5 * i)) & 3u) == 3u) throw FormatError("bad flip rotation");
+  SlotWrite writes[4];
+  const std::size_t n = flip_writes(abcd, slots, static_cast<std::uint32_t>(packed), writes);
+  out.writes.insert(out.writes.end(), writes, writes + n);
+  std::copy(abcd.begin(), abcd.end(), h.ids.begin());
+  push(h, out);
+}
+
+void Decoder::split_face(EventHead& h, DecodedEvents& out) {
+  const VertexId v = vertex();
+  std::array<std::uint32_t, 3> abc;
+  for (std::uint32_t& x : abc) x = vertex();
+  if (v == kNone || abc[0] == kNone || abc[1] == kNone || abc[2] == kNone)
+    throw FormatError("a split_face names no vertex");
+  const FaceId slot = id(IdKind::slot);
+  std::array<FaceId, 3> spokes;
+  for (FaceId& f : spokes) f = id(IdKind::slot);
+  if (slot == kNone || spokes[0] == kNone || spokes[1] == kNone || spokes[2] == kNone)
+    throw FormatError("a split_face names no face slot");
+  const std::uint64_t packed = varint();
+  if (packed >= (1u << 24)) throw FormatError("bad split_face bits");
+  for (int i = 0; i < 3; ++i) {
+    const std::uint64_t bits = packed >> (3 + 7 * i);
+    if ((bits & 3u) == 3u || ((bits >> 2) & 3u) == 3u) throw FormatError("bad split_face edge or rotation");
+  }
+  SlotWrite writes[4];
+  const std::size_t n = split_face_writes(v, abc, slot, spokes, static_cast<std::uint32_t>(packed), writes);
+  out.writes.insert(out.writes.end(), writes, writes + n);
+  h.ids[0] = v;
+  push(h, out);
+}
+
+namespace {
+
+std::uint32_t zigzag32(std::uint32_t d) {
+  return (d << 1) ^ static_cast<std::uint32_t>(static_cast<std::int32_t>(d) >> 31);
+}
+std::uint32_t unzigzag32(std::uint32_t z) { return (z >> 1) ^ (0u - (z & 1u)); }
+unsigned byte_length(std::uint32_t x) { return (static_cast<unsigned>(std::bit_width(x | 1u)) + 7) / 8; }
+
+constexpr std::uint8_t kDeadSlot = 0x80;
+constexpr std::uint8_t kSlotFlags = 0x40;
+
+}  // namespace
+
+std::uint8_t* KeyframeEncoder::slots(const std::uint32_t* words, std::size_t count, std::uint8_t* out,
+                                     std::uint64_t& hash) {
+  std::uint64_t sum = 0;
+  for (std::size_t i = 0; i < count; ++i, words += 4) {
+    FaceRecord r;
+    r.v = {words[0], words[1], words[2]};
+    r.constrained = static_cast<std::uint8_t>(words[3] & 7);
+    sum += face_hash(r);
+    if (r.dead()) {
+      *out++ = kDeadSlot;
+      continue;
+    }
+    const std::uint32_t d[3] = {zigzag32(r.v[0] - previous_), zigzag32(r.v[1] - r.v[0]), zigzag32(r.v[2] - r.v[0])};
+    previous_ = r.v[0];
+    const unsigned n0 = byte_length(d[0]), n1 = byte_length(d[1]), n2 = byte_length(d[2]);
+    *out++ = static_cast<std::uint8_t>((n0 - 1) | (n1 - 1) << 2 | (n2 - 1) << 4 | (r.constrained ? kSlotFlags : 0));
+    std::memcpy(out, &d[0], 4);  // little-endian hosts (format.hpp checks)
+    out += n0;
+    std::memcpy(out, &d[1], 4);
+    out += n1;
+    std::memcpy(out, &d[2], 4);
+    out += n2;
+    *out = r.constrained;
+    out += r.constrained != 0;
+  }
+  hash += sum;
+  return out;
 }
 
 std::vector<FaceRecord> decode_keyframe(std::span<const std::uint8_t> bytes, std::size_t count) {
   if (count > bytes.size()) throw FormatError("keyframe slot count larger than its data");
-  Decoder d(bytes.data(), bytes.data() + bytes.size());
   std::vector<FaceRecord> slots(count);
-  for (FaceRecord& r : slots) r = d.record();
-  if (!d.done()) throw FormatError("keyframe has data after its last slot");
+  const std::uint8_t* p = bytes.data();
+  const std::uint8_t* const end = p + bytes.size();
+  std::uint32_t previous = 0;
+  for (FaceRecord& r : slots) {
+    if (p == end) throw FormatError("keyframe data ends before its last slot");
+    const std::uint8_t control = *p++;
+    if (control == kDeadSlot) continue;
+    if (control & kDeadSlot) throw FormatError("bad keyframe slot header");
+    const unsigned n[3] = {(control & 3u) + 1, ((control >> 2) & 3u) + 1, ((control >> 4) & 3u) + 1};
+    if (static_cast<std::size_t>(end - p) < n[0] + n[1] + n[2] + ((control & kSlotFlags) ? 1 : 0))
+      throw FormatError("keyframe data ends in the middle of a slot");
+    std::uint32_t d[3];
+    for (int i = 0; i < 3; ++i) {
+      d[i] = 0;
+      for (unsigned b = 0; b < n[i]; ++b) d[i] |= std::uint32_t{*p++} << (8 * b);
+    }
+    r.v[0] = previous + unzigzag32(d[0]);
+    r.v[1] = r.v[0] + unzigzag32(d[1]);
+    r.v[2] = r.v[0] + unzigzag32(d[2]);
+    previous = r.v[0];
+    if (r.v[0] == kNone || r.v[1] == kNone || r.v[2] == kNone)
+      throw FormatError("a live keyframe slot names no vertex");
+    if (control & kSlotFlags) {
+      r.constrained = *p++;
+      if (r.constrained == 0 || r.constrained > 7) throw FormatError("bad keyframe constraint bits");
+    }
+  }
+  if (p != end) throw FormatError("keyframe has data after its last slot");
   return slots;
 }
 

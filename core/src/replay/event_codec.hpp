@@ -52,6 +52,11 @@ struct CoderState {
 std::size_t flip_writes(const std::array<std::uint32_t, 4>& abcd, const std::array<FaceId, 4>& slots,
                         std::uint32_t packed, SlotWrite out[4]);
 
+// The face writes of a split_face, from its packed form (event_sink.hpp): the face split
+// and the three around the new vertex, paired by slot. Returns the number of writes.
+std::size_t split_face_writes(VertexId v, const std::array<std::uint32_t, 3>& abc, FaceId slot,
+                              const std::array<FaceId, 3>& spokes, std::uint32_t packed, SlotWrite out[4]);
+
 // Writes through a raw pointer: the caller makes room for max_bytes(e) first (a block
 // buffer grows once in a while instead of checking capacity at every byte).
 class Encoder {
@@ -66,6 +71,11 @@ class Encoder {
   std::uint8_t* flip(std::uint8_t code, const std::array<std::uint32_t, 4>& abcd,
                      const std::array<FaceId, 4>& slots, std::uint32_t packed, std::uint8_t* out);
   static constexpr std::size_t kMaxFlipBytes = 2 + 8 * 10 + 5;
+  // A split_face, stored packed likewise: v, the face split, its slot, the three new slots
+  // and the bits of split_face_writes.
+  std::uint8_t* split_face(VertexId v, const std::array<std::uint32_t, 3>& abc, FaceId slot,
+                           const std::array<FaceId, 3>& spokes, std::uint32_t packed, std::uint8_t* out);
+  static constexpr std::size_t kMaxSplitFaceBytes = 2 + 8 * 10 + 5;
   std::uint8_t* record(const FaceRecord& r, std::uint8_t* out);  // without the table
 
  private:
@@ -86,6 +96,9 @@ class Decoder {
 
  private:
   FaceRecord table_record();
+  void flip(EventHead& h, DecodedEvents& out);
+  void split_face(EventHead& h, DecodedEvents& out);
+  void push(EventHead& h, DecodedEvents& out);
   std::uint64_t varint();
   std::uint32_t u32(const char* what);
   std::uint32_t vertex();
@@ -98,8 +111,23 @@ class Decoder {
   CoderState state_;
 };
 
-// Keyframes: the record of every slot, in slot order.
-void encode_keyframe(std::span<const FaceRecord> slots, std::vector<std::uint8_t>& out);
+// Keyframes: every slot, in slot order, in a layout of their own. A keyframe is a million
+// records written in one go at the end of a run, so its encoding is branch-free rather than
+// as small as the events': per slot a control byte (bit 7: dead, and nothing follows; bits
+// 0-5: the byte lengths, less one, of three numbers; bit 6: a byte of constraint bits ends
+// the slot), then, little-endian in those lengths, zigzag(v0 - v0 of the previous live
+// slot), zigzag(v1 - v0) and zigzag(v2 - v0), differences taken modulo 2^32.
+class KeyframeEncoder {
+ public:
+  // Bytes one slot may take, with the 3 that the last 4-byte store may write beyond it.
+  static constexpr std::size_t kMaxSlotBytes = 1 + 3 * 4 + 1 + 3;
+  // Encodes `count` slots from their raw words (v0, v1, v2, constraint bits each;
+  // event_sink.hpp) and adds their face hashes (mesh_hash.hpp) to `hash`.
+  std::uint8_t* slots(const std::uint32_t* words, std::size_t count, std::uint8_t* out, std::uint64_t& hash);
+
+ private:
+  std::uint32_t previous_ = 0;
+};
 std::vector<FaceRecord> decode_keyframe(std::span<const std::uint8_t> bytes, std::size_t count);
 
 }  // namespace meshstep::replay::codec

@@ -92,6 +92,10 @@ Decompressor::~Decompressor() { ZSTD_freeDCtx(static_cast<ZSTD_DCtx*>(context_))
 void Decompressor::decompress(std::span<const std::uint8_t> stored, std::size_t raw_size,
                               std::vector<std::uint8_t>& out) {
   out.resize(raw_size);
+  if (stored.size() == raw_size) {  // stored as is
+    std::memcpy(out.data(), stored.data(), raw_size);
+    return;
+  }
   const std::size_t n = ZSTD_decompressDCtx(static_cast<ZSTD_DCtx*>(context_), out.data(),
                                             raw_size, stored.data(), stored.size());
   if (ZSTD_isError(n))

@@ -13,7 +13,7 @@
 //   reported as damage, not as a file that ends early
 //   kind events:   payload = zstd(encoded events), count = number of events, first_event =
 //                  index of the first, mesh_hash = 0, steps = number of step_begin events
-//   kind keyframe: payload = zstd(face records of every slot), count = number of slots,
+//   kind keyframe: payload = face records of every slot, count = number of slots,
 //                  first_event = number of events applied, mesh_hash = hash of that mesh;
 //                  read from the algorithm's data structure (not rebuilt from events), the
 //                  last one at the end of the run
@@ -21,6 +21,9 @@
 //                  mesh_hash = the final keyframe's; written when the run finished; a
 //                  file without it is truncated
 //   checksum: of the header's first 48 bytes and the stored payload.
+//   A payload is a zstd frame, or the bytes themselves when stored_size == raw_size (a zstd
+//   frame is never exactly its content's size): keyframes, which do not compress, are
+//   stored so.
 #pragma once
 
 #include <bit>
@@ -36,7 +39,8 @@ static_assert(std::endian::native == std::endian::little,
               "the log format is little-endian and is read and written with memcpy");
 
 inline constexpr char kFileMagic[8] = {'M', 'S', 'T', 'E', 'P', 'L', 'O', 'G'};
-inline constexpr std::uint32_t kFormatVersion = 1;
+// 2: split_face events packed like flips; keyframes in a layout of their own.
+inline constexpr std::uint32_t kFormatVersion = 2;
 inline constexpr std::uint32_t kBlockMagic = 0x4B42534Du;  // "MSBK"
 inline constexpr std::size_t kBlockHeaderSize = 56;
 inline constexpr std::size_t kMaxBlockPayload = std::size_t{1} << 30;

@@ -28,12 +28,14 @@ class LogEncoder {
   std::span<const std::uint32_t>::iterator parse(std::span<const std::uint32_t>::iterator it,
                                                  std::span<const std::uint32_t>::iterator end);
   std::span<const std::uint32_t>::iterator flip(std::span<const std::uint32_t>::iterator it);
+  std::span<const std::uint32_t>::iterator split_face(std::span<const std::uint32_t>::iterator it);
   void finish_event(const Event& e);
   void count_event(EventType type);
   void pair_writes(std::span<const std::uint32_t> before, std::span<const std::uint32_t> after);
   void flush_events();
   std::span<const std::uint32_t>::iterator keyframe(std::span<const std::uint32_t>::iterator it);
-  void emit(format::BlockHeader header, std::span<const std::uint8_t> raw);
+  enum class Compression { zstd, none };
+  void emit(format::BlockHeader header, std::span<const std::uint8_t> raw, Compression compression = Compression::zstd);
 
   LogWriterOptions options_;
   BlockOut out_;
@@ -42,6 +44,7 @@ class LogEncoder {
   std::vector<std::uint8_t> block_;       // encoded events of the current block: block_used_
   std::size_t block_used_ = 0;            // bytes, the rest is room to write into
   std::vector<std::uint8_t> stored_;      // compression output
+  std::vector<std::uint8_t> keyframe_;    // an encoded keyframe
   std::uint64_t block_first_event_ = 0;
   std::uint32_t block_steps_ = 0;
   std::uint64_t hash_ = 0;  // of the last keyframe: at the end, of the final mesh

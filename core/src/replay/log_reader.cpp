@@ -55,10 +55,11 @@ void LogReader::read_header() {
     fail("not a meshstep replay log (it does not begin with \"MSTEPLOG\")");
   if (file_.size() < 16) fail("truncated in its header");
   format_version_ = format::get_le<std::uint32_t>(file_.data() + 8);
-  if (format_version_ == 0 || format_version_ > format::kFormatVersion)
+  if (format_version_ != format::kFormatVersion)
     fail("replay log format version " + std::to_string(format_version_) +
-         " is not one this meshstep reads (it reads version " +
-         std::to_string(format::kFormatVersion) + "; the log may come from a newer meshstep)");
+         " is not one this meshstep reads (it reads version " + std::to_string(format::kFormatVersion) +
+         (format_version_ > format::kFormatVersion ? "; the log may come from a newer meshstep)"
+                                                   : "; record the run again with this meshstep)"));
   const std::uint32_t length = format::get_le<std::uint32_t>(file_.data() + 12);
   if (file_.size() < 16 + std::size_t{length} + 8) fail("truncated in its header");
   const std::uint64_t stored = format::get_le<std::uint64_t>(file_.data() + 16 + length);

@@ -19,7 +19,9 @@ namespace meshstep::replay {
 namespace {
 
 constexpr std::size_t kBatchWords = 1 << 14;  // 64 KiB of raw events per hand-over
-constexpr std::size_t kMaxPending = 16;       // batches queued before the algorithm waits
+// Batches queued before the algorithm waits: 16 MiB, enough to ride out the time the writer
+// spends on a keyframe of a million faces (about 30 ms) without holding up the algorithm.
+constexpr std::size_t kMaxPending = 256;
 
 std::string hex16(std::uint64_t v) {
   char buf[17];

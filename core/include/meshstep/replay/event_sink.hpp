@@ -20,6 +20,11 @@
 //   then one word: per face, in that order, 2 bits of rotation and 3 constraint bits.
 //   The faces are (a, b, c), (b, a, d), (c, d, b), (d, c, a), each listed by the data
 //   structure starting at vertex `rotation` of that order.
+// and split_face, one per inserted vertex, likewise (kSplitFaceWord):
+//   kSplitFaceWord, v, a, b, c (the face split, as the data structure listed it), its slot,
+//   the slots of the three faces around v afterwards, then one word: 3 constraint bits of
+//   the old face, and per new face (x, y, v) 7 bits: which edge x->y of (a, b, c) it stands
+//   on (2 bits: a->b, b->c, c->a), its rotation (2 bits) and its constraint bits (3).
 // and a keyframe, when the recorder decides one is due (at a step boundary):
 //   kKeyframeWord, slot count, then v0, v1, v2, constraint bits per slot (kNone: dead)
 #pragma once
@@ -36,6 +41,7 @@ namespace meshstep::replay {
 
 inline constexpr std::uint32_t kKeyframeWord = 0xFFu;
 inline constexpr std::uint32_t kFlipWord = 0xFEu;
+inline constexpr std::uint32_t kSplitFaceWord = 0xFDu;
 
 // When a keyframe (a copy of every face slot) is due: once at least
 // max(min_events, factor * live faces) events have passed since the last one. Seeking then

@@ -9,6 +9,7 @@
 // Both expose the same members; the concept RecordingPolicy names them.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -23,8 +24,9 @@
 namespace meshstep::replay {
 
 // The record of face slot f as the data structure holds it (dead if f is not live).
+// Inlined always: the recorder reads a handful per change, in the algorithm's hot loop.
 template <TriangleMesh Mesh>
-FaceRecord face_record(const Mesh& m, FaceId f) {
+[[gnu::always_inline]] inline FaceRecord face_record(const Mesh& m, FaceId f) {
   FaceRecord r;
   if (!m.is_live(f)) return r;
   const HalfEdge h = m.half_edge(f), n = m.next(h), p = m.prev(h);
@@ -117,10 +119,10 @@ class Recorder {
     const HalfEdge t = m.twin(h);
     const VertexId a = m.origin(h), b = m.dest(h), c = m.apex(h), d = m.apex(t);
     const FaceId f = m.face(h), g = m.face(t);
-    std::uint32_t packed = face_bits(m, f, a, b) | face_bits(m, g, b, a) << 5;
-    const HalfEdge e = m.flip(h);
-    const FaceId f2 = m.face(e), g2 = m.face(m.twin(e));
-    packed |= face_bits(m, f2, c, d) << 10 | face_bits(m, g2, d, c) << 15;
+    std::uint32_t packed = face_bits(m, h) | face_bits(m, t) << 5;
+    const HalfEdge e = m.flip(h), et = m.twin(e);
+    const FaceId f2 = m.face(e), g2 = m.face(et);
+    packed |= face_bits(m, e) << 10 | face_bits(m, et) << 15;
     std::uint32_t* out = sink_->extend(10);
     out[0] = kFlipWord | std::uint32_t{static_cast<std::uint8_t>(reason)} << 8;
     out[1] = a;
@@ -136,12 +138,25 @@ class Recorder {
     return e;
   }
 
+  // One per inserted vertex: packed as well (see event_sink.hpp).
   template <TriangleMesh M> HalfEdge split_face(M& m, FaceId f, VertexId v) {
-    begin(EventType::split_face, 0);
-    ids(v);
-    put_faces(m, {f});
+    const FaceRecord old = face_record(m, f);
     const HalfEdge out = m.split_face(f, v);
-    put_star(m, out);
+    std::uint32_t* w = sink_->extend(10);
+    w[0] = kSplitFaceWord;
+    w[1] = v;
+    w[2] = old.v[0];
+    w[3] = old.v[1];
+    w[4] = old.v[2];
+    w[5] = f;
+    std::uint32_t packed = old.constrained;
+    HalfEdge h = out;  // the star of v: three faces, closed
+    for (int i = 0; i < 3; ++i, h = m.twin(m.prev(h))) {
+      const FaceId s = m.face(h);
+      w[6 + i] = s;
+      packed |= spoke_face_bits(face_record(m, s), v, old) << (3 + 7 * i);
+    }
+    w[9] = packed;
     end_event();
     return out;
   }
@@ -197,9 +212,7 @@ class Recorder {
     if (since_keyframe_ >= policy.min_events &&
         static_cast<double>(since_keyframe_) >= policy.factor * static_cast<double>(m.face_count()))
       keyframe(m);
-    begin(EventType::step_begin, static_cast<std::uint8_t>(kind));
-    ids(s0, s1);
-    end_event();
+    event(EventType::step_begin, static_cast<std::uint8_t>(kind), s0, s1);
   }
   // The end of the run: a last keyframe, read from the data structure, is what a replay
   // of all the events must reproduce.
@@ -207,33 +220,40 @@ class Recorder {
     if (observer_) observer_(face_records(m));
     keyframe(m);
   }
-  void phase_begin(Phase phase) { simple(EventType::phase_begin, static_cast<std::uint8_t>(phase)); }
-  void phase_end(Phase phase) { simple(EventType::phase_end, static_cast<std::uint8_t>(phase)); }
+  void phase_begin(Phase phase) { event(EventType::phase_begin, static_cast<std::uint8_t>(phase)); }
+  void phase_end(Phase phase) { event(EventType::phase_end, static_cast<std::uint8_t>(phase)); }
 
   void vertex(VertexId v, const Point& p) {
-    begin(EventType::vertex, 0);
-    ids(v, input_index(v));
-    put_point(p);
-    end_event();
+    event_with_point(EventType::vertex, p, v, input_index(v));
   }
   void duplicate(VertexId v, VertexId same_as, const Point& p) {
-    begin(EventType::duplicate, 0);
-    ids(v, same_as, input_index(v));
-    put_point(p);
-    end_event();
+    event_with_point(EventType::duplicate, p, v, same_as, input_index(v));
   }
   void locate(VertexId v, std::uint32_t visited, FaceId found, LocateResult result) {
-    begin(EventType::locate, static_cast<std::uint8_t>(result));
-    ids(v, visited, found);
-    end_event();
+    event(EventType::locate, static_cast<std::uint8_t>(result), v, visited, found);
   }
 
  private:
   void begin(EventType type, std::uint8_t code) {
     sink_->put(static_cast<std::uint32_t>(type) | (std::uint32_t{code} << 8));
   }
-  void simple(EventType type, std::uint8_t code) {
-    begin(type, code);
+  // A whole event of ids only (and a point): one append, the words written in place.
+  template <class... Ids> void event(EventType type, std::uint8_t code, Ids... values) {
+    std::uint32_t* w = sink_->extend(1 + sizeof...(Ids));
+    *w++ = static_cast<std::uint32_t>(type) | (std::uint32_t{code} << 8);
+    ((*w++ = static_cast<std::uint32_t>(values)), ...);
+    end_event();
+  }
+  template <class... Ids> void event_with_point(EventType type, const Point& p, Ids... values) {
+    std::uint32_t* w = sink_->extend(1 + sizeof...(Ids) + 4);
+    *w++ = static_cast<std::uint32_t>(type);
+    ((*w++ = static_cast<std::uint32_t>(values)), ...);
+    const Point q = exponent_ == 0 ? p : Point{std::ldexp(p.x, -exponent_), std::ldexp(p.y, -exponent_)};
+    for (const double d : {q.x, q.y}) {
+      const auto bits = std::bit_cast<std::uint64_t>(d);
+      *w++ = static_cast<std::uint32_t>(bits);
+      *w++ = static_cast<std::uint32_t>(bits >> 32);
+    }
     end_event();
   }
   void end_event() {
@@ -255,12 +275,22 @@ class Recorder {
     sink_->end_event();
     since_keyframe_ = 0;
   }
-  // Rotation (which of u, v, the third vertex the data structure lists first for face f,
-  // whose edge u->v is known) and constraint bits of f, packed in 5 bits.
-  template <TriangleMesh M> static std::uint32_t face_bits(const M& m, FaceId f, VertexId u, VertexId v) {
-    const FaceRecord r = face_record(m, f);
-    const std::uint32_t rotation = r.v[0] == u ? 0 : r.v[0] == v ? 1 : 2;
-    return rotation | std::uint32_t{r.constrained} << 2;
+  // For the face of h = u->v: its rotation (which of u, v and the third vertex the data
+  // structure lists first) and its constraint bits, packed in 5 bits. From half-edge
+  // handles alone, without reading the face's vertices: a flip asks for four of these.
+  template <TriangleMesh M> static std::uint32_t face_bits(const M& m, HalfEdge h) {
+    const HalfEdge first = m.half_edge(m.face(h)), second = m.next(first), third = m.prev(first);
+    const std::uint32_t rotation = first == h ? 0 : second == h ? 2 : 1;
+    return rotation | std::uint32_t{m.is_constrained(first)} << 2 | std::uint32_t{m.is_constrained(second)} << 3 |
+           std::uint32_t{m.is_constrained(third)} << 4;
+  }
+  // A face (x, y, v) made by splitting `old` at v, with x -> y an edge of `old`: which edge
+  // (2 bits), the rotation the data structure lists it in (2 bits), constraint bits (3).
+  static std::uint32_t spoke_face_bits(const FaceRecord& r, VertexId v, const FaceRecord& old) {
+    const std::uint32_t k = r.v[0] == v ? 0 : r.v[1] == v ? 1 : 2;
+    const VertexId x = r.v[(k + 1) % 3];
+    const std::uint32_t edge = old.v[0] == x ? 0 : old.v[1] == x ? 1 : 2;
+    return edge | (2 - k) << 2 | std::uint32_t{r.constrained} << 4;
   }
   // The faces on both sides of the edge of h (t: its twin, kNone on the boundary).
   template <TriangleMesh M> void put_edge_faces(const M& m, HalfEdge h, HalfEdge t) {
@@ -274,9 +304,6 @@ class Recorder {
   template <class... Ids> void ids(Ids... values) { (sink_->put(static_cast<std::uint32_t>(values)), ...); }
   std::uint32_t input_index(VertexId v) const {
     return v < input_of_.size() ? input_of_[v] : v;
-  }
-  void put_point(const Point& p) {
-    sink_->put(exponent_ == 0 ? p : Point{std::ldexp(p.x, -exponent_), std::ldexp(p.y, -exponent_)});
   }
   template <TriangleMesh M> void put_face(const M& m, FaceId f) {
     const FaceRecord r = face_record(m, f);
