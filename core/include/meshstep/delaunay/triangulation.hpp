@@ -70,6 +70,11 @@ class Triangulation {
   // itself, or the vertex v duplicates, recorded by merged_into()).
   HalfEdge insert(VertexId v, HalfEdge hint) {
     rec_.step_begin(mesh_, replay::StepKind::insert_vertex, v);
+    return insert_in_step(v, hint);
+  }
+
+  // The same within a step the caller opened (a refinement step, say).
+  HalfEdge insert_in_step(VertexId v, HalfEdge hint) {
     const Location loc = locate(points_[v], hint);
     if constexpr (Rec::enabled)
       rec_.locate(v, walk_length_, mesh_.face(loc.half_edge), static_cast<replay::LocateResult>(loc.kind));
@@ -86,10 +91,11 @@ class Triangulation {
   // Adds a new point and splits the edge of h with it, whatever the exact position of the
   // point (used for rounded intersection points that belong on a constrained edge), then
   // restores the Delaunay property around it. Returns a half-edge leaving the new vertex.
-  HalfEdge insert_on_edge(const Point& p, HalfEdge h) {
+  HalfEdge insert_on_edge(const Point& p, HalfEdge h,
+                          replay::SplitReason reason = replay::SplitReason::crossing) {
     const VertexId v = add_point(p);
     rec_.vertex(v, p);
-    legalize_around(rec_.split_edge(mesh_, h, v, replay::SplitReason::crossing));
+    legalize_around(rec_.split_edge(mesh_, h, v, reason));
     return mesh_.vertex_half_edge(v);  // the split's own handle may have been flipped away
   }
 

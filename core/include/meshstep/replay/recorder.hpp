@@ -74,6 +74,8 @@ struct NullRecorder {
   void vertex(VertexId, const Point&) {}
   void duplicate(VertexId, VertexId, const Point&) {}
   void locate(VertexId, std::uint32_t, FaceId, LocateResult) {}
+  void point_selected(std::uint8_t, VertexId, VertexId, VertexId, const Point&, std::span<const Point>) {}
+  void encroached(VertexId, VertexId, VertexId, const Point&) {}
 };
 
 class Recorder {
@@ -232,6 +234,22 @@ class Recorder {
   void locate(VertexId v, std::uint32_t visited, FaceId found, LocateResult result) {
     event(EventType::locate, static_cast<std::uint8_t>(result), v, visited, found);
   }
+  // Refinement: the point chosen for the bad triangle (a, b, c) by a strategy, with the
+  // other candidates it weighed (a circumcenter beside an off-center, say).
+  void point_selected(std::uint8_t strategy, VertexId a, VertexId b, VertexId c, const Point& chosen,
+                      std::span<const Point> alternatives) {
+    begin(EventType::point_selected, strategy);
+    ids(a, b, c);
+    put_point(chosen);
+    sink_->put(0u);  // no list
+    sink_->put(static_cast<std::uint32_t>(alternatives.size()));
+    for (const Point& p : alternatives) put_point(p);
+    end_event();
+  }
+  // Segment a-b is encroached by vertex v (kNone: by a point not inserted, p).
+  void encroached(VertexId a, VertexId b, VertexId v, const Point& p) {
+    event_with_point(EventType::encroached, p, a, b, v);
+  }
 
  private:
   void begin(EventType type, std::uint8_t code) {
@@ -300,6 +318,9 @@ class Recorder {
   template <TriangleMesh M> void put_faces(const M& m, std::initializer_list<FaceId> faces) {
     sink_->put(static_cast<std::uint32_t>(faces.size()));
     for (const FaceId f : faces) put_face(m, f);
+  }
+  void put_point(const Point& p) {
+    sink_->put(exponent_ == 0 ? p : Point{std::ldexp(p.x, -exponent_), std::ldexp(p.y, -exponent_)});
   }
   template <class... Ids> void ids(Ids... values) { (sink_->put(static_cast<std::uint32_t>(values)), ...); }
   std::uint32_t input_index(VertexId v) const {

@@ -1,0 +1,78 @@
+// Delaunay refinement: a PSLG in, a quality mesh out.
+//
+// A refinement algorithm is a combination of parts: the criteria a triangle must meet, the
+// point selected to fix a triangle that does not, and the insertion that adds the point.
+// refine() runs a named combination (refine/registry.hpp) or any free one.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "meshstep/delaunay/triangulate.hpp"
+#include "meshstep/mesh/tri_mesh.hpp"
+#include "meshstep/pslg/pslg.hpp"
+
+namespace meshstep {
+
+// Where a bad triangle asks for its new vertex.
+enum class Selection {
+  circumcenter,  // Ruppert / Chew
+  offcenter,     // Ungor: on the bisector of the shortest edge, no farther than needed
+};
+
+enum class RefineOrder { worst_first, fifo };
+
+// Which points encroach on a segment: those inside its diametral circle, or only those
+// inside its diametral lens (seeing the segment at more than 120 degrees): fewer splits.
+enum class Encroachment { circle, lens };
+
+// Stopping criteria: a triangle is bad when it fails any bound that is set (all-of).
+struct RefineCriteria {
+  double min_angle_deg = 0.0;    // 0: none
+  double max_angle_deg = 180.0;  // 180: none
+  double max_aspect = 0.0;       // longest edge / shortest altitude (quality::Shape::aspect); 0: none
+  double max_area = 0.0;         // 0: none
+  // Largest edge length wanted near a point (a size function); empty: none.
+  std::function<double(const Point&)> size;
+  std::size_t max_triangles = 0;  // stop once the mesh has this many; 0: none
+  std::size_t max_steiner = 0;    // stop after inserting this many vertices; 0: none
+};
+
+struct RefineOptions {
+  std::string algorithm = "circumcenter";  // for the record and the report
+  Selection selection = Selection::circumcenter;
+  RefineCriteria criteria;
+  RefineOrder order = RefineOrder::worst_first;
+  Encroachment encroachment = Encroachment::circle;
+  TriangulateOptions triangulate;  // data structure, insertion, convex hull, recording
+};
+
+struct RefineReport {
+  TriangulateReport triangulation;
+  std::size_t steiner_vertices = 0;      // inserted by refinement (segment splits included)
+  std::size_t segment_splits = 0;
+  std::size_t triangles_split = 0;       // bad triangles fixed by inserting their point
+  std::size_t rejected_points = 0;       // selected points that encroached (a segment split instead)
+  std::size_t skipped_small_angle = 0;   // bad triangles left alone by rule (quality::cannot_improve)
+  std::size_t unsplittable_segments = 0; // splits refused: the subsegment is a few ulps long
+  bool stopped_by_cap = false;           // max_triangles or max_steiner reached
+  // After the run: triangles that miss the bounds, and how many of them touch a small
+  // input angle (a vertex where two segments meet at less than 60 degrees, or a vertex on
+  // a segment that ends at one).
+  std::size_t below_min_angle = 0;
+  std::size_t bad_triangles = 0;
+  std::size_t bad_near_small_input_angle = 0;
+  bool bounds_met = false;
+  double triangulate_ms = 0.0, refine_ms = 0.0;
+};
+
+// Throws InputError like triangulate(), and for criteria out of range.
+TriMesh refine(Pslg input, const RefineOptions& options, RefineReport* report = nullptr);
+
+const char* to_string(Selection s);
+const char* to_string(RefineOrder o);
+
+}  // namespace meshstep

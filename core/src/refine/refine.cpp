@@ -1,0 +1,99 @@
+// The refine() front door: checks the criteria, triangulates, refines, converts.
+#include "meshstep/refine/refine.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "../delaunay/builder.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/mesh/dcel.hpp"
+#include "meshstep/mesh/tds.hpp"
+#include "refiner.hpp"
+
+namespace meshstep {
+namespace {
+
+void check(const RefineCriteria& c) {
+  const auto fail = [](const std::string& m) { throw InputError(m); };
+  if (!(c.min_angle_deg >= 0.0 && c.min_angle_deg < 60.0))
+    fail("minimum angle " + std::to_string(c.min_angle_deg) + " is out of range (0 to below 60 degrees)");
+  if (!(c.max_angle_deg > 60.0 && c.max_angle_deg <= 180.0))
+    fail("maximum angle " + std::to_string(c.max_angle_deg) + " is out of range (above 60 to 180 degrees)");
+  if (!(c.max_aspect == 0.0 || c.max_aspect >= 2.0 / std::sqrt(3.0)))
+    fail("maximum aspect ratio " + std::to_string(c.max_aspect) +
+         " is below the equilateral triangle's 1.1547 (longest edge over shortest altitude)");
+  if (!(c.max_area >= 0.0) || !std::isfinite(c.max_area))
+    fail("maximum area " + std::to_string(c.max_area) + " must be a positive number");
+}
+
+// The criteria in the triangulation's scaled coordinates.
+detail::ScaledCriteria scaled(const RefineOptions& o, int exponent) {
+  const RefineCriteria& c = o.criteria;
+  detail::ScaledCriteria s;
+  const double sin_min = std::sin(quality::radians(c.min_angle_deg));
+  s.sin2_min_angle = sin_min * sin_min;
+  s.cos_max_angle = c.max_angle_deg >= 180.0 ? -1.0 : std::cos(quality::radians(c.max_angle_deg));
+  s.max_aspect = c.max_aspect;
+  s.max_area = c.max_area > 0.0 ? std::ldexp(c.max_area, 2 * exponent) : 0.0;
+  if (c.size) {
+    s.size = [size = c.size, exponent](const Point& p) {
+      return std::ldexp(size({std::ldexp(p.x, -exponent), std::ldexp(p.y, -exponent)}), exponent);
+    };
+  }
+  // Off-centers aim at the radius-edge ratio of the angle bound (Ungor), or of 20.7 degrees
+  // when only size bounds are set.
+  const double angle = c.min_angle_deg > 0.0 ? c.min_angle_deg : 20.7;
+  s.offcenter_beta = 0.5 / std::sin(quality::radians(angle));
+  s.max_triangles = c.max_triangles;
+  s.max_steiner = c.max_steiner;
+  return s;
+}
+
+double ms_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+template <TriangleMesh Mesh, class Rec>
+TriMesh refine_with(Pslg& input, const RefineOptions& options, RefineReport& report, Rec rec) {
+  const auto start = std::chrono::steady_clock::now();
+  detail::Builder<Mesh, Rec> builder(input, options.triangulate, report.triangulation, std::move(rec));
+  builder.build();
+  report.triangulate_ms = ms_since(start);
+  const auto refine_start = std::chrono::steady_clock::now();
+  detail::Refiner<Mesh, Rec> refiner(builder.triangulation(), builder.boundary_segments(), builder.input_count(),
+                                     scaled(options, builder.exponent()), options);
+  refiner.run(report);
+  builder.set_boundary_segments(refiner.boundary());
+  report.steiner_vertices = builder.triangulation().points().size() - builder.input_count();
+  TriMesh out = builder.finish();
+  report.refine_ms = ms_since(refine_start);
+  return out;
+}
+
+template <TriangleMesh Mesh>
+TriMesh run(Pslg& input, const RefineOptions& options, RefineReport& report) {
+  if (!options.triangulate.record) return refine_with<Mesh>(input, options, report, replay::NullRecorder{});
+  replay::Recorder recorder(*options.triangulate.record);
+  if (options.triangulate.observe_steps) recorder.observe_steps(options.triangulate.observe_steps);
+  return refine_with<Mesh>(input, options, report, std::move(recorder));
+}
+
+}  // namespace
+
+TriMesh refine(Pslg input, const RefineOptions& options, RefineReport* report) {
+  check(options.criteria);
+  detail::validate(input);
+  RefineReport local;
+  RefineReport& r = report ? *report : local;
+  switch (options.triangulate.data_structure) {
+    case DataStructure::tds: return run<Tds>(input, options, r);
+    case DataStructure::dcel: return run<Dcel>(input, options, r);
+  }
+  throw std::logic_error("unknown data structure");
+}
+
+const char* to_string(Selection s) { return s == Selection::circumcenter ? "circumcenter" : "offcenter"; }
+const char* to_string(RefineOrder o) { return o == RefineOrder::worst_first ? "worst" : "fifo"; }
+
+}  // namespace meshstep

@@ -1,0 +1,531 @@
+// Delaunay refinement on a carved constrained Delaunay triangulation (Ruppert, Chew,
+// Shewchuk's Triangle, Ungor's off-centers), over any TriangleMesh and recording policy.
+//
+// Loop: split every encroached subsegment first; then take the worst bad triangle, select
+// its point, walk to it from the triangle. If the walk is blocked by a segment, or the point
+// lies inside the diametral circle (or lens) of a segment on the boundary of its cavity, the
+// point is rejected and those segments are split instead; otherwise it is inserted. New
+// faces are checked as they appear, so the queue holds every bad triangle at all times.
+//
+// Segment splits use concentric shells: a subsegment with exactly one input-vertex end is
+// split at a power-of-two distance from that end, so that splits on two segments meeting at a
+// small angle stay at matching distances and do not chase each other (Ruppert's
+// "modified segment splitting"). A bad triangle whose smallest angle sits between two
+// segments cannot be improved (the angle is the input's) and is skipped.
+//
+// Works in the triangulation's scaled coordinates (triangulate's exact power-of-two scaling):
+// angles do not change, and the caller scales area and size bounds.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <queue>
+#include <stdexcept>
+#include <unordered_map>
+#include <vector>
+
+#include "meshstep/delaunay/triangulation.hpp"
+#include "meshstep/refine/quality.hpp"
+#include "meshstep/refine/refine.hpp"
+
+namespace meshstep::detail {
+
+// The criteria in the form the loop tests them (scaled, squared, trigonometry done once).
+struct ScaledCriteria {
+  double sin2_min_angle = 0.0;   // bad when below
+  double cos_max_angle = -1.0;   // bad when below
+  double max_aspect = 0.0;       // 0: none
+  double max_area = 0.0;         // 0: none
+  std::function<double(const Point&)> size;  // in scaled units; empty: none
+  double offcenter_beta = 0.0;   // radius-edge bound for off-centers
+  std::size_t max_triangles = 0, max_steiner = 0;
+};
+
+template <TriangleMesh Mesh, class Rec>
+class Refiner {
+ public:
+  Refiner(Triangulation<Mesh, Rec>& tri, const std::vector<Segment>& boundary, std::size_t input_count,
+          const ScaledCriteria& criteria, const RefineOptions& options)
+      : tri_(tri), mesh_(tri.mesh()), input_count_(input_count), criteria_(criteria), options_(options) {
+    for (const Segment& s : boundary) subsegments_[key(s.a, s.b)] = {s.marker, s.a, s.b};
+    on_segment_.assign(tri_.points().size(), {kNone, kNone});
+    find_small_input_angles(boundary);
+  }
+
+  void run(RefineReport& report) {
+    Rec& rec = tri_.recorder();
+    rec.phase_begin(replay::Phase::refine);
+    // Every segment and boundary edge is a suspect once; every face is checked once.
+    for (FaceId f = 0; f < mesh_.face_capacity(); ++f) {
+      if (!mesh_.is_live(f)) continue;
+      const HalfEdge first = mesh_.half_edge(f);
+      for (const HalfEdge h : {first, mesh_.next(first), mesh_.prev(first)})
+        if (is_segment(h) && (mesh_.twin(h) == kNone || mesh_.origin(h) < mesh_.dest(h)))
+          segments_.push_back({mesh_.origin(h), mesh_.dest(h), h});
+      check_face(f);
+    }
+    while (!capped()) {
+      if (!segments_.empty()) {
+        const Suspect suspect = segments_.back();
+        segments_.pop_back();
+        const HalfEdge h = find_segment(suspect);
+        if (h != kNone && encroached_by_apex(h)) split_segment(h, kNone, nullptr);
+        continue;
+      }
+      Candidate c;
+      if (!pop_bad(c)) break;
+      if (!still_there(c)) continue;
+      fix(c);
+    }
+    rec.phase_end(replay::Phase::refine);
+    report.segment_splits = segment_splits_;
+    report.triangles_split = triangles_split_;
+    report.rejected_points = rejected_;
+    report.unsplittable_segments = unsplittable_;
+    report.stopped_by_cap = capped();
+    assess(report);
+  }
+
+  // The boundary after the run: every subsegment with its segment's marker.
+  std::vector<Segment> boundary() const {
+    std::vector<Segment> out;
+    out.reserve(subsegments_.size());
+    for (const auto& [k, info] : subsegments_)
+      out.push_back({static_cast<std::uint32_t>(k >> 32), static_cast<std::uint32_t>(k & 0xFFFFFFFFu), info.marker});
+    return out;
+  }
+
+ private:
+  // What a subsegment belongs to: its segment's marker and the segment's two ends.
+  struct SubsegmentInfo {
+    int marker;
+    VertexId a, b;
+  };
+
+  // A subsegment to check for encroachment: its ends, and a half-edge that held it.
+  struct Suspect {
+    VertexId a, b;
+    HalfEdge hint;
+  };
+
+  struct Candidate {
+    double priority;  // smaller: worse
+    std::uint64_t order;
+    FaceId face;
+    VertexId a, b, c;
+    bool operator>(const Candidate& o) const {
+      return priority != o.priority ? priority > o.priority : order > o.order;
+    }
+  };
+
+  static std::uint64_t key(VertexId a, VertexId b) {
+    return a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
+  }
+
+  bool is_segment(HalfEdge h) const { return mesh_.twin(h) == kNone || mesh_.is_constrained(h); }
+  const Point& point(VertexId v) const { return tri_.point(v); }
+
+  bool capped() const {
+    const std::size_t steiner = tri_.points().size() - input_count_;
+    return (criteria_.max_steiner && steiner >= criteria_.max_steiner) ||
+           (criteria_.max_triangles && mesh_.face_count() >= criteria_.max_triangles);
+  }
+
+  // The half-edge of subsegment a-b if it still is one: the hint if it still holds it, else
+  // a search around either end (a vertex where two parts of the domain touch has two fans,
+  // and a search from one end can miss the other fan).
+  HalfEdge find_segment(const Suspect& s) const {
+    const auto holds = [&](HalfEdge h) {
+      return h != kNone && mesh_.is_live(mesh_.face(h)) &&
+             ((mesh_.origin(h) == s.a && mesh_.dest(h) == s.b) || (mesh_.origin(h) == s.b && mesh_.dest(h) == s.a));
+    };
+    HalfEdge h = s.hint;
+    if (!holds(h)) h = tri_.find_edge(s.a, s.b);
+    if (!holds(h)) h = tri_.find_edge(s.b, s.a);
+    return holds(h) && is_segment(h) ? h : kNone;
+  }
+
+  // Does p encroach on the segment a-b?
+  bool encroaches(const Point& p, VertexId a, VertexId b) const {
+    const Point &pa = point(a), &pb = point(b);
+    const double ax = pa.x - p.x, ay = pa.y - p.y, bx = pb.x - p.x, by = pb.y - p.y;
+    const double dot = ax * bx + ay * by;
+    if (options_.encroachment == Encroachment::circle) return dot < 0.0;
+    // The lens: the angle a-p-b is over 120 degrees.
+    return dot < 0.0 && 4.0 * dot * dot > (ax * ax + ay * ay) * (bx * bx + by * by);
+  }
+
+  // In a constrained Delaunay triangulation a segment is encroached when a vertex of the
+  // triangle on either side of it is.
+  bool encroached_by_apex(HalfEdge h) const {
+    const VertexId a = mesh_.origin(h), b = mesh_.dest(h);
+    if (encroaches(point(mesh_.apex(h)), a, b)) return true;
+    const HalfEdge t = mesh_.twin(h);
+    return t != kNone && encroaches(point(mesh_.apex(t)), a, b);
+  }
+
+  // Is face f bad, and if so with what priority? Skips (and counts) the ones whose smallest
+  // angle lies between two segments when only the angle bounds fail.
+  void check_face(FaceId f) {
+    const HalfEdge h = mesh_.half_edge(f);
+    const VertexId a = mesh_.origin(h), b = mesh_.dest(h), c = mesh_.apex(h);
+    const quality::Shape s = quality::shape(point(a), point(b), point(c));
+    const double sin2 = s.sin2_min_angle();
+    const bool angle_bad = sin2 < criteria_.sin2_min_angle || s.cos_max_angle() < criteria_.cos_max_angle ||
+                           (criteria_.max_aspect > 0.0 && s.aspect() > criteria_.max_aspect);
+    bool size_bad = criteria_.max_area > 0.0 && s.area > criteria_.max_area;
+    if (!size_bad && criteria_.size) {
+      const Point centroid{(point(a).x + point(b).x + point(c).x) / 3.0, (point(a).y + point(b).y + point(c).y) / 3.0};
+      const double l = criteria_.size(centroid);
+      size_bad = l > 0.0 && s.longest2 > l * l;
+    }
+    if (!angle_bad && !size_bad) return;
+    if (!size_bad && cannot_improve(h, s)) return;
+    push_bad({sin2, order_++, f, a, b, c});
+  }
+
+  // Triangles refinement leaves alone when only their angles are bad: the smallest angle
+  // lies between two segments (it is the input's), or the shortest edge spans a small input
+  // angle (its ends lie on two segments meeting there at under 60 degrees: a vertex inside
+  // would only split both segments closer to the apex, and so on without end).
+  bool cannot_improve(HalfEdge h, const quality::Shape& s) const {
+    HalfEdge e = h;
+    for (int i = 0; i < s.shortest_edge; ++i) e = mesh_.next(e);
+    if (is_segment(mesh_.next(e)) && is_segment(mesh_.prev(e))) return true;
+    const auto& p = on_segment_[mesh_.origin(e)];
+    const auto& q = on_segment_[mesh_.dest(e)];
+    if (p.first == kNone || q.first == kNone || p == q) return false;
+    for (const VertexId apex : {p.first, p.second})
+      if ((apex == q.first || apex == q.second) && small_angle_[apex]) return true;
+    return false;
+  }
+
+  void push_bad(const Candidate& c) {
+    if (options_.order == RefineOrder::fifo) fifo_.push_back(c);
+    else heap_.push(c);
+  }
+  bool pop_bad(Candidate& c) {
+    if (options_.order == RefineOrder::fifo) {
+      if (fifo_.empty()) return false;
+      c = fifo_.front();
+      fifo_.pop_front();
+      return true;
+    }
+    if (heap_.empty()) return false;
+    c = heap_.top();
+    heap_.pop();
+    return true;
+  }
+  bool still_there(const Candidate& c) const {
+    if (!mesh_.is_live(c.face)) return false;
+    const HalfEdge h = mesh_.half_edge(c.face);
+    return mesh_.origin(h) == c.a && mesh_.dest(h) == c.b && mesh_.apex(h) == c.c;
+  }
+
+  // The point a bad triangle asks for, and the alternative weighed against it.
+  Point select(const Candidate& c, Point& alternative) const {
+    const Point &pa = point(c.a), &pb = point(c.b), &pc = point(c.c);
+    Point center = quality::circumcenter(pa, pb, pc);
+    const quality::Shape s = quality::shape(pa, pb, pc);
+    if (!std::isfinite(center.x) || !std::isfinite(center.y)) {
+      // So flat that the circumcenter overflows (the orientation is exact, the center is not):
+      // the midpoint of the longest edge, which a flat triangle of a constrained Delaunay
+      // triangulation has on a segment, stands in for it.
+      const Point* v[3] = {&pa, &pb, &pc};
+      const Point &p = *v[s.longest_edge], &q = *v[(s.longest_edge + 1) % 3];
+      center = {(p.x + q.x) / 2.0, (p.y + q.y) / 2.0};
+    }
+    alternative = center;
+    if (options_.selection == Selection::circumcenter || criteria_.offcenter_beta <= 0.0) return center;
+    // Off-center: on the bisector of the shortest edge pq, at the apex of the isosceles
+    // triangle over pq whose radius-edge ratio is exactly the bound, when that is closer
+    // to pq than the circumcenter (Ungor 2004).
+    const Point* v[3] = {&pa, &pb, &pc};
+    const Point &p = *v[s.shortest_edge], &q = *v[(s.shortest_edge + 1) % 3];
+    const Point m{(p.x + q.x) / 2.0, (p.y + q.y) / 2.0};
+    const double l = std::sqrt(s.shortest2), beta = criteria_.offcenter_beta;
+    const double h = l * (beta + std::sqrt(beta * beta - 0.25));
+    const double dx = center.x - m.x, dy = center.y - m.y, dm = std::sqrt(dx * dx + dy * dy);
+    if (!(dm > h)) return center;
+    return {m.x + dx * h / dm, m.y + dy * h / dm};
+  }
+
+  struct WalkResult {
+    enum class Kind { in_face, on_edge, on_vertex, blocked } kind;
+    HalfEdge h;  // in_face: an edge of the face; on_edge: the edge; on_vertex: leaving it; blocked: the segment
+  };
+
+  // Straight-line walk from the centroid of face f towards p, stopping at the first segment
+  // or boundary edge the line crosses. Where the line meets a vertex exactly it starts again
+  // from the centroid of the face it reached, so a walk never depends on a tie.
+  WalkResult walk(FaceId f, const Point& p) {
+    HalfEdge h = mesh_.half_edge(f);
+    Point from = centroid(h);
+    const std::size_t limit = 2 * mesh_.face_count() + 16;
+    for (std::size_t step = 0; step < limit; ++step) {
+      const HalfEdge e[3] = {h, mesh_.next(h), mesh_.prev(h)};
+      double o[3];
+      for (int i = 0; i < 3; ++i) o[i] = orient2d(point(mesh_.origin(e[i])), point(mesh_.dest(e[i])), p);
+      if (o[0] >= 0.0 && o[1] >= 0.0 && o[2] >= 0.0) {
+        for (int i = 0; i < 3; ++i)
+          if (p == point(mesh_.origin(e[i]))) return {WalkResult::Kind::on_vertex, e[i]};
+        for (int i = 0; i < 3; ++i)
+          if (o[i] == 0.0) return {WalkResult::Kind::on_edge, e[i]};
+        return {WalkResult::Kind::in_face, h};
+      }
+      // The exit: an edge p is beyond, with its origin right of the line and its end left.
+      int exit = -1;
+      bool through_vertex = false;
+      for (int i = 0; i < 3 && exit < 0; ++i) {
+        if (o[i] >= 0.0) continue;
+        const double ou = orient2d(from, p, point(mesh_.origin(e[i])));
+        const double ow = orient2d(from, p, point(mesh_.dest(e[i])));
+        if (ou <= 0.0 && ow >= 0.0) {
+          exit = i;
+          through_vertex = ou == 0.0 || ow == 0.0;
+        }
+      }
+      if (exit < 0) {  // numerically off the line (it passed a vertex): any edge p is beyond
+        for (int i = 0; i < 3 && exit < 0; ++i)
+          if (o[i] < 0.0) exit = i;
+        through_vertex = true;
+      }
+      if (is_segment(e[exit])) return {WalkResult::Kind::blocked, e[exit]};
+      h = mesh_.twin(e[exit]);
+      if (through_vertex) from = centroid(h);
+    }
+    throw std::logic_error("refinement: point location did not terminate");
+  }
+
+  Point centroid(HalfEdge h) const {
+    const Point &a = point(mesh_.origin(h)), &b = point(mesh_.dest(h)), &c = point(mesh_.apex(h));
+    return {(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
+  }
+
+  // The segments on the boundary of p's cavity (the faces whose circumcircle holds p,
+  // reached from the face at `from` without crossing segments) that p encroaches on.
+  void encroached_around(HalfEdge from, const Point& p, std::vector<HalfEdge>& out) {
+    out.clear();
+    cavity_.clear();
+    cavity_.push_back(mesh_.face(from));
+    for (std::size_t i = 0; i < cavity_.size(); ++i) {
+      const HalfEdge first = mesh_.half_edge(cavity_[i]);
+      for (const HalfEdge h : {first, mesh_.next(first), mesh_.prev(first)}) {
+        if (is_segment(h)) {
+          if (encroaches(p, mesh_.origin(h), mesh_.dest(h))) out.push_back(h);
+          continue;
+        }
+        const FaceId g = mesh_.face(mesh_.twin(h));
+        if (std::find(cavity_.begin(), cavity_.end(), g) == cavity_.end() && tri_.in_conflict(g, p))
+          cavity_.push_back(g);
+      }
+    }
+  }
+
+  void fix(const Candidate& c) {
+    Point alternative;
+    const Point p = select(c, alternative);
+    const WalkResult w = walk(c.face, p);
+    if (w.kind == WalkResult::Kind::on_vertex) return;  // a vertex there already: left as it is
+    if (w.kind == WalkResult::Kind::blocked || (w.kind == WalkResult::Kind::on_edge && is_segment(w.h))) {
+      ++rejected_;
+      if (split_segment(w.h, kNone, &p)) requeue(c);
+      return;
+    }
+    encroached_around(w.h, p, encroached_);
+    if (!encroached_.empty()) {
+      // The first only: a split moves the other handles, and the triangle comes back with the
+      // others still encroached if its point still asks for them.
+      ++rejected_;
+      if (split_segment(encroached_.front(), kNone, &p)) requeue(c);
+      return;
+    }
+    Rec& rec = tri_.recorder();
+    rec.step_begin(mesh_, replay::StepKind::refine, c.a, c.b);
+    if constexpr (Rec::enabled) {
+      const Point alternatives[1] = {alternative};
+      rec.point_selected(static_cast<std::uint8_t>(options_.selection), c.a, c.b, c.c, p,
+                         std::span<const Point>(alternatives, p == alternative ? 0 : 1));
+    }
+    const VertexId v = tri_.add_point(p);
+    on_segment_.push_back({kNone, kNone});
+    const HalfEdge out = tri_.insert_in_step(v, w.h);
+    ++triangles_split_;
+    after_insertion(out);
+  }
+
+  void requeue(const Candidate& c) {
+    if (still_there(c)) push_bad({c.priority, order_++, c.face, c.a, c.b, c.c});
+  }
+
+  // Splits the segment of h: at its midpoint, or on a concentric shell around its one
+  // input-vertex end. `by`: the vertex or rejected point that encroached, for the record.
+  // Returns false, changing nothing, when the rounded split point would not leave both
+  // halves with valid triangles (a subsegment a few ulps long): the floor of refinement.
+  bool split_segment(HalfEdge h, VertexId by_vertex, const Point* by_point) {
+    const VertexId a = mesh_.origin(h), b = mesh_.dest(h);
+    const Point p = split_point(a, b);
+    if (!splits_cleanly(h, p)) {
+      ++unsplittable_;
+      return false;
+    }
+    Rec& rec = tri_.recorder();
+    rec.step_begin(mesh_, replay::StepKind::split_segment, a, b);
+    if constexpr (Rec::enabled) {
+      const Point encroacher = by_point ? *by_point : (by_vertex != kNone ? point(by_vertex) : point(mesh_.apex(h)));
+      rec.encroached(a, b, by_point ? kNone : (by_vertex != kNone ? by_vertex : mesh_.apex(h)), encroacher);
+    }
+    const SubsegmentInfo info = take_subsegment(a, b);
+    HalfEdge out = tri_.insert_on_edge(p, h, replay::SplitReason::encroached);
+    const VertexId v = mesh_.origin(out);
+    // p is rounded, a hair off the segment's line: the edges from it are not Delaunay by
+    // construction as they would be for a point exactly on the line, so check them too.
+    stack_.clear();
+    for_each_out(out, [&](HalfEdge e) {
+      stack_.push_back(e);
+      stack_.push_back(mesh_.next(e));
+    });
+    tri_.make_delaunay(stack_);
+    out = mesh_.vertex_half_edge(v);
+    on_segment_.push_back({info.a, info.b});
+    subsegments_[key(a, v)] = info;
+    subsegments_[key(v, b)] = info;
+    ++segment_splits_;
+    segments_.push_back({a, v, kNone});
+    segments_.push_back({v, b, kNone});
+    after_insertion(out);
+    return true;
+  }
+
+  // Would splitting the edge of h at p leave every triangle counterclockwise (exactly)?
+  bool splits_cleanly(HalfEdge h, const Point& p) const {
+    const Point &a = point(mesh_.origin(h)), &b = point(mesh_.dest(h));
+    if (p == a || p == b) return false;
+    const Point& c = point(mesh_.apex(h));
+    if (orient2d(a, p, c) <= 0.0 || orient2d(p, b, c) <= 0.0) return false;
+    const HalfEdge t = mesh_.twin(h);
+    if (t == kNone) return true;
+    const Point& d = point(mesh_.apex(t));
+    return orient2d(b, p, d) > 0.0 && orient2d(p, a, d) > 0.0;
+  }
+
+  SubsegmentInfo take_subsegment(VertexId a, VertexId b) {
+    const auto it = subsegments_.find(key(a, b));
+    if (it == subsegments_.end()) return {1, a, b};
+    const SubsegmentInfo info = it->second;
+    subsegments_.erase(it);
+    return info;
+  }
+
+  Point split_point(VertexId a, VertexId b) const {
+    const Point &pa = point(a), &pb = point(b);
+    const bool a_input = a < input_count_, b_input = b < input_count_;
+    if (a_input == b_input) return {(pa.x + pb.x) / 2.0, (pa.y + pb.y) / 2.0};
+    // A shell around the input end: the power of two nearest half the length.
+    const Point &from = a_input ? pa : pb, &to = a_input ? pb : pa;
+    const double length = std::sqrt(quality::squared_distance(pa, pb));
+    const double d = std::exp2(std::round(std::log2(length / 2.0)));
+    const double t = d / length;
+    return {from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t};
+  }
+
+  // After a vertex went in: check the faces around it, and the segments across from it.
+  void after_insertion(HalfEdge out) {
+    const VertexId v = mesh_.origin(out);
+    for_each_out(out, [&](HalfEdge h) {
+      check_face(mesh_.face(h));
+      const HalfEdge far = mesh_.next(h);
+      if (is_segment(far) && encroaches(point(v), mesh_.origin(far), mesh_.dest(far)))
+        segments_.push_back({mesh_.origin(far), mesh_.dest(far), far});
+    });
+  }
+
+  template <class F>
+  void for_each_out(HalfEdge out, F&& f) const {
+    HalfEdge h = out;
+    do {
+      f(h);
+      const HalfEdge t = mesh_.twin(mesh_.prev(h));
+      if (t == kNone) {
+        for (HalfEdge g = mesh_.twin(out); g != kNone; g = mesh_.twin(g)) {
+          g = mesh_.next(g);
+          f(g);
+        }
+        return;
+      }
+      h = t;
+    } while (h != out);
+  }
+
+  // Input vertices where two segments meet at less than 60 degrees: refinement cannot make
+  // the triangles there meet the bounds, and the report says so.
+  void find_small_input_angles(const std::vector<Segment>& boundary) {
+    std::unordered_map<VertexId, std::vector<VertexId>> around;
+    for (const Segment& s : boundary) {
+      around[s.a].push_back(s.b);
+      around[s.b].push_back(s.a);
+    }
+    small_angle_.assign(tri_.points().size(), 0);
+    for (const auto& [v, ends] : around)
+      for (std::size_t i = 0; i < ends.size(); ++i)
+        for (std::size_t j = i + 1; j < ends.size(); ++j) {
+          const Point &o = point(v), &p = point(ends[i]), &q = point(ends[j]);
+          const double ux = p.x - o.x, uy = p.y - o.y, wx = q.x - o.x, wy = q.y - o.y;
+          const double cos_angle = (ux * wx + uy * wy) / std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy));
+          if (cos_angle > 0.5) small_angle_[v] = 1;
+        }
+  }
+
+  // Near a small input angle: at such a vertex, or a Steiner vertex on a segment, since the
+  // shells around it are where the bound gives way.
+  bool near_small_angle(VertexId v) const {
+    if (v < small_angle_.size() && small_angle_[v]) return true;
+    const auto& seg = on_segment_[v];
+    return seg.first != kNone && (small_angle_[seg.first] || small_angle_[seg.second]);
+  }
+
+  void assess(RefineReport& report) {
+    std::size_t below = 0, bad = 0, explained = 0, skipped = 0;
+    for (FaceId f = 0; f < mesh_.face_capacity(); ++f) {
+      if (!mesh_.is_live(f)) continue;
+      const HalfEdge h = mesh_.half_edge(f);
+      const VertexId a = mesh_.origin(h), b = mesh_.dest(h), c = mesh_.apex(h);
+      const quality::Shape s = quality::shape(point(a), point(b), point(c));
+      const bool below_angle = s.sin2_min_angle() < criteria_.sin2_min_angle;
+      const bool fails = below_angle || s.cos_max_angle() < criteria_.cos_max_angle ||
+                         (criteria_.max_aspect > 0.0 && s.aspect() > criteria_.max_aspect) ||
+                         (criteria_.max_area > 0.0 && s.area > criteria_.max_area);
+      below += below_angle;
+      if (!fails) continue;
+      ++bad;
+      if (near_small_angle(a) || near_small_angle(b) || near_small_angle(c)) ++explained;
+      skipped += cannot_improve(h, s);
+    }
+    report.skipped_small_angle = skipped;
+    report.below_min_angle = below;
+    report.bad_triangles = bad;
+    report.bad_near_small_input_angle = explained;
+    report.bounds_met = bad == 0;
+  }
+
+  Triangulation<Mesh, Rec>& tri_;
+  Mesh& mesh_;
+  std::size_t input_count_;
+  ScaledCriteria criteria_;
+  const RefineOptions& options_;
+  std::unordered_map<std::uint64_t, SubsegmentInfo> subsegments_;  // and boundary edges
+  // By vertex: the ends of the segment a split put it on ({kNone, kNone}: not on one).
+  std::vector<std::pair<VertexId, VertexId>> on_segment_;
+  std::vector<std::uint8_t> small_angle_;           // by vertex: two segments meet at < 60 degrees
+  std::vector<Suspect> segments_;  // subsegments to check for encroachment
+  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<>> heap_;
+  std::deque<Candidate> fifo_;
+  std::uint64_t order_ = 0;
+  std::vector<FaceId> cavity_;
+  std::vector<HalfEdge> stack_;
+  std::vector<HalfEdge> encroached_;
+  std::size_t segment_splits_ = 0, triangles_split_ = 0, rejected_ = 0, unsplittable_ = 0;
+};
+
+}  // namespace meshstep::detail
