@@ -17,6 +17,8 @@
 // angles do not change, and the caller scales area and size bounds.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <deque>
@@ -56,15 +58,20 @@ class Refiner {
   void run(RefineReport& report) {
     Rec& rec = tri_.recorder();
     rec.phase_begin(replay::Phase::refine);
-    // Every segment and boundary edge is a suspect once; every face is checked once.
+    // Every segment and boundary edge is a suspect once; every face is checked once. In an
+    // order of the mesh's own (vertex ids), not of the data structure's slots: every data
+    // structure and insertion then refines alike.
+    std::vector<FaceId> faces;
     for (FaceId f = 0; f < mesh_.face_capacity(); ++f) {
       if (!mesh_.is_live(f)) continue;
+      faces.push_back(f);
       const HalfEdge first = mesh_.half_edge(f);
       for (const HalfEdge h : {first, mesh_.next(first), mesh_.prev(first)})
         if (is_segment(h) && (mesh_.twin(h) == kNone || mesh_.origin(h) < mesh_.dest(h)))
           segments_.push_back({mesh_.origin(h), mesh_.dest(h), h});
-      check_face(f);
     }
+    sort_suspects(segments_.begin(), segments_.end());
+    check_faces(faces);
     while (!capped()) {
       if (!segments_.empty()) {
         const Suspect suspect = segments_.back();
@@ -111,13 +118,42 @@ class Refiner {
 
   struct Candidate {
     double priority;  // smaller: worse
-    std::uint64_t order;
+    std::array<VertexId, 3> key;  // the vertices, sorted: ties go by vertex ids
     FaceId face;
     VertexId a, b, c;
     bool operator>(const Candidate& o) const {
-      return priority != o.priority ? priority > o.priority : order > o.order;
+      return priority != o.priority ? priority > o.priority : key > o.key;
     }
   };
+
+  // The half-edge of f leaving its smallest vertex id: shapes are measured from it, so that
+  // ties between equal edges (isosceles triangles are everywhere after midpoint splits) fall
+  // the same way whichever vertex the data structure lists first.
+  HalfEdge first_edge(FaceId f) const {
+    HalfEdge h = mesh_.half_edge(f);
+    const HalfEdge n = mesh_.next(h), p = mesh_.prev(h);
+    if (mesh_.origin(n) < mesh_.origin(h)) h = n;
+    if (mesh_.origin(p) < mesh_.origin(h)) h = p;
+    return h;
+  }
+
+  std::array<VertexId, 3> face_key(FaceId f) const {
+    const HalfEdge h = mesh_.half_edge(f);
+    std::array<VertexId, 3> k{mesh_.origin(h), mesh_.dest(h), mesh_.apex(h)};
+    std::sort(k.begin(), k.end());
+    return k;
+  }
+
+  // Checks faces in the order of their vertex ids.
+  void check_faces(std::vector<FaceId>& faces) {
+    std::sort(faces.begin(), faces.end(), [&](FaceId f, FaceId g) { return face_key(f) < face_key(g); });
+    for (const FaceId f : faces) check_face(f);
+  }
+
+  template <class It>
+  static void sort_suspects(It begin, It end) {
+    std::sort(begin, end, [](const Suspect& s, const Suspect& t) { return key(s.a, s.b) < key(t.a, t.b); });
+  }
 
   static std::uint64_t key(VertexId a, VertexId b) {
     return a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
@@ -168,7 +204,7 @@ class Refiner {
   // Is face f bad, and if so with what priority? Skips (and counts) the ones whose smallest
   // angle lies between two segments when only the angle bounds fail.
   void check_face(FaceId f) {
-    const HalfEdge h = mesh_.half_edge(f);
+    const HalfEdge h = first_edge(f);
     const VertexId a = mesh_.origin(h), b = mesh_.dest(h), c = mesh_.apex(h);
     const quality::Shape s = quality::shape(point(a), point(b), point(c));
     const double sin2 = s.sin2_min_angle();
@@ -182,7 +218,7 @@ class Refiner {
     }
     if (!angle_bad && !size_bad) return;
     if (!size_bad && cannot_improve(h, s)) return;
-    push_bad({sin2, order_++, f, a, b, c});
+    push_bad({sin2, face_key(f), f, a, b, c});
   }
 
   // Triangles refinement leaves alone when only their angles are bad: the smallest angle
@@ -219,7 +255,7 @@ class Refiner {
   }
   bool still_there(const Candidate& c) const {
     if (!mesh_.is_live(c.face)) return false;
-    const HalfEdge h = mesh_.half_edge(c.face);
+    const HalfEdge h = first_edge(c.face);
     return mesh_.origin(h) == c.a && mesh_.dest(h) == c.b && mesh_.apex(h) == c.c;
   }
 
@@ -335,10 +371,13 @@ class Refiner {
     }
     encroached_around(w.h, p, encroached_);
     if (!encroached_.empty()) {
-      // The first only: a split moves the other handles, and the triangle comes back with the
+      // One only (the lowest vertex ids): a split moves the other handles, and the triangle comes back with the
       // others still encroached if its point still asks for them.
       ++rejected_;
-      if (split_segment(encroached_.front(), kNone, &p)) requeue(c);
+      const HalfEdge first = *std::min_element(encroached_.begin(), encroached_.end(), [&](HalfEdge x, HalfEdge y) {
+        return key(mesh_.origin(x), mesh_.dest(x)) < key(mesh_.origin(y), mesh_.dest(y));
+      });
+      if (split_segment(first, kNone, &p)) requeue(c);
       return;
     }
     Rec& rec = tri_.recorder();
@@ -356,7 +395,7 @@ class Refiner {
   }
 
   void requeue(const Candidate& c) {
-    if (still_there(c)) push_bad({c.priority, order_++, c.face, c.a, c.b, c.c});
+    if (still_there(c)) push_bad(c);
   }
 
   // Splits the segment of h: at its midpoint, or on a concentric shell around its one
@@ -392,8 +431,8 @@ class Refiner {
     subsegments_[key(a, v)] = info;
     subsegments_[key(v, b)] = info;
     ++segment_splits_;
-    segments_.push_back({a, v, kNone});
-    segments_.push_back({v, b, kNone});
+    segments_.push_back({std::min(a, b), v, kNone});
+    segments_.push_back({v, std::max(a, b), kNone});
     after_insertion(out);
     return true;
   }
@@ -433,12 +472,16 @@ class Refiner {
   // After a vertex went in: check the faces around it, and the segments across from it.
   void after_insertion(HalfEdge out) {
     const VertexId v = mesh_.origin(out);
+    star_.clear();
+    const std::size_t first_suspect = segments_.size();
     for_each_out(out, [&](HalfEdge h) {
-      check_face(mesh_.face(h));
+      star_.push_back(mesh_.face(h));
       const HalfEdge far = mesh_.next(h);
       if (is_segment(far) && encroaches(point(v), mesh_.origin(far), mesh_.dest(far)))
         segments_.push_back({mesh_.origin(far), mesh_.dest(far), far});
     });
+    sort_suspects(segments_.begin() + static_cast<std::ptrdiff_t>(first_suspect), segments_.end());
+    check_faces(star_);
   }
 
   template <class F>
@@ -489,7 +532,7 @@ class Refiner {
     std::size_t below = 0, bad = 0, explained = 0, skipped = 0;
     for (FaceId f = 0; f < mesh_.face_capacity(); ++f) {
       if (!mesh_.is_live(f)) continue;
-      const HalfEdge h = mesh_.half_edge(f);
+      const HalfEdge h = first_edge(f);
       const VertexId a = mesh_.origin(h), b = mesh_.dest(h), c = mesh_.apex(h);
       const quality::Shape s = quality::shape(point(a), point(b), point(c));
       const bool below_angle = s.sin2_min_angle() < criteria_.sin2_min_angle;
@@ -521,7 +564,7 @@ class Refiner {
   std::vector<Suspect> segments_;  // subsegments to check for encroachment
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<>> heap_;
   std::deque<Candidate> fifo_;
-  std::uint64_t order_ = 0;
+  std::vector<FaceId> star_;
   std::vector<FaceId> cavity_;
   std::vector<HalfEdge> stack_;
   std::vector<HalfEdge> encroached_;
