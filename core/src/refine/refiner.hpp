@@ -238,8 +238,16 @@ class Refiner {
   }
 
   void push_bad(const Candidate& c) {
-    if (options_.order == RefineOrder::fifo) fifo_.push_back(c);
-    else heap_.push(c);
+    if (options_.order == RefineOrder::fifo) {
+      fifo_.push_back(c);
+      return;
+    }
+    // Worst first, to within 1/1024 of the quality range (the bucket); within a bucket the
+    // newest first, which keeps the work near the faces just made.
+    const auto bucket = static_cast<std::size_t>(
+        std::min(static_cast<double>(kBuckets - 1), std::max(0.0, c.priority) * (kBuckets / 0.75)));
+    buckets_[bucket].push_back(c);
+    lowest_ = std::min(lowest_, bucket);
   }
   bool pop_bad(Candidate& c) {
     if (options_.order == RefineOrder::fifo) {
@@ -248,9 +256,10 @@ class Refiner {
       fifo_.pop_front();
       return true;
     }
-    if (heap_.empty()) return false;
-    c = heap_.top();
-    heap_.pop();
+    while (lowest_ < kBuckets && buckets_[lowest_].empty()) ++lowest_;
+    if (lowest_ == kBuckets) return false;
+    c = buckets_[lowest_].back();
+    buckets_[lowest_].pop_back();
     return true;
   }
   bool still_there(const Candidate& c) const {
@@ -562,7 +571,10 @@ class Refiner {
   std::vector<std::pair<VertexId, VertexId>> on_segment_;
   std::vector<std::uint8_t> small_angle_;           // by vertex: two segments meet at < 60 degrees
   std::vector<Suspect> segments_;  // subsegments to check for encroachment
-  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<>> heap_;
+  // Bad triangles by quality (sin^2 of the smallest angle, 0 to 0.75), worst bucket first.
+  static constexpr std::size_t kBuckets = 1024;
+  std::vector<std::vector<Candidate>> buckets_ = std::vector<std::vector<Candidate>>(kBuckets);
+  std::size_t lowest_ = kBuckets;
   std::deque<Candidate> fifo_;
   std::vector<FaceId> star_;
   std::vector<FaceId> cavity_;
