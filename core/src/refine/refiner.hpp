@@ -481,16 +481,35 @@ class Refiner {
   // After a vertex went in: check the faces around it, and the segments across from it.
   void after_insertion(HalfEdge out) {
     const VertexId v = mesh_.origin(out);
-    star_.clear();
-    const std::size_t first_suspect = segments_.size();
-    for_each_out(out, [&](HalfEdge h) {
-      star_.push_back(mesh_.face(h));
+    HalfEdge h = star_start(out);
+    for (;;) {  // counterclockwise around v
       const HalfEdge far = mesh_.next(h);
       if (is_segment(far) && encroaches(point(v), mesh_.origin(far), mesh_.dest(far)))
         segments_.push_back({mesh_.origin(far), mesh_.dest(far), far});
-    });
-    sort_suspects(segments_.begin() + static_cast<std::ptrdiff_t>(first_suspect), segments_.end());
-    check_faces(star_);
+      check_face(mesh_.face(h));
+      const HalfEdge t = mesh_.twin(mesh_.prev(h));
+      if (t == kNone || t == star_start_) break;
+      h = t;
+    }
+  }
+
+  // Where to start going counterclockwise around origin(out) so that the order is the
+  // mesh's own, not the data structure's: the clockwise-most edge on a boundary, else the
+  // edge to the smallest vertex id. (Faces are queued in the order they are checked.)
+  HalfEdge star_start(HalfEdge out) {
+    HalfEdge start = out;
+    for (HalfEdge h = out;;) {
+      const HalfEdge t = mesh_.twin(h);
+      if (t == kNone) {
+        start = h;
+        break;
+      }
+      h = mesh_.next(t);  // the next edge clockwise
+      if (h == out) break;
+      if (mesh_.dest(h) < mesh_.dest(start)) start = h;
+    }
+    star_start_ = start;
+    return start;
   }
 
   template <class F>
@@ -577,6 +596,7 @@ class Refiner {
   std::size_t lowest_ = kBuckets;
   std::deque<Candidate> fifo_;
   std::vector<FaceId> star_;
+  HalfEdge star_start_ = kNone;
   std::vector<FaceId> cavity_;
   std::vector<HalfEdge> stack_;
   std::vector<HalfEdge> encroached_;
