@@ -21,5 +21,7 @@ struct Command {
 Command add_triangulate_command(CLI::App& parent);
 Command add_check_command(CLI::App& parent);
 Command add_log_command(CLI::App& parent);
+Command add_refine_command(CLI::App& parent);
+Command add_list_command(CLI::App& parent);
 
 }  // namespace meshstep::app

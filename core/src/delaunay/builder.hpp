@@ -114,7 +114,6 @@ class Builder {
   // Ends the recording and converts the mesh (releasing the data structure).
   TriMesh finish() {
     tri_.recorder().run_end(tri_.mesh());
-    report_.steiner_vertices = tri_.points().size() - input_count_;
     TriMesh out = to_tri_mesh();
     if (report_.duplicate_vertices > 0) report_.warnings.push_back(duplicate_warning());
     return out;

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "../delaunay/builder.hpp"
@@ -14,17 +15,23 @@
 namespace meshstep {
 namespace {
 
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
+
 void check(const RefineCriteria& c) {
   const auto fail = [](const std::string& m) { throw InputError(m); };
   if (!(c.min_angle_deg >= 0.0 && c.min_angle_deg < 60.0))
-    fail("minimum angle " + std::to_string(c.min_angle_deg) + " is out of range (0 to below 60 degrees)");
+    fail("minimum angle " + number(c.min_angle_deg) + " is out of range (0 to below 60 degrees)");
   if (!(c.max_angle_deg > 60.0 && c.max_angle_deg <= 180.0))
-    fail("maximum angle " + std::to_string(c.max_angle_deg) + " is out of range (above 60 to 180 degrees)");
+    fail("maximum angle " + number(c.max_angle_deg) + " is out of range (above 60 to 180 degrees)");
   if (!(c.max_aspect == 0.0 || c.max_aspect >= 2.0 / std::sqrt(3.0)))
-    fail("maximum aspect ratio " + std::to_string(c.max_aspect) +
+    fail("maximum aspect ratio " + number(c.max_aspect) +
          " is below the equilateral triangle's 1.1547 (longest edge over shortest altitude)");
   if (!(c.max_area >= 0.0) || !std::isfinite(c.max_area))
-    fail("maximum area " + std::to_string(c.max_area) + " must be a positive number");
+    fail("maximum area " + number(c.max_area) + " must be a positive number");
 }
 
 // The criteria in the triangulation's scaled coordinates.

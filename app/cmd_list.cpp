@@ -1,0 +1,113 @@
+// meshstep list: the registered refinement algorithms and the parts they are made of
+// (refine/registry.hpp), as text in sections or as one JSON object.
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "command.hpp"
+#include "json_line.hpp"
+#include "meshstep/refine/registry.hpp"
+
+namespace meshstep::app {
+namespace {
+
+struct ListArgs {
+  bool json = false;
+};
+
+struct Row {
+  std::string name, description;
+};
+
+struct Section {
+  const char* key;    // the JSON key
+  const char* title;  // the text heading
+  std::vector<Row> rows;
+};
+
+std::string number(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", v);
+  return buffer;
+}
+
+std::vector<Row> rows_of(std::span<const PartInfo> parts) {
+  std::vector<Row> rows;
+  for (const PartInfo& p : parts) rows.push_back({std::string(p.name), std::string(p.description)});
+  return rows;
+}
+
+std::vector<Section> sections() {
+  std::vector<Row> algorithm_rows;
+  for (const AlgorithmInfo& a : algorithms())
+    algorithm_rows.push_back({std::string(a.name), std::string(a.description) + " (selection " +
+                                                       to_string(a.selection) + "; default --min-angle " +
+                                                       number(a.default_min_angle_deg) + ")"});
+  return {
+      {"algorithms", "Algorithms (refine --algorithm NAME)", std::move(algorithm_rows)},
+      {"selections", "Selections (refine --select S): where a bad triangle's new vertex goes",
+       rows_of(meshstep::selections())},
+      {"insertions", "Insertions (--insertion): how a vertex goes in", rows_of(meshstep::insertions())},
+      {"criteria", "Criteria (refine): a triangle is bad when it fails any bound given",
+       rows_of(meshstep::criteria())},
+      {"data_structures", "Data structures (--ds)", rows_of(meshstep::data_structures())},
+      {"file_formats", "File formats", rows_of(meshstep::file_formats())},
+  };
+}
+
+int run_list(const ListArgs& args) {
+  const std::vector<Section> all = sections();
+  if (args.json) {
+    // {"algorithms":[{"name":..,"description":..,...}],"selections":[...],...}
+    std::string out = "{";
+    for (const Section& s : all) {
+      if (out.size() > 1) out += ',';
+      out += '"' + std::string(s.key) + "\":[";
+      bool first = true;
+      for (const Row& r : s.rows) {
+        JsonLine item;
+        item.field("name", r.name).field("description", r.description);
+        if (std::string(s.key) == "algorithms") {
+          const AlgorithmInfo* a = find_algorithm(r.name);
+          item.field("selection", std::string(to_string(a->selection)))
+              .field("default_min_angle", a->default_min_angle_deg);
+        }
+        out += (first ? "" : ",") + item.str();
+        first = false;
+      }
+      out += ']';
+    }
+    out += '}';
+    std::printf("%s\n", out.c_str());
+    return kExitOk;
+  }
+  // The algorithms' rows carry their own description; the others are "name  description".
+  bool first = true;
+  for (const Section& s : all) {
+    std::printf("%s%s:\n", first ? "" : "\n", s.title);
+    first = false;
+    std::size_t width = 0;
+    for (const Row& r : s.rows) width = std::max(width, r.name.size());
+    for (const Row& r : s.rows)
+      std::printf("  %-*s  %s\n", static_cast<int>(width), r.name.c_str(), r.description.c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_list_command(CLI::App& parent) {
+  auto args = std::make_shared<ListArgs>();
+  CLI::App* cmd = parent.add_subcommand(
+      "list",
+      "List the registered refinement algorithms, selections, insertions, criteria, data\n"
+      "structures and file formats, with a line of description each.");
+  cmd->add_flag("--json", args->json, "Print one JSON object: {\"algorithms\":[{\"name\",\"description\",...}],...}");
+  cmd->footer("Example: meshstep list --json");
+  return {cmd, [args] { return run_list(*args); }};
+}
+
+}  // namespace meshstep::app

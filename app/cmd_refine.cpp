@@ -1,0 +1,397 @@
+// meshstep refine: Delaunay refinement of a .poly PSLG (or a .node point set) into a quality
+// mesh, by one of the registered algorithms (refine/registry.hpp).
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "command.hpp"
+#include "console.hpp"
+#include "json_line.hpp"
+#include "meshstep/check/quality.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/io/triangle_io.hpp"
+#include "meshstep/refine/refine.hpp"
+#include "meshstep/refine/registry.hpp"
+#include "meshstep/replay/log_writer.hpp"
+#include "output_prefix.hpp"
+#include "record_option.hpp"
+
+namespace meshstep::app {
+namespace {
+
+struct RefineArgs {
+  std::string input;
+  std::string prefix;
+  std::string algorithm = "circumcenter";
+  std::string select;  // empty: the algorithm's own
+  double min_angle = 0.0;
+  double max_angle = 180.0;
+  double max_aspect = 0.0;
+  double max_area = 0.0;
+  std::size_t max_triangles = 0;
+  std::size_t max_steiner = 0;
+  std::string size;
+  std::string insertion = "flip";
+  std::string order = "worst";
+  std::string encroachment = "circle";
+  std::string ds = "tds";
+  bool convex_hull = false;
+  std::string record;
+  std::string stats;
+  bool no_output = false;
+  bool quiet = false;
+  bool verbose = false;
+  // Which bounds the command line gave (the defaults above mean "none").
+  std::vector<const CLI::Option*> bounds;
+};
+
+// Progress that is worth seeing on a normal run (refinement can take a while): on standard
+// error, unless --quiet.
+void note(Verbosity v, const std::string& message) {
+  if (v != Verbosity::quiet) {
+    std::fprintf(stderr, "meshstep: %s\n", message.c_str());
+    std::fflush(stderr);
+  }
+}
+
+std::string with_input(const std::string& input, const InputError& e) {
+  return e.file().empty() ? input + ": " + e.what() : e.what();
+}
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// The whole of `text` as a number, or nothing.
+bool parse_number(const std::string& text, double& value) {
+  if (text.empty()) return false;
+  errno = 0;
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size() && errno != ERANGE;
+}
+
+// "30", "0.125", "1e-06": short and exact enough for messages and the log header.
+std::string number(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.9g", v);
+  return buffer;
+}
+
+// CLI11's own range checks print the largest double in full; these say what is wanted.
+// Text that is no number passes, for CLI11's conversion to refuse.
+CLI::Validator positive_number(bool zero_allowed) {
+  return CLI::Validator(
+      [zero_allowed](std::string& text) -> std::string {
+        double value = 0.0;
+        if (!parse_number(text, value)) return {};
+        if (std::isfinite(value) && (value > 0.0 || (zero_allowed && value == 0.0))) return {};
+        return std::string(zero_allowed ? "must be zero or a positive number" : "must be a positive number") +
+               ", not " + text;
+      },
+      "");
+}
+
+std::string names_of_algorithms() {
+  std::string names;
+  for (const AlgorithmInfo& a : algorithms()) names += (names.empty() ? "" : ", ") + std::string(a.name);
+  return names;
+}
+
+int run_refine(const RefineArgs& args) {
+  const Verbosity verbosity =
+      args.quiet ? Verbosity::quiet : args.verbose ? Verbosity::verbose : Verbosity::normal;
+
+  const AlgorithmInfo* algorithm = find_algorithm(args.algorithm);
+  if (!algorithm) {  // CLI11 checks the name already; this guards a registry change
+    print_error("unknown algorithm '" + args.algorithm + "'; registered: " + names_of_algorithms());
+    return kExitUsage;
+  }
+  RefineOptions options = options_for(*algorithm);
+  if (!args.select.empty()) {
+    const std::optional<Selection> selection = parse_selection(args.select);
+    if (!selection) {
+      print_error("unknown selection '" + args.select + "'");
+      return kExitUsage;
+    }
+    options.selection = *selection;
+  }
+  options.order = args.order == "fifo" ? RefineOrder::fifo : RefineOrder::worst_first;
+  options.encroachment = args.encroachment == "lens" ? Encroachment::lens : Encroachment::circle;
+  options.triangulate.data_structure = args.ds == "dcel" ? DataStructure::dcel : DataStructure::tds;
+  options.triangulate.insertion = args.insertion == "cavity" ? Insertion::cavity : Insertion::flip;
+  options.triangulate.convex_hull = args.convex_hull;
+
+  RefineCriteria& criteria = options.criteria;
+  criteria.min_angle_deg = args.min_angle;
+  criteria.max_angle_deg = args.max_angle;
+  criteria.max_aspect = args.max_aspect;
+  criteria.max_area = args.max_area;
+  criteria.max_triangles = args.max_triangles;
+  criteria.max_steiner = args.max_steiner;
+  double size = 0.0;
+  if (!args.size.empty()) {
+    if (!parse_number(args.size, size)) {
+      print_error("--size " + args.size +
+                  ": size grids (ESRI ASCII) are not implemented yet; give a number");
+      return kExitBadInput;
+    }
+    criteria.size = [size](const Point&) { return size; };
+  }
+  bool any_bound = false;
+  for (const CLI::Option* o : args.bounds) any_bound = any_bound || o->count() > 0;
+  if (!any_bound) criteria.min_angle_deg = algorithm->default_min_angle_deg;
+
+  // A mesh prefix (PREFIX.node + PREFIX.ele) rather than an input file.
+  if (!ends_with(args.input, ".poly") && !ends_with(args.input, ".node")) {
+    std::error_code ec;
+    if (std::filesystem::exists(args.input + ".node", ec) && std::filesystem::exists(args.input + ".ele", ec)) {
+      print_error(args.input + ": re-refinement of an existing mesh (" + args.input + ".node + " + args.input +
+                  ".ele) is not implemented yet; refine the .poly or .node it was made from");
+      return kExitBadInput;
+    }
+  }
+
+  const std::string prefix = args.prefix.empty() ? default_output_prefix(args.input) : args.prefix;
+  std::string bounds_text;
+  const auto bound = [&bounds_text](const std::string& text) {
+    bounds_text += (bounds_text.empty() ? "" : ", ") + text;
+  };
+  if (criteria.min_angle_deg > 0.0) bound("min angle " + number(criteria.min_angle_deg));
+  if (!any_bound) bounds_text += " (no bound given: " + std::string(algorithm->name) + "'s default)";
+  if (criteria.max_angle_deg < 180.0) bound("max angle " + number(criteria.max_angle_deg));
+  if (criteria.max_aspect > 0.0) bound("max aspect " + number(criteria.max_aspect));
+  if (criteria.max_area > 0.0) bound("max area " + number(criteria.max_area));
+  if (criteria.size) bound("size " + number(size));
+  if (bounds_text.empty()) bounds_text = "no bounds";
+  if (criteria.max_triangles) bound("at most " + std::to_string(criteria.max_triangles) + " triangles");
+  if (criteria.max_steiner) bound("at most " + std::to_string(criteria.max_steiner) + " Steiner vertices");
+
+  Stopwatch clock;
+  std::vector<std::string> warnings;
+  Pslg input;
+  TriMesh mesh;
+  RefineReport report;
+  double read_ms = 0, write_ms = 0;
+  std::size_t input_vertices = 0, input_segments = 0;
+  try {
+    note(verbosity, "reading " + args.input);
+    input = io::read_pslg(args.input, &warnings);
+    read_ms = clock.lap_ms();
+    for (const std::string& w : warnings) print_warning(verbosity, w);
+    input_vertices = input.points.size();
+    input_segments = input.segments.size();
+    note(verbosity, "triangulating and refining " + std::to_string(input_vertices) + " vertices, " +
+                        std::to_string(input_segments) + " segments: " + options.algorithm + " (selection " +
+                        to_string(options.selection) + ", " + to_string(options.order) + " order, " +
+                        (options.encroachment == Encroachment::lens ? "lens" : "circle") + " encroachment, " +
+                        to_string(options.triangulate.data_structure) + ", " +
+                        to_string(options.triangulate.insertion) + "); " + bounds_text);
+    std::unique_ptr<replay::LogWriter> log;
+    if (!args.record.empty()) {
+      log = open_log(args.record, args.input, options.algorithm,
+                     "selection=" + std::string(to_string(options.selection)) +
+                         " min_angle=" + number(criteria.min_angle_deg) +
+                         " max_angle=" + number(criteria.max_angle_deg) +
+                         " max_aspect=" + number(criteria.max_aspect) +
+                         " max_area=" + number(criteria.max_area) +
+                         " size=" + number(criteria.size ? size : 0.0) +
+                         " max_triangles=" + std::to_string(criteria.max_triangles) +
+                         " max_steiner=" + std::to_string(criteria.max_steiner) +
+                         " order=" + to_string(options.order) +
+                         " encroachment=" + (options.encroachment == Encroachment::lens ? "lens" : "circle") +
+                         " input_vertices=" + std::to_string(input_vertices) +
+                         " first_index=" + std::to_string(input.first_index) +
+                         " convex_hull=" + std::to_string(args.convex_hull),
+                     options.triangulate.data_structure, options.triangulate.insertion);
+      options.triangulate.record = log.get();
+    }
+    mesh = refine(std::move(input), options, &report);
+    clock.lap_ms();  // refine() times its own phases (report.triangulate_ms, refine_ms)
+    for (const std::string& w : report.triangulation.warnings) print_warning(verbosity, args.input + ": " + w);
+    if (!args.no_output) {
+      print_progress(verbosity, "writing " + prefix + ".node/.ele/.poly");
+      io::write_mesh(prefix, mesh);
+      write_ms = clock.lap_ms();
+    }
+    // Last: the log writer's thread finishes its backlog while the mesh is written.
+    if (log) {
+      log->finish();
+      print_progress(verbosity, record_summary(*log));
+    }
+  } catch (const InputError& e) {
+    print_error(with_input(args.input, e));
+    return kExitBadInput;
+  }
+
+  if (report.stopped_by_cap) {
+    const bool triangle_cap = criteria.max_triangles && mesh.triangles.size() >= criteria.max_triangles;
+    print_warning(verbosity, args.input + ": refinement stopped at the " +
+                                 (triangle_cap ? "--max-triangles " + std::to_string(criteria.max_triangles)
+                                               : "--max-steiner " + std::to_string(criteria.max_steiner)) +
+                                 " cap before every triangle met the bounds");
+  }
+  if (report.unsplittable_segments)
+    print_warning(verbosity, args.input + ": " + std::to_string(report.unsplittable_segments) +
+                                 " segment splits refused (subsegments too short to split in floating point)");
+
+  const AngleStats angles = angle_stats(mesh);
+  if (verbosity != Verbosity::quiet) {
+    const std::string outcome =
+        report.bounds_met ? std::string("bounds met")
+                          : "bounds missed by " + std::to_string(report.bad_triangles) + " triangles (" +
+                                std::to_string(report.bad_near_small_input_angle) + " near small input angles)";
+    std::printf("%s: %zu vertices, %zu segments -> %zu triangles, %zu Steiner vertices (min angle %.2f, "
+                "max angle %.2f); %s\n",
+                args.input.c_str(), input_vertices, input_segments, mesh.triangles.size(), report.steiner_vertices,
+                angles.min_angle_deg, angles.max_angle_deg, outcome.c_str());
+    if (!args.no_output) std::printf("  written to %s.node, %s.ele, %s.poly\n", prefix.c_str(), prefix.c_str(),
+                                     prefix.c_str());
+  }
+  if (verbosity == Verbosity::verbose) {
+    std::printf("  refinement: %zu segment splits, %zu triangles split, %zu points rejected (encroaching),"
+                " %zu bad triangles left at small input angles, %zu unsplittable segments\n",
+                report.segment_splits, report.triangles_split, report.rejected_points, report.skipped_small_angle,
+                report.unsplittable_segments);
+    std::printf("  after: %zu triangles below the minimum angle, %zu missing a bound\n", report.below_min_angle,
+                report.bad_triangles);
+    // (report.triangulation.steiner_vertices is the run's total after refine(), not the
+    // crossings alone, so it is not shown here.)
+    std::printf("  triangulation: %zu duplicates merged, %zu triangles removed (holes/outside);"
+                " mesh %.1f MiB\n",
+                report.triangulation.duplicate_vertices, report.triangulation.removed_triangles,
+                report.triangulation.mesh_bytes / 1048576.0);
+    std::printf("  time: read %.1f ms, triangulate %.1f ms, refine %.1f ms, write %.1f ms\n", read_ms,
+                report.triangulate_ms, report.refine_ms, write_ms);
+  }
+  if (args.stats == "json") {
+    JsonLine ms;
+    ms.field("read", read_ms)
+        .field("triangulate", report.triangulate_ms)
+        .field("refine", report.refine_ms)
+        .field("write", write_ms);
+    JsonLine stats;
+    stats.field("input", args.input)
+        .field("algorithm", options.algorithm)
+        .field("selection", std::string(to_string(options.selection)))
+        .field("order", std::string(to_string(options.order)))
+        .field("encroachment", std::string(options.encroachment == Encroachment::lens ? "lens" : "circle"))
+        .field("min_angle_bound", criteria.min_angle_deg)
+        .field("vertices", mesh.points.size())
+        .field("triangles", mesh.triangles.size())
+        .field("segments", mesh.segments.size())
+        .field("input_vertices", input_vertices)
+        .field("input_segments", input_segments)
+        .field("steiner", report.steiner_vertices)
+        .field("segment_splits", report.segment_splits)
+        .field("triangles_split", report.triangles_split)
+        .field("rejected_points", report.rejected_points)
+        .field("skipped_small_angle", report.skipped_small_angle)
+        .field("unsplittable_segments", report.unsplittable_segments)
+        .field("below_min_angle", report.below_min_angle)
+        .field("bad_triangles", report.bad_triangles)
+        .field("bad_near_small_input_angle", report.bad_near_small_input_angle)
+        .field("bounds_met", report.bounds_met)
+        .field("stopped_by_cap", report.stopped_by_cap)
+        .field("min_angle", angles.min_angle_deg)
+        .field("max_angle", angles.max_angle_deg)
+        .field("ds", std::string(to_string(options.triangulate.data_structure)))
+        .field("insertion", std::string(to_string(options.triangulate.insertion)))
+        .object("ms", ms);
+    std::printf("%s\n", stats.str().c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_refine_command(CLI::App& parent) {
+  auto args = std::make_shared<RefineArgs>();
+  CLI::App* cmd = parent.add_subcommand(
+      "refine",
+      "Delaunay refinement: triangulate a .poly PSLG (or a .node point set), then insert Steiner\n"
+      "vertices until every triangle meets the bounds (see 'meshstep list' for the algorithms).\n"
+      "Without any bound (--min-angle, --max-angle, --max-aspect, --max-area, --size) the\n"
+      "algorithm's default minimum angle applies.");
+  cmd->add_option("INPUT", args->input, "Input .poly or .node file (Triangle's formats)")->required();
+
+  std::vector<std::string> algorithm_names, selection_names;
+  for (const AlgorithmInfo& a : algorithms()) algorithm_names.emplace_back(a.name);
+  for (const PartInfo& s : selections()) selection_names.emplace_back(s.name);
+  cmd->add_option("-a,--algorithm", args->algorithm, "Refinement algorithm: " + names_of_algorithms())
+      ->check(CLI::IsMember(algorithm_names))
+      ->capture_default_str();
+  cmd->add_option("--select", args->select,
+                  "Override the algorithm's choice of new vertex: circumcenter or offcenter")
+      ->check(CLI::IsMember(selection_names))
+      ->type_name("S");
+
+  args->bounds.push_back(cmd->add_option("--min-angle", args->min_angle,
+                                         "Every angle at least DEG (below 60; above about 34 refinement\n"
+                                         "may not end: cap it with --max-steiner or --max-triangles)")
+                             ->check(positive_number(true))
+                             ->type_name("DEG"));
+  args->bounds.push_back(cmd->add_option("--max-angle", args->max_angle, "Every angle at most DEG (above 60)")
+                             ->check(positive_number(false))
+                             ->type_name("DEG"));
+  args->bounds.push_back(cmd->add_option("--max-aspect", args->max_aspect,
+                                         "Longest edge / shortest altitude at most R (equilateral: 1.1547)")
+                             ->check(positive_number(false))
+                             ->type_name("R"));
+  args->bounds.push_back(cmd->add_option("--max-area", args->max_area, "Every triangle's area at most A")
+                             ->check(positive_number(false))
+                             ->type_name("A"));
+  args->bounds.push_back(cmd->add_option("--size", args->size,
+                                         "Every edge at most VALUE long (a positive number; size grids\n"
+                                         "are not implemented yet)")
+                             ->check(positive_number(false))  // a file name passes: refused later (exit 1)
+                             ->type_name("VALUE"));
+  cmd->add_option("--max-triangles", args->max_triangles, "Stop once the mesh has N triangles")
+      ->check(positive_number(false))
+      ->type_name("N");
+  cmd->add_option("--max-steiner", args->max_steiner, "Stop after inserting N Steiner vertices")
+      ->check(positive_number(false))
+      ->type_name("N");
+
+  cmd->add_option("--insertion", args->insertion, "Point insertion: flip (Lawson) or cavity (Bowyer-Watson)")
+      ->check(CLI::IsMember({"flip", "cavity"}))
+      ->capture_default_str();
+  cmd->add_option("--order", args->order, "Which bad triangle next: worst (smallest angle first) or fifo")
+      ->check(CLI::IsMember({"worst", "fifo"}))
+      ->capture_default_str();
+  cmd->add_option("--encroachment", args->encroachment,
+                  "Points that encroach on a segment: those in its diametral circle, or only\n"
+                  "those in its diametral lens (fewer splits)")
+      ->check(CLI::IsMember({"circle", "lens"}))
+      ->capture_default_str();
+  cmd->add_option("--ds", args->ds, "Mesh data structure: tds (triangle-based) or dcel (half-edge)")
+      ->check(CLI::IsMember({"tds", "dcel"}))
+      ->capture_default_str();
+  cmd->add_flag("-c,--convex-hull", args->convex_hull,
+                "Mesh the whole convex hull (minus holes), not only what segments enclose");
+  add_record_option(*cmd, args->record);
+  cmd->add_option("-o,--output", args->prefix,
+                  "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly\n"
+                  "(default: INPUT without extension plus .1, as Triangle does)");
+  cmd->add_option("--stats", args->stats,
+                  "Print statistics; 'json': the last line of standard output is one JSON object\n"
+                  "(vertices, triangles, steiner, segment_splits, bad_triangles, bounds_met,\n"
+                  "stopped_by_cap, min_angle, max_angle, ms.read/triangulate/refine/write, ...)")
+      ->check(CLI::IsMember({"json"}));
+  cmd->add_flag("--no-output", args->no_output, "Refine but write no mesh files (for timing)");
+  cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors (and --stats)");
+  cmd->add_flag("-v,--verbose", args->verbose, "Also print refinement counts, timings and the record summary");
+  cmd->footer(
+      "Example: meshstep refine assets/examples/plate.poly --algorithm offcenter --min-angle 30 -o plate_q\n"
+      "Exit status: 0 done (even if some triangles miss the bounds; see the summary),\n"
+      "1 bad input or bounds out of range, 2 usage error.");
+  return {cmd, [args] { return run_refine(*args); }};
+}
+
+}  // namespace meshstep::app

@@ -1,0 +1,288 @@
+// `meshstep refine` and `meshstep list`: the refinement command line's contract (outputs,
+// --stats json, exit statuses, error messages, recording), run through the real binary.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "meshstep/check/quality.hpp"
+#include "meshstep/io/triangle_io.hpp"
+#include "run_cli.hpp"
+#include "temp_dir.hpp"
+
+namespace meshstep {
+namespace {
+
+namespace fs = std::filesystem;
+
+using testing::CommandResult;
+
+constexpr const char* kSquareWithHole =
+    "# 4 x 4 square with a 2 x 2 square hole\n"
+    "8 2 0 1\n"
+    "1 0 0 1\n2 4 0 1\n3 4 4 1\n4 0 4 1\n5 1 1 2\n6 3 1 2\n7 3 3 2\n8 1 3 2\n"
+    "8 1\n"
+    "1 1 2 1\n2 2 3 1\n3 3 4 1\n4 4 1 1\n5 5 6 2\n6 6 7 2\n7 7 8 2\n8 8 5 2\n"
+    "1\n1 2 2\n";
+
+constexpr const char* kLShape =
+    "# an L: 3 x 3 with the 2 x 2 top-right corner cut away\n"
+    "6 2 0 0\n"
+    "1 0 0\n2 3 0\n3 3 1\n4 1 1\n5 1 3\n6 0 3\n"
+    "6 0\n"
+    "1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 6\n6 6 1\n"
+    "0\n";
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// The last line of standard output, which --stats json makes one JSON object.
+std::string last_line(const std::string& out) {
+  std::string s = out;
+  while (!s.empty() && s.back() == '\n') s.pop_back();
+  return s.substr(s.find_last_of('\n') == std::string::npos ? 0 : s.find_last_of('\n') + 1);
+}
+
+// The raw value of "key" in a one-line JSON object (the first occurrence), or "" if absent.
+std::string json_value(const std::string& json, const std::string& key) {
+  const std::string tag = "\"" + key + "\":";
+  const std::size_t at = json.find(tag);
+  if (at == std::string::npos) return "";
+  std::size_t end = at + tag.size();
+  if (end < json.size() && json[end] == '"') {
+    const std::size_t close = json.find('"', end + 1);
+    return json.substr(end + 1, close - end - 1);
+  }
+  const std::size_t stop = json.find_first_of(",}", end);
+  return json.substr(end, stop - end);
+}
+
+double json_number(const std::string& json, const std::string& key) {
+  const std::string v = json_value(json, key);
+  EXPECT_FALSE(v.empty()) << key << " missing in " << json;
+  return v.empty() ? NAN : std::strtod(v.c_str(), nullptr);
+}
+
+class RefineCli : public ::testing::Test {
+ protected:
+  CommandResult meshstep(const std::string& args) const { return testing::run_meshstep(args, dir_.path()); }
+  std::string write(const std::string& name, const std::string& text) const { return dir_.write(name, text); }
+
+  testing::TempDir dir_{"meshstep_refine_cli_"};
+};
+
+// Both inputs, with both algorithms and both data structures and insertions: 30 degrees is
+// met, the files are written and read back, and the mesh passes `meshstep check`.
+TEST_F(RefineCli, MeetsThirtyDegreesAndWritesAValidMesh) {
+  const std::string inputs[] = {write("hole.poly", kSquareWithHole), write("ell.poly", kLShape)};
+  const char* configs[] = {"--algorithm circumcenter", "--algorithm offcenter --ds dcel --insertion cavity"};
+  int run = 0;
+  for (const std::string& input : inputs) {
+    for (const char* config : configs) {
+      SCOPED_TRACE(input + " " + config);
+      const std::string prefix = dir_.file("out" + std::to_string(run++));
+      const CommandResult r = meshstep("refine " + input + " " + config + " --min-angle 30 -o " + prefix +
+                                       " --stats json");
+      ASSERT_EQ(r.status, 0) << r.err;
+      for (const char* ext : {".node", ".ele", ".poly"}) EXPECT_TRUE(fs::exists(prefix + ext)) << ext;
+      const std::string json = last_line(r.out);
+      ASSERT_EQ(json.front(), '{') << r.out;
+      ASSERT_EQ(json.back(), '}') << r.out;
+      EXPECT_EQ(json_value(json, "bounds_met"), "true") << json;
+      EXPECT_EQ(json_value(json, "stopped_by_cap"), "false") << json;
+      EXPECT_EQ(json_value(json, "bad_triangles"), "0") << json;
+      EXPECT_GE(json_number(json, "min_angle"), 30.0) << json;
+      EXPECT_GT(json_number(json, "steiner"), 0.0) << json;  // 30 degrees needs new vertices here
+      for (const char* key : {"input", "algorithm", "selection", "vertices", "triangles", "segment_splits",
+                              "rejected_points", "skipped_small_angle", "unsplittable_segments",
+                              "below_min_angle", "bad_near_small_input_angle", "max_angle", "ds", "insertion",
+                              "ms", "read", "triangulate", "refine", "write"})
+        EXPECT_TRUE(contains(json, std::string("\"").append(key).append("\":"))) << key << " in " << json;
+      EXPECT_EQ(json_value(json, "algorithm"), contains(config, "offcenter") ? "offcenter" : "circumcenter");
+      EXPECT_EQ(json_value(json, "ds"), contains(config, "dcel") ? "dcel" : "tds");
+
+      // The summary line says so too.
+      EXPECT_TRUE(contains(r.out, input + ": ")) << r.out;
+      EXPECT_TRUE(contains(r.out, "bounds met")) << r.out;
+
+      // The written mesh is what the statistics describe, and it is a valid mesh of the input.
+      const TriMesh mesh = io::read_mesh(prefix);
+      EXPECT_EQ(std::to_string(mesh.triangles.size()), json_value(json, "triangles"));
+      EXPECT_EQ(std::to_string(mesh.points.size()), json_value(json, "vertices"));
+      EXPECT_GE(angle_stats(mesh).min_angle_deg, 30.0 - 1e-9);
+      const CommandResult c = meshstep("check " + prefix + " --poly " + input + " -q");
+      EXPECT_EQ(c.status, 0) << c.err;
+    }
+  }
+}
+
+TEST_F(RefineCli, DefaultPrefixAndDefaultBound) {
+  const std::string input = write("ell.poly", kLShape);
+  const CommandResult r = meshstep("refine " + input + " --algorithm offcenter --stats json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir_.file("ell.1.node")));
+  EXPECT_TRUE(fs::exists(dir_.file("ell.1.ele")));
+  // No bound given: the algorithm's default minimum angle, and the progress output says so.
+  EXPECT_TRUE(contains(r.err, "default")) << r.err;
+  const std::string json = last_line(r.out);
+  EXPECT_NEAR(json_number(json, "min_angle_bound"), 20.7, 1e-9) << json;
+  EXPECT_GE(json_number(json, "min_angle"), 20.7) << json;
+  EXPECT_EQ(json_value(json, "bounds_met"), "true") << json;
+  // -q: nothing but the statistics.
+  const CommandResult q = meshstep("refine " + input + " -q --no-output --stats json");
+  ASSERT_EQ(q.status, 0) << q.err;
+  EXPECT_TRUE(q.err.empty()) << q.err;
+  EXPECT_EQ(q.out.find('\n'), q.out.size() - 1) << q.out;
+}
+
+TEST_F(RefineCli, SizeBoundsEveryEdge) {
+  const std::string input = write("hole.poly", kSquareWithHole);
+  const std::string prefix = dir_.file("sized");
+  const CommandResult r = meshstep("refine " + input + " --size 0.5 -o " + prefix + " --stats json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(json_value(last_line(r.out), "bounds_met"), "true") << r.out;
+  const TriMesh mesh = io::read_mesh(prefix);
+  double longest = 0.0;
+  for (const auto& t : mesh.triangles)
+    for (int i = 0; i < 3; ++i) {
+      const Point& a = mesh.points[t[i]];
+      const Point& b = mesh.points[t[(i + 1) % 3]];
+      longest = std::max(longest, std::hypot(a.x - b.x, a.y - b.y));
+    }
+  EXPECT_LE(longest, 0.5 * (1 + 1e-9));
+  EXPECT_GT(mesh.triangles.size(), 64u);  // the 12 square units need many small triangles
+}
+
+TEST_F(RefineCli, UnknownAlgorithmIsAUsageErrorListingTheNames) {
+  const std::string input = write("ell.poly", kLShape);
+  const CommandResult r = meshstep("refine " + input + " --algorithm chew3000");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(contains(r.err, "meshstep: error:")) << r.err;
+  EXPECT_TRUE(contains(r.err, "circumcenter")) << r.err;
+  EXPECT_TRUE(contains(r.err, "offcenter")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_.file("ell.1.node")));
+  EXPECT_EQ(meshstep("refine " + input + " --select centroid").status, 2);
+  EXPECT_EQ(meshstep("refine " + input + " --ds octree").status, 2);
+  EXPECT_EQ(meshstep("refine " + input + " --max-area -1").status, 2);
+  EXPECT_EQ(meshstep("refine " + input + " --max-steiner 0").status, 2);
+  EXPECT_EQ(meshstep("refine " + input + " --size -1").status, 2);
+  EXPECT_EQ(meshstep("refine").status, 2);
+}
+
+TEST_F(RefineCli, OutOfRangeAngleIsBadInput) {
+  const std::string input = write("ell.poly", kLShape);
+  const CommandResult r = meshstep("refine " + input + " --min-angle 70 --record " + dir_.file("x.mslog"));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(contains(r.err, "meshstep: error:")) << r.err;
+  EXPECT_TRUE(contains(r.err, "minimum angle")) << r.err;
+  EXPECT_TRUE(contains(r.err, "60")) << r.err;
+  // Nothing is left behind: no mesh, no log, no partial log.
+  EXPECT_FALSE(fs::exists(dir_.file("ell.1.node")));
+  EXPECT_FALSE(fs::exists(dir_.file("x.mslog")));
+  EXPECT_FALSE(fs::exists(dir_.file("x.mslog.partial")));
+  const CommandResult m = meshstep("refine " + input + " --max-angle 50");
+  EXPECT_EQ(m.status, 1);
+  EXPECT_TRUE(contains(m.err, "maximum angle")) << m.err;
+}
+
+TEST_F(RefineCli, MissingInputNamesThePath) {
+  const std::string missing = dir_.file("nowhere.poly");
+  const CommandResult r = meshstep("refine " + missing);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(contains(r.err, "meshstep: error: " + missing)) << r.err;
+}
+
+TEST_F(RefineCli, SizeGridIsNotImplemented) {
+  const std::string input = write("ell.poly", kLShape);
+  const CommandResult r = meshstep("refine " + input + " --size abc");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(contains(r.err, "not implemented")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_.file("ell.1.node")));
+}
+
+TEST_F(RefineCli, ReRefiningAMeshIsNotImplemented) {
+  const std::string input = write("ell.poly", kLShape);
+  const std::string prefix = dir_.file("ellmesh");
+  ASSERT_EQ(meshstep("triangulate " + input + " -q -o " + prefix).status, 0);
+  const CommandResult r = meshstep("refine " + prefix);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(contains(r.err, "re-refinement")) << r.err;
+  EXPECT_TRUE(contains(r.err, "not implemented")) << r.err;
+  // Without the mesh files, a name with no known extension is an unknown file type.
+  const CommandResult u = meshstep("refine " + dir_.file("nothing"));
+  EXPECT_EQ(u.status, 1);
+  EXPECT_FALSE(contains(u.err, "re-refinement")) << u.err;
+}
+
+TEST_F(RefineCli, MaxSteinerStopsAtTheCap) {
+  const std::string input = write("hole.poly", kSquareWithHole);
+  const CommandResult r = meshstep("refine " + input + " --min-angle 33 --max-area 0.01 --max-steiner 5 "
+                                   "--no-output --stats json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string json = last_line(r.out);
+  EXPECT_EQ(json_value(json, "stopped_by_cap"), "true") << json;
+  EXPECT_EQ(json_value(json, "bounds_met"), "false") << json;
+  EXPECT_LE(json_number(json, "steiner"), 5.0) << json;
+  EXPECT_GT(json_number(json, "bad_triangles"), 0.0) << json;
+  EXPECT_TRUE(contains(r.err, "warning")) << r.err;
+  EXPECT_TRUE(contains(r.err, "--max-steiner")) << r.err;
+  EXPECT_TRUE(contains(r.out, "bounds missed by")) << r.out;
+  EXPECT_FALSE(fs::exists(dir_.file("hole.1.node")));  // --no-output
+}
+
+TEST_F(RefineCli, RecordedRunVerifies) {
+  const std::string input = write("hole.poly", kSquareWithHole);
+  const std::string log = dir_.file("hole.mslog");
+  const std::string prefix = dir_.file("hole_q");
+  const CommandResult r =
+      meshstep("refine " + input + " --algorithm offcenter --min-angle 30 --record " + log + " -o " + prefix);
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_TRUE(fs::exists(log));
+  EXPECT_FALSE(fs::exists(log + ".partial"));
+  const CommandResult v = meshstep("log verify " + log);
+  EXPECT_EQ(v.status, 0) << v.out << v.err;
+  const CommandResult info = meshstep("log info " + log);
+  ASSERT_EQ(info.status, 0) << info.err;
+  EXPECT_TRUE(contains(info.out, "offcenter")) << info.out;
+  EXPECT_TRUE(contains(info.out, "min_angle=30")) << info.out;
+  // The log's last step is the mesh that was written.
+  const std::string replayed = dir_.file("replayed");
+  ASSERT_EQ(meshstep("log mesh " + log + " --step -1 -o " + replayed).status, 0);
+  const TriMesh a = io::read_mesh(prefix), b = io::read_mesh(replayed);
+  EXPECT_EQ(a.points.size(), b.points.size());
+  EXPECT_EQ(a.triangles.size(), b.triangles.size());
+}
+
+TEST_F(RefineCli, ListShowsEveryPart) {
+  const CommandResult r = meshstep("list");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* name : {"circumcenter", "offcenter", "tds", "dcel", "flip", "cavity", "min-angle", ".poly",
+                           "Algorithms", "Data structures"})
+    EXPECT_TRUE(contains(r.out, name)) << name << " in " << r.out;
+  const CommandResult j = meshstep("list --json");
+  ASSERT_EQ(j.status, 0) << j.err;
+  const std::string json = last_line(j.out);
+  EXPECT_EQ(j.out, json + "\n");  // one line
+  ASSERT_EQ(json.front(), '{');
+  ASSERT_EQ(json.back(), '}');
+  for (const char* part : {"\"algorithms\":[", "\"selections\":[", "\"insertions\":[", "\"criteria\":[",
+                           "\"data_structures\":[", "\"file_formats\":[", "\"name\":\"offcenter\"",
+                           "\"name\":\"dcel\"", "\"default_min_angle\":"})
+    EXPECT_TRUE(contains(json, part)) << part << " in " << json;
+}
+
+TEST_F(RefineCli, HelpExplains) {
+  const CommandResult r = meshstep("refine --help");
+  EXPECT_EQ(r.status, 0);
+  for (const char* option : {"--algorithm", "--min-angle", "--max-area", "--size", "--select", "--record",
+                             "--stats", "assets/examples/plate.poly"})
+    EXPECT_TRUE(contains(r.out, option)) << option;
+  const CommandResult top = meshstep("--help");
+  EXPECT_TRUE(contains(top.out, "refine")) << top.out;
+  EXPECT_TRUE(contains(top.out, "list")) << top.out;
+}
+
+}  // namespace
+}  // namespace meshstep
