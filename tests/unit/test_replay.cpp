@@ -1000,9 +1000,8 @@ void check_partial_prefix(const std::string& partial, const std::vector<std::uin
   r.seek_event(log.event_count());
   EXPECT_EQ(r.position(), log.event_count());
   EXPECT_EQ(r.hash(), replay::mesh_hash(r.slots()));
-  if (const auto k = boundary_at(log, log.event_count()); k && *k < hashes.size()) {
-    EXPECT_EQ(r.hash(), hashes[*k]) << "at the end of the prefix";
-  }
+  // (The prefix ends where a block ended, usually in the middle of a step: the step
+  // boundaries above are where it meets the observed meshes.)
   // Its keyframes (whichever the writer's thread has written so far) are the algorithm's
   // mesh at their step boundaries; the end-of-run keyframe is not there.
   replay::Replay walk(log, /*track_hash=*/true);
