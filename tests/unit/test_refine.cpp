@@ -162,6 +162,20 @@ TEST(RefineNamedInputs, OffcenterAndCircumcenterReach33DegreesOnAAndGuitar) {
   }
 }
 
+// Off-centers place the new vertex no farther than the bound needs: on guitar.poly at 30
+// degrees they save at least a quarter of the circumcenter's Steiner vertices (the issue's
+// yardstick, after Ungor's paper).
+TEST(RefineNamedInputs, OffcentersSaveAQuarterOfTheSteinerPointsOnGuitar) {
+  SKIP_WITHOUT_SHARED_DATA("guitar.poly");
+  const Pslg in = io::read_pslg(shared_poly("guitar.poly"));
+  RefineReport circumcenter, offcenter;
+  refine_checked(in, with_angle(30.0, Selection::circumcenter), circumcenter);
+  refine_checked(in, with_angle(30.0, Selection::offcenter), offcenter);
+  ASSERT_TRUE(circumcenter.bounds_met && offcenter.bounds_met);
+  EXPECT_LE(static_cast<double>(offcenter.steiner_vertices), 0.75 * static_cast<double>(circumcenter.steiner_vertices))
+      << offcenter.steiner_vertices << " off-center vs " << circumcenter.steiner_vertices << " circumcenter Steiner vertices";
+}
+
 // la.poly has input angles of a few degrees: the misses are all near them, and counted.
 TEST(RefineNamedInputs, SmallInputAnglesAreExplainedNotHidden) {
   SKIP_WITHOUT_SHARED_DATA("la.poly");

@@ -290,7 +290,9 @@ class Refiner {
     const Point &p = *v[s.shortest_edge], &q = *v[(s.shortest_edge + 1) % 3];
     const Point m{(p.x + q.x) / 2.0, (p.y + q.y) / 2.0};
     const double l = std::sqrt(s.shortest2), beta = criteria_.offcenter_beta;
-    const double h = l * (beta + std::sqrt(beta * beta - 0.25));
+    // 5% short of the apex whose triangle is exactly at the bound, as Triangle does: at the
+    // bound itself, rounding leaves some new triangles a hair below it, and they come back.
+    const double h = 0.95 * l * (beta + std::sqrt(beta * beta - 0.25));
     const double dx = center.x - m.x, dy = center.y - m.y, dm = std::sqrt(dx * dx + dy * dy);
     if (!(dm > h)) return center;
     return {m.x + dx * h / dm, m.y + dy * h / dm};
