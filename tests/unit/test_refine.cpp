@@ -95,24 +95,6 @@ TriMesh refine_checked(const Pslg& in, const RefineOptions& o, RefineReport& rep
   return m;
 }
 
-// The corpus of shared inputs (skipped with a message when absent).
-std::vector<std::string> corpus() {
-  std::vector<std::string> files;
-  const fs::path dir = testing::shared_data() / "pslg";
-  if (!fs::is_directory(dir)) return files;
-  for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.path().extension() == ".poly") files.push_back(entry.path().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-std::string file_test_name(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name = fs::path(info.param).filename().string();
-  for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  return name;
-}
-
 // earcut_water-huge2 has overlapping collinear segments: after refinement a few vertices split
 // on one segment lie exactly on another that overlaps it, and the checker finds that one
 // covered by an edge that is not a segment. Known, left for the next round (see the notes).
@@ -138,7 +120,7 @@ TEST_P(RefineCorpus, MeetsTheBoundAwayFromSmallInputAngles) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(RefineSharedDataSlow, RefineCorpus, ::testing::ValuesIn(corpus()), file_test_name);
+INSTANTIATE_TEST_SUITE_P(RefineSharedDataSlow, RefineCorpus, ::testing::ValuesIn(testing::corpus_polys()), testing::corpus_test_name);
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(RefineCorpus);
 
 std::string shared_poly(const std::string& name) { return (testing::shared_data() / "pslg" / name).string(); }

@@ -671,22 +671,8 @@ TEST(ReplayConvexHull, ReplaysEveryStepEverywhere) {
 INSTANTIATE_TEST_SUITE_P(ReplayGenerated, ReplayRun, ::testing::ValuesIn(generated_inputs()),
                          [](const ::testing::TestParamInfo<NamedInput>& info) { return info.param.name; });
 
-std::vector<std::string> corpus_polys() {
-  std::vector<std::string> files;
-  const fs::path dir = testing::shared_data() / "pslg";
-  if (!fs::is_directory(dir)) return files;
-  for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.path().extension() == ".poly") files.push_back(entry.path().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-// "p2t_tank.poly" -> "p2t_tank_poly": a test name for a corpus file.
-std::string corpus_test_name(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name = fs::path(info.param).filename().string();
-  std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
-  return name;
-}
+using testing::corpus_polys;
+using testing::corpus_test_name;
 
 class ReplayCorpus : public ::testing::TestWithParam<std::string> {};
 

@@ -1,9 +1,12 @@
 // Helpers shared by the triangulation tests: run every data structure x insertion
-// strategy, check each result independently, and demand identical triangle sets.
+// strategy, check each result independently, and demand identical triangle sets; the
+// shared corpus.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -59,5 +62,24 @@ inline TriMesh triangulate_everywhere(const Pslg& input, bool convex_hull = fals
 }
 
 inline std::filesystem::path shared_data() { return MESHSTEP_SHARED_DATA; }
+
+// The .poly files of the shared corpus, sorted (none when it is absent: the suites that use
+// them then have no instances and say so).
+inline std::vector<std::string> corpus_polys() {
+  std::vector<std::string> files;
+  const std::filesystem::path dir = shared_data() / "pslg";
+  if (!std::filesystem::is_directory(dir)) return files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.path().extension() == ".poly") files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// "p2t_tank.poly" -> "p2t_tank_poly": a test name for a corpus file.
+inline std::string corpus_test_name(const ::testing::TestParamInfo<std::string>& info) {
+  std::string name = std::filesystem::path(info.param).filename().string();
+  std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+  return name;
+}
 
 }  // namespace meshstep::testing

@@ -432,7 +432,7 @@ class Refiner {
     // p is rounded, a hair off the segment's line: the edges from it are not Delaunay by
     // construction as they would be for a point exactly on the line, so check them too.
     stack_.clear();
-    for_each_out(out, [&](HalfEdge e) {
+    tri_.for_each_out_edge(out, [&](HalfEdge e) {
       stack_.push_back(e);
       stack_.push_back(mesh_.next(e));
     });
@@ -514,22 +514,6 @@ class Refiner {
     return start;
   }
 
-  template <class F>
-  void for_each_out(HalfEdge out, F&& f) const {
-    HalfEdge h = out;
-    do {
-      f(h);
-      const HalfEdge t = mesh_.twin(mesh_.prev(h));
-      if (t == kNone) {
-        for (HalfEdge g = mesh_.twin(out); g != kNone; g = mesh_.twin(g)) {
-          g = mesh_.next(g);
-          f(g);
-        }
-        return;
-      }
-      h = t;
-    } while (h != out);
-  }
 
   // Input vertices where two segments meet at less than 60 degrees: refinement cannot make
   // the triangles there meet the bounds, and the report says so.

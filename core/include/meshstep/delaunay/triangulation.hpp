@@ -241,6 +241,28 @@ class Triangulation {
     }
   }
 
+  // Calls f for every half-edge leaving origin(out), going counterclockwise; on a boundary
+  // also clockwise from out.
+  template <class F>
+  void for_each_out_edge(HalfEdge out, F&& f) const {
+    HalfEdge h = out;
+    do {
+      f(h);
+      const HalfEdge t = mesh_.twin(mesh_.prev(h));
+      if (t == kNone) {
+        // Open fan: go the other way from `out`.
+        HalfEdge g = out;
+        for (;;) {
+          const HalfEdge u = mesh_.twin(g);
+          if (u == kNone) return;
+          g = mesh_.next(u);
+          f(g);
+        }
+      }
+      h = t;
+    } while (h != out);
+  }
+
  private:
   // Ghost-aware conflict test of point p against the counterclockwise face (a, b, c).
   bool in_conflict(VertexId a, VertexId b, VertexId c, const Point& p) const {
@@ -300,28 +322,6 @@ class Triangulation {
       stack_.push_back(mesh_.next(e));
       stack_.push_back(mesh_.prev(mesh_.twin(e)));
     }
-  }
-
-  // Calls f for every half-edge leaving origin(out), going counterclockwise; on a boundary
-  // also clockwise from out.
-  template <class F>
-  void for_each_out_edge(HalfEdge out, F&& f) const {
-    HalfEdge h = out;
-    do {
-      f(h);
-      const HalfEdge t = mesh_.twin(mesh_.prev(h));
-      if (t == kNone) {
-        // Open fan: go the other way from `out`.
-        HalfEdge g = out;
-        for (;;) {
-          const HalfEdge u = mesh_.twin(g);
-          if (u == kNone) return;
-          g = mesh_.next(u);
-          f(g);
-        }
-      }
-      h = t;
-    } while (h != out);
   }
 
   [[gnu::flatten]] HalfEdge insert_by_cavity(VertexId v, const Location& loc) {

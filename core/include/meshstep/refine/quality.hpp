@@ -58,7 +58,7 @@ struct Shape {
   }
 };
 
-inline Shape shape(const Point& a, const Point& b, const Point& c) {
+[[gnu::always_inline]] inline Shape shape(const Point& a, const Point& b, const Point& c) {
   Shape s;
   s.area = 0.5 * twice_area(a, b, c);
   const double l[3] = {squared_distance(a, b), squared_distance(b, c), squared_distance(c, a)};
