@@ -193,6 +193,12 @@ int run_refine(const RefineArgs& args) {
                         (options.encroachment == Encroachment::lens ? "lens" : "circle") + " encroachment, " +
                         to_string(options.triangulate.data_structure) + ", " +
                         to_string(options.triangulate.insertion) + "); " + bounds_text);
+    if (verbosity != Verbosity::quiet) {
+      options.progress = [](const RefineProgress& p) {
+        std::fprintf(stderr, "meshstep: refining: %zu Steiner vertices, %zu triangles, %zu waiting (%.0f s)\n",
+                     p.steiner_vertices, p.triangles, p.queued, p.seconds);
+      };
+    }
     std::unique_ptr<replay::LogWriter> log;
     if (!args.record.empty()) {
       log = open_log(args.record, args.input, options.algorithm,

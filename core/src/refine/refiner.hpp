@@ -18,6 +18,7 @@
 #pragma once
 
 #include <algorithm>
+#include <chrono>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -72,7 +73,17 @@ class Refiner {
     }
     sort_suspects(segments_.begin(), segments_.end());
     check_faces(faces);
-    while (!capped()) {
+    const auto started = std::chrono::steady_clock::now();
+    auto last_report = started;
+    for (std::uint64_t round = 1; !capped(); ++round) {
+      if (options_.progress && round % 4096 == 0) {
+        const auto now = std::chrono::steady_clock::now();
+        if (now - last_report >= std::chrono::seconds(1)) {
+          last_report = now;
+          options_.progress({tri_.points().size() - input_count_, mesh_.face_count(), queued() + segments_.size(),
+                             std::chrono::duration<double>(now - started).count()});
+        }
+      }
       if (!segments_.empty()) {
         const Suspect suspect = segments_.back();
         segments_.pop_back();
@@ -262,6 +273,12 @@ class Refiner {
     buckets_[lowest_].pop_back();
     return true;
   }
+  std::size_t queued() const {
+    std::size_t n = fifo_.size();
+    for (std::size_t b = lowest_; b < kBuckets; ++b) n += buckets_[b].size();
+    return n;
+  }
+
   bool still_there(const Candidate& c) const {
     if (!mesh_.is_live(c.face)) return false;
     const HalfEdge h = first_edge(c.face);

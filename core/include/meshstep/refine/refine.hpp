@@ -41,6 +41,14 @@ struct RefineCriteria {
   std::size_t max_steiner = 0;    // stop after inserting this many vertices; 0: none
 };
 
+// Where a long run stands (RefineOptions::progress).
+struct RefineProgress {
+  std::size_t steiner_vertices = 0;
+  std::size_t triangles = 0;
+  std::size_t queued = 0;  // bad triangles and suspect subsegments waiting
+  double seconds = 0.0;    // since refinement began
+};
+
 struct RefineOptions {
   std::string algorithm = "circumcenter";  // for the record and the report
   Selection selection = Selection::circumcenter;
@@ -48,6 +56,8 @@ struct RefineOptions {
   RefineOrder order = RefineOrder::worst_first;
   Encroachment encroachment = Encroachment::circle;
   TriangulateOptions triangulate;  // data structure, insertion, convex hull, recording
+  // Called about once a second during a long refinement (not at all for a short one).
+  std::function<void(const RefineProgress&)> progress;
 };
 
 struct RefineReport {
