@@ -129,6 +129,26 @@ class Builder {
     for (const auto& [a, b] : new_boundary_) all.push_back({a, b, 1});
     return all;
   }
+  // After an algorithm changed the faces: the region attributes again, each region flooded
+  // from the live face that holds its point (the faces are new, and some reuse slots that
+  // carving emptied, so nothing of the first assignment carries over).
+  void reassign_regions() {
+    if (in_.regions.empty()) return;
+    const Mesh& m = tri_.mesh();
+    attribute_.assign(m.face_capacity(), 0.0);
+    max_area_.assign(m.face_capacity(), -1.0);
+    std::vector<std::uint32_t> region_of(m.face_capacity(), 0);
+    for (std::size_t i = 0; i < in_.regions.size(); ++i) {
+      const Region& r = in_.regions[i];
+      const FaceId f = live_face_holding(scaled(r.point));
+      if (f == kNone) continue;
+      flood(f, region_of, static_cast<std::uint32_t>(i + 1), [&](FaceId g) {
+        attribute_[g] = r.attribute;
+        max_area_[g] = r.max_area;
+      });
+    }
+  }
+
   // An algorithm that split the boundary gives its pieces back for the output.
   void set_boundary_segments(std::vector<Segment> segments) {
     kept_segments_ = std::move(segments);
@@ -182,6 +202,19 @@ class Builder {
   }
 
   Point scaled(const Point& p) const { return {std::ldexp(p.x, exponent_), std::ldexp(p.y, exponent_)}; }
+
+  // A live face whose closed triangle holds p, by looking at every face (kNone: outside the
+  // domain). For the few region points, on a carved mesh that a walk could leave.
+  FaceId live_face_holding(const Point& p) const {
+    const Mesh& m = tri_.mesh();
+    for (FaceId f = 0; f < m.face_capacity(); ++f) {
+      if (!m.is_live(f)) continue;
+      const HalfEdge h = m.half_edge(f);
+      const Point &a = tri_.point(m.origin(h)), &b = tri_.point(m.dest(h)), &c = tri_.point(m.apex(h));
+      if (orient2d(a, b, p) >= 0.0 && orient2d(b, c, p) >= 0.0 && orient2d(c, a, p) >= 0.0) return f;
+    }
+    return kNone;
+  }
 
   // The face holding p (a hole or region point), found by walking from any live face.
   FaceId face_at(const Point& p) const {

@@ -72,6 +72,7 @@ TriMesh refine_with(Pslg& input, const RefineOptions& options, RefineReport& rep
                                      scaled(options, builder.exponent()), options);
   refiner.run(report);
   builder.set_boundary_segments(refiner.boundary());
+  builder.reassign_regions();
   report.steiner_vertices = builder.triangulation().points().size() - builder.input_count();
   TriMesh out = builder.finish();
   report.refine_ms = ms_since(refine_start);
@@ -100,7 +101,15 @@ TriMesh refine(Pslg input, const RefineOptions& options, RefineReport* report) {
   throw std::logic_error("unknown data structure");
 }
 
-const char* to_string(Selection s) { return s == Selection::circumcenter ? "circumcenter" : "offcenter"; }
+const char* to_string(Selection s) {
+  switch (s) {
+    case Selection::circumcenter: return "circumcenter";
+    case Selection::offcenter: return "offcenter";
+    case Selection::lepp_midpoint: return "lepp-midpoint";
+    case Selection::lepp_centroid: return "lepp-centroid";
+  }
+  return "?";
+}
 const char* to_string(RefineOrder o) { return o == RefineOrder::worst_first ? "worst" : "fifo"; }
 
 }  // namespace meshstep

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "meshstep/delaunay/triangulation.hpp"
+#include "meshstep/refine/lepp.hpp"
 #include "meshstep/refine/quality.hpp"
 #include "meshstep/refine/refine.hpp"
 
@@ -166,9 +167,7 @@ class Refiner {
     std::sort(begin, end, [](const Suspect& s, const Suspect& t) { return key(s.a, s.b) < key(t.a, t.b); });
   }
 
-  static std::uint64_t key(VertexId a, VertexId b) {
-    return a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
-  }
+  static std::uint64_t key(VertexId a, VertexId b) { return edge_tie_key(a, b); }
 
   bool is_segment(HalfEdge h) const { return mesh_.twin(h) == kNone || mesh_.is_constrained(h); }
   const Point& point(VertexId v) const { return tri_.point(v); }
@@ -286,7 +285,7 @@ class Refiner {
   }
 
   // The point a bad triangle asks for, and the alternative weighed against it.
-  Point select(const Candidate& c, Point& alternative) const {
+  Point select(const Candidate& c, Point& alternative) {
     const Point &pa = point(c.a), &pb = point(c.b), &pc = point(c.c);
     Point center = quality::circumcenter(pa, pb, pc);
     const quality::Shape s = quality::shape(pa, pb, pc);
@@ -299,6 +298,10 @@ class Refiner {
       center = {(p.x + q.x) / 2.0, (p.y + q.y) / 2.0};
     }
     alternative = center;
+    if (lepp_selection()) {
+      const Point p = lepp_point(c.face);
+      if (!too_close_to_terminal_vertices(p, s.shortest2)) return p;
+    }
     if (options_.selection == Selection::circumcenter || criteria_.offcenter_beta <= 0.0) return center;
     // Off-center: on the bisector of the shortest edge pq, at the apex of the isosceles
     // triangle over pq whose radius-edge ratio is exactly the bound, when that is closer
@@ -313,6 +316,46 @@ class Refiner {
     const double dx = center.x - m.x, dy = center.y - m.y, dm = std::sqrt(dx * dx + dy * dy);
     if (!(dm > h)) return center;
     return {m.x + dx * h / dm, m.y + dy * h / dm};
+  }
+
+  // A terminal point nearer a terminal triangle's vertex than the bad triangle's shortest
+  // edge (a terminal triangle so flat, next to a segment, that its centroid hugs a vertex)
+  // would only make smaller triangles there, and so on down to the precision floor: the
+  // bad triangle's own point is used instead.
+  bool too_close_to_terminal_vertices(const Point& p, double shortest2) const {
+    for (std::size_t i = lepp_faces_.size() >= 2 ? lepp_faces_.size() - 2 : 0; i < lepp_faces_.size(); ++i) {
+      const HalfEdge h = mesh_.half_edge(lepp_faces_[i]);
+      for (const VertexId v : {mesh_.origin(h), mesh_.dest(h), mesh_.apex(h)})
+        if (quality::squared_distance(p, point(v)) < shortest2) return true;
+    }
+    return false;
+  }
+
+  bool lepp_selection() const {
+    return options_.selection == Selection::lepp_midpoint || options_.selection == Selection::lepp_centroid;
+  }
+
+  HalfEdge lepp(FaceId f) {
+    return meshstep::lepp(mesh_, tri_.points(), f, [this](HalfEdge h) { return is_segment(h); }, lepp_faces_);
+  }
+
+  Point lepp_point(FaceId f) {
+    const HalfEdge e = lepp(f);
+    const Point &a = point(mesh_.origin(e)), &b = point(mesh_.dest(e));
+    const bool boundary = is_segment(e);
+    if constexpr (Rec::enabled) {
+      lepp_vertices_.clear();
+      for (const FaceId g : lepp_faces_) {
+        const HalfEdge h = mesh_.half_edge(g);
+        lepp_vertices_.insert(lepp_vertices_.end(), {mesh_.origin(h), mesh_.dest(h), mesh_.apex(h)});
+      }
+      tri_.recorder().lepp_path(mesh_.origin(e), mesh_.dest(e), boundary ? 1 : 2, lepp_vertices_);
+    }
+    if (boundary || options_.selection == Selection::lepp_midpoint) return {(a.x + b.x) / 2.0, (a.y + b.y) / 2.0};
+    // The centroid of the two terminal triangles (a, b, c) and (b, a, d): the mean of their
+    // centroids.
+    const Point &c = point(mesh_.apex(e)), &d = point(mesh_.apex(mesh_.twin(e)));
+    return {(2.0 * (a.x + b.x) + c.x + d.x) / 6.0, (2.0 * (a.y + b.y) + c.y + d.y) / 6.0};
   }
 
   struct WalkResult {
@@ -390,7 +433,9 @@ class Refiner {
   void fix(const Candidate& c) {
     Point alternative;
     const Point p = select(c, alternative);
-    const WalkResult w = walk(c.face, p);
+    // A Lepp point is located from its terminal triangle: the straight line from the bad
+    // triangle to it may cross a segment that the path went around.
+    const WalkResult w = walk(lepp_selection() ? lepp_faces_.back() : c.face, p);
     if (w.kind == WalkResult::Kind::on_vertex) return;  // a vertex there already: left as it is
     if (w.kind == WalkResult::Kind::blocked || (w.kind == WalkResult::Kind::on_edge && is_segment(w.h))) {
       ++rejected_;
@@ -420,6 +465,8 @@ class Refiner {
     const HalfEdge out = tri_.insert_in_step(v, w.h);
     ++triangles_split_;
     after_insertion(out);
+    // A Lepp point may land away from the bad triangle: it stays queued until it is gone.
+    if (lepp_selection()) requeue(c);
   }
 
   void requeue(const Candidate& c) {
@@ -599,6 +646,8 @@ class Refiner {
   std::size_t lowest_ = kBuckets;
   std::deque<Candidate> fifo_;
   std::vector<FaceId> star_;
+  std::vector<FaceId> lepp_faces_;
+  std::vector<VertexId> lepp_vertices_;
   HalfEdge star_start_ = kNone;
   std::vector<FaceId> cavity_;
   std::vector<HalfEdge> stack_;
@@ -607,3 +656,4 @@ class Refiner {
 };
 
 }  // namespace meshstep::detail
+

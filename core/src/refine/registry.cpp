@@ -16,11 +16,21 @@ constexpr std::array kAlgorithms = {
                   "Ungor's off-centers: on the shortest edge's bisector, only as far as the angle "
                   "bound needs; otherwise as circumcenter",
                   Selection::offcenter, 20.7},
+    AlgorithmInfo{"lepp-midpoint",
+                  "Rivara's Lepp-Delaunay: follow longest edges from the bad triangle to a terminal "
+                  "edge, insert its midpoint, repeat until the triangle is gone",
+                  Selection::lepp_midpoint, 20.7},
+    AlgorithmInfo{"lepp-centroid",
+                  "Lepp-Delaunay inserting the centroid of the two terminal triangles instead "
+                  "(the terminal edge's midpoint on the boundary)",
+                  Selection::lepp_centroid, 20.7},
 };
 
 constexpr std::array kSelections = {
     PartInfo{"circumcenter", "the bad triangle's circumcenter"},
     PartInfo{"offcenter", "the off-center of the bad triangle's shortest edge (Ungor), or its circumcenter if nearer"},
+    PartInfo{"lepp-midpoint", "the midpoint of the terminal edge of the bad triangle's longest-edge propagation path"},
+    PartInfo{"lepp-centroid", "the centroid of the terminal triangles of that path (on the boundary: the edge's midpoint)"},
 };
 
 constexpr std::array kInsertions = {
@@ -70,6 +80,8 @@ std::span<const PartInfo> file_formats() { return kFileFormats; }
 std::optional<Selection> parse_selection(std::string_view name) {
   if (name == "circumcenter") return Selection::circumcenter;
   if (name == "offcenter") return Selection::offcenter;
+  if (name == "lepp-midpoint") return Selection::lepp_midpoint;
+  if (name == "lepp-centroid") return Selection::lepp_centroid;
   return std::nullopt;
 }
 

@@ -21,6 +21,8 @@ namespace meshstep {
 enum class Selection {
   circumcenter,  // Ruppert / Chew
   offcenter,     // Ungor: on the bisector of the shortest edge, no farther than needed
+  lepp_midpoint, // Rivara: the midpoint of the terminal edge of the triangle's Lepp
+  lepp_centroid, // Rivara et al.: the centroid of the two terminal triangles of the Lepp
 };
 
 enum class RefineOrder { worst_first, fifo };

@@ -76,6 +76,7 @@ struct NullRecorder {
   void locate(VertexId, std::uint32_t, FaceId, LocateResult) {}
   void point_selected(std::uint8_t, VertexId, VertexId, VertexId, const Point&, std::span<const Point>) {}
   void encroached(VertexId, VertexId, VertexId, const Point&) {}
+  void lepp_path(VertexId, VertexId, std::uint32_t, std::span<const VertexId>) {}
 };
 
 class Recorder {
@@ -244,6 +245,15 @@ class Recorder {
     sink_->put(0u);  // no list
     sink_->put(static_cast<std::uint32_t>(alternatives.size()));
     for (const Point& p : alternatives) put_point(p);
+    end_event();
+  }
+  // A longest-edge propagation path: its terminal edge a-b, how many terminal triangles
+  // (1 on the boundary, else 2), and the path's triangles, three vertex ids each.
+  void lepp_path(VertexId a, VertexId b, std::uint32_t terminal_triangles, std::span<const VertexId> triangles) {
+    begin(EventType::lepp_path, 0);
+    ids(a, b, terminal_triangles);
+    sink_->put(static_cast<std::uint32_t>(triangles.size()));
+    for (const VertexId v : triangles) sink_->put(v);
     end_event();
   }
   // Segment a-b is encroached by vertex v (kNone: by a point not inserted, p).
