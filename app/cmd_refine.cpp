@@ -104,6 +104,11 @@ std::string names_of_algorithms() {
   return names;
 }
 
+// The insertion as the user chose it: bisection, or the triangulation's flips or cavity.
+std::string insertion_name(const RefineOptions& o) {
+  return o.insertion == RefineInsertion::bisection ? "bisection" : to_string(o.triangulate.insertion);
+}
+
 int run_refine(const RefineArgs& args) {
   const Verbosity verbosity =
       args.quiet ? Verbosity::quiet : args.verbose ? Verbosity::verbose : Verbosity::normal;
@@ -126,6 +131,7 @@ int run_refine(const RefineArgs& args) {
   options.encroachment = args.encroachment == "lens" ? Encroachment::lens : Encroachment::circle;
   options.triangulate.data_structure = args.ds == "dcel" ? DataStructure::dcel : DataStructure::tds;
   options.triangulate.insertion = args.insertion == "cavity" ? Insertion::cavity : Insertion::flip;
+  if (args.insertion == "bisection") options.insertion = RefineInsertion::bisection;
   options.triangulate.convex_hull = args.convex_hull;
 
   RefineCriteria& criteria = options.criteria;
@@ -146,7 +152,17 @@ int run_refine(const RefineArgs& args) {
   }
   bool any_bound = false;
   for (const CLI::Option* o : args.bounds) any_bound = any_bound || o->count() > 0;
-  if (!any_bound) criteria.min_angle_deg = algorithm->default_min_angle_deg;
+  if (!any_bound) {
+    criteria.min_angle_deg = algorithm->default_min_angle_deg;
+    criteria.max_aspect = algorithm->default_max_aspect;
+  }
+  if (criteria.min_angle_deg <= 0.0 && criteria.max_angle_deg >= 180.0 && criteria.max_aspect <= 0.0 &&
+      criteria.max_area <= 0.0 && !criteria.size) {
+    print_error(std::string(algorithm->name) + " needs a bound: --max-area or --size" +
+                (algorithm->insertion == RefineInsertion::bisection ? "" : " (or an angle or aspect bound)"));
+    return kExitUsage;
+  }
+  if (algorithm->aspect_then_angle) options.phases = aspect_then_angle_phases(criteria, *algorithm);
 
   // A mesh prefix (PREFIX.node + PREFIX.ele) rather than an input file.
   if (!ends_with(args.input, ".poly") && !ends_with(args.input, ".node")) {
@@ -192,7 +208,7 @@ int run_refine(const RefineArgs& args) {
                         to_string(options.selection) + ", " + to_string(options.order) + " order, " +
                         (options.encroachment == Encroachment::lens ? "lens" : "circle") + " encroachment, " +
                         to_string(options.triangulate.data_structure) + ", " +
-                        to_string(options.triangulate.insertion) + "); " + bounds_text);
+                        insertion_name(options) + "); " + bounds_text);
     if (verbosity != Verbosity::quiet) {
       options.progress = [](const RefineProgress& p) {
         std::fprintf(stderr, "meshstep: refining: %zu Steiner vertices, %zu triangles, %zu waiting (%.0f s)\n",
@@ -210,7 +226,7 @@ int run_refine(const RefineArgs& args) {
                          " size=" + number(criteria.size ? size : 0.0) +
                          " max_triangles=" + std::to_string(criteria.max_triangles) +
                          " max_steiner=" + std::to_string(criteria.max_steiner) +
-                         " order=" + to_string(options.order) +
+                         " order=" + to_string(options.order) + " insertion=" + insertion_name(options) +
                          " encroachment=" + (options.encroachment == Encroachment::lens ? "lens" : "circle") +
                          " input_vertices=" + std::to_string(input_vertices) +
                          " first_index=" + std::to_string(input.first_index) +
@@ -275,6 +291,11 @@ int run_refine(const RefineArgs& args) {
                 report.triangulation.mesh_bytes / 1048576.0);
     std::printf("  time: read %.1f ms, triangulate %.1f ms, refine %.1f ms, write %.1f ms\n", read_ms,
                 report.triangulate_ms, report.refine_ms, write_ms);
+    if (report.phase_ms.size() > 1) {
+      std::printf("  phases:");
+      for (const auto& [name, phase_ms] : report.phase_ms) std::printf(" %s %.1f ms", name.c_str(), phase_ms);
+      std::printf("\n");
+    }
   }
   if (args.stats == "json") {
     JsonLine ms;
@@ -282,6 +303,9 @@ int run_refine(const RefineArgs& args) {
         .field("triangulate", report.triangulate_ms)
         .field("refine", report.refine_ms)
         .field("write", write_ms);
+    JsonLine phases;  // the refinement's phases: one, "refine", unless the algorithm has several
+    for (const auto& [name, phase_ms] : report.phase_ms) phases.field(name, phase_ms);
+    ms.object("phases", phases);
     JsonLine stats;
     stats.field("input", args.input)
         .field("algorithm", options.algorithm)
@@ -308,7 +332,7 @@ int run_refine(const RefineArgs& args) {
         .field("min_angle", angles.min_angle_deg)
         .field("max_angle", angles.max_angle_deg)
         .field("ds", std::string(to_string(options.triangulate.data_structure)))
-        .field("insertion", std::string(to_string(options.triangulate.insertion)))
+        .field("insertion", insertion_name(options))
         .object("ms", ms);
     std::printf("%s\n", stats.str().c_str());
   }
@@ -365,8 +389,10 @@ Command add_refine_command(CLI::App& parent) {
       ->check(positive_number(false))
       ->type_name("N");
 
-  cmd->add_option("--insertion", args->insertion, "Point insertion: flip (Lawson) or cavity (Bowyer-Watson)")
-      ->check(CLI::IsMember({"flip", "cavity"}))
+  cmd->add_option("--insertion", args->insertion,
+                  "Point insertion: flip (Lawson) or cavity (Bowyer-Watson), or bisection (Lepp\n"
+                  "longest-edge bisection, not Delaunay; --max-area or --size only)")
+      ->check(CLI::IsMember({"flip", "cavity", "bisection"}))
       ->capture_default_str();
   cmd->add_option("--order", args->order, "Which bad triangle next: worst (smallest angle first) or fifo")
       ->check(CLI::IsMember({"worst", "fifo"}))

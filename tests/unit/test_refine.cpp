@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -87,9 +88,10 @@ TriMesh refine_checked(const Pslg& in, const RefineOptions& o, RefineReport& rep
   std::size_t below = 0;
   for (std::size_t t = 0; t < m.triangles.size(); ++t) below += min_angle_deg(m, t) < o.criteria.min_angle_deg - 1e-9;
   EXPECT_EQ(below, report.below_min_angle);
-  if (!report.stopped_by_cap)
+  if (!report.stopped_by_cap) {
     EXPECT_EQ(report.bad_triangles, report.bad_near_small_input_angle)
         << report.bad_triangles - report.bad_near_small_input_angle << " triangles miss the bounds away from small input angles";
+  }
   EXPECT_EQ(report.bounds_met, report.bad_triangles == 0);
   EXPECT_EQ(report.steiner_vertices, m.points.size() - in.points.size());  // duplicates stay in the output
   return m;
@@ -388,21 +390,101 @@ TEST(RefineCriteria, OutOfRangeCriteriaAreInputErrors) {
 }
 
 TEST(RefineRegistry, NamedAlgorithmsRunWithTheirParts) {
-  ASSERT_GE(algorithms().size(), 2u);
+  ASSERT_GE(algorithms().size(), 8u);
   for (const AlgorithmInfo& a : algorithms()) {
     SCOPED_TRACE(std::string(a.name));
     EXPECT_EQ(find_algorithm(a.name), &a);
     EXPECT_FALSE(a.description.empty());
     RefineOptions o = options_for(a);
     EXPECT_EQ(o.selection, a.selection);
+    EXPECT_EQ(o.insertion, a.insertion);
+    // Their defaults, as the command line applies them; an area bound for those without.
     o.criteria.min_angle_deg = a.default_min_angle_deg;
+    o.criteria.max_aspect = a.default_max_aspect;
+    if (a.default_min_angle_deg == 0.0 && a.default_max_aspect == 0.0) o.criteria.max_area = 0.5;
+    if (a.aspect_then_angle) o.phases = aspect_then_angle_phases(o.criteria, a);
     RefineReport report;
-    refine_checked(square_with_hole(), o, report);
+    if (a.insertion == RefineInsertion::bisection) {
+      CheckOptions conforming;
+      conforming.delaunay = false;
+      const CheckReport check = check_mesh(refine(square_with_hole(), o, &report), nullptr, conforming);
+      EXPECT_TRUE(check.ok) << check.problems.front();
+    } else {
+      refine_checked(square_with_hole(), o, report);
+    }
     EXPECT_TRUE(report.bounds_met);
+    EXPECT_GT(report.steiner_vertices, 0u);
+    EXPECT_EQ(report.phase_ms.size(), a.aspect_then_angle ? 2u : 1u);
   }
   EXPECT_EQ(find_algorithm("no-such"), nullptr);
   EXPECT_EQ(parse_selection("offcenter"), Selection::offcenter);
+  EXPECT_EQ(parse_selection("longest-edge-midpoint"), Selection::longest_edge_midpoint);
   EXPECT_FALSE(parse_selection("centroid").has_value());
+}
+
+double aspect(const TriMesh& m, std::size_t t) {
+  const Point &a = m.points[m.triangles[t][0]], &b = m.points[m.triangles[t][1]], &c = m.points[m.triangles[t][2]];
+  const double twice_area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  const double longest2 = std::max({(a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y),
+                                    (b.x - c.x) * (b.x - c.x) + (b.y - c.y) * (b.y - c.y),
+                                    (c.x - a.x) * (c.x - a.x) + (c.y - a.y) * (c.y - a.y)});
+  return longest2 / twice_area;
+}
+
+// midpoint-area, lepp-aspect and combined on the paper's inputs: each meets its bounds away
+// from small input angles, and everywhere on the inputs whose angles are all at least 30.
+TEST(RefineNamedAlgorithms, MidpointAreaLeppAspectAndCombined) {
+  for (const std::string name : {"A.poly", "guitar.poly", "la.poly", "face.poly"}) {
+    SKIP_WITHOUT_SHARED_DATA(name);
+    const Pslg in = io::read_pslg(shared_poly(name));
+    const bool all_angles_30 = smallest_input_angle_deg(in) >= 30.0;
+    const TriMesh cdt = triangulate(in);
+    double total_area = 0.0;
+    for (std::size_t t = 0; t < cdt.triangles.size(); ++t) total_area += area(cdt, t);
+    {
+      SCOPED_TRACE(name + " midpoint-area");
+      RefineOptions o = options_for(*find_algorithm("midpoint-area"));
+      o.criteria.max_area = total_area / 1000.0;
+      RefineReport report;
+      const TriMesh m = refine_checked(in, o, report);
+      EXPECT_TRUE(report.bounds_met);
+      EXPECT_GT(m.triangles.size(), 1000u);
+      for (std::size_t t = 0; t < m.triangles.size(); ++t) ASSERT_LE(area(m, t), o.criteria.max_area);
+    }
+    {
+      SCOPED_TRACE(name + " lepp-aspect");
+      RefineOptions o = options_for(*find_algorithm("lepp-aspect"));
+      o.criteria.max_aspect = kDefaultMaxAspect;
+      RefineReport report;
+      const TriMesh m = refine_checked(in, o, report);
+      if (all_angles_30) {
+        EXPECT_TRUE(report.bounds_met);
+        for (std::size_t t = 0; t < m.triangles.size(); ++t) ASSERT_LE(aspect(m, t), kDefaultMaxAspect * (1 + 1e-12));
+      }
+    }
+    {
+      SCOPED_TRACE(name + " combined");
+      const AlgorithmInfo& combined = *find_algorithm("combined");
+      RefineOptions o = options_for(combined);
+      o.criteria.min_angle_deg = 30.0;
+      o.phases = aspect_then_angle_phases(o.criteria, combined);
+      ASSERT_EQ(o.phases.size(), 2u);
+      EXPECT_EQ(o.phases[0].criteria.min_angle_deg, 0.0);
+      EXPECT_EQ(o.phases[1].criteria.max_aspect, 0.0);
+      std::vector<std::array<std::uint32_t, 3>> reference;
+      for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel}) {
+        o.triangulate.data_structure = ds;
+        RefineReport report;
+        const TriMesh m = refine_checked(in, o, report);
+        ASSERT_EQ(report.phase_ms.size(), 2u);
+        EXPECT_EQ(report.phase_ms[0].first, "aspect");
+        EXPECT_EQ(report.phase_ms[1].first, "min-angle");
+        if (all_angles_30) EXPECT_TRUE(report.bounds_met);
+        if (reference.empty()) reference = canonical(m);
+        else EXPECT_EQ(canonical(m), reference) << "dcel differs from tds";
+      }
+    }
+  }
 }
 
 // A recorded Lepp refinement carries each path: the triangles it visited and its terminal edge.

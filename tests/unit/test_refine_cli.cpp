@@ -118,6 +118,34 @@ TEST_F(RefineCli, MeetsThirtyDegreesAndWritesAValidMesh) {
   }
 }
 
+// lepp-bisection: driven by an area bound, not Delaunay but conforming (`check --no-delaunay`
+// accepts it); without a size bound, or with an angle bound, a clear error.
+TEST_F(RefineCli, LeppBisectionToAnAreaBound) {
+  const std::string input = write("hole.poly", kSquareWithHole);
+  const std::string prefix = dir_.file("bisected");
+  const CommandResult r =
+      meshstep("refine " + input + " --algorithm lepp-bisection --max-area 0.01 -o " + prefix + " --stats json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string json = last_line(r.out);
+  EXPECT_EQ(json_value(json, "bounds_met"), "true") << json;
+  EXPECT_EQ(json_value(json, "insertion"), "bisection") << json;
+  EXPECT_GE(json_number(json, "triangles"), 1200.0) << "12 square units at 0.01 each";
+  EXPECT_EQ(meshstep("check " + prefix + " --poly " + input + " --no-delaunay -q").status, 0);
+
+  const CommandResult none = meshstep("refine " + input + " --algorithm lepp-bisection -o " + prefix);
+  EXPECT_EQ(none.status, 2) << none.err;
+  EXPECT_TRUE(contains(none.err, "lepp-bisection needs a bound: --max-area or --size")) << none.err;
+  const CommandResult angle = meshstep("refine " + input + " --algorithm lepp-bisection --min-angle 25 -o " + prefix);
+  EXPECT_EQ(angle.status, 1) << angle.err;
+  EXPECT_TRUE(contains(angle.err, "cannot improve angles")) << angle.err;
+  // --insertion bisection composes with any selection-free run the same way.
+  const CommandResult composed =
+      meshstep("refine " + input + " --algorithm circumcenter --insertion bisection --max-area 0.01 -o " + prefix +
+               " --stats json");
+  ASSERT_EQ(composed.status, 0) << composed.err;
+  EXPECT_EQ(json_value(last_line(composed.out), "triangles"), json_value(json, "triangles"));
+}
+
 TEST_F(RefineCli, DefaultPrefixAndDefaultBound) {
   const std::string input = write("ell.poly", kLShape);
   const CommandResult r = meshstep("refine " + input + " --algorithm offcenter --stats json");

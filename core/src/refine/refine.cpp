@@ -10,6 +10,7 @@
 #include "meshstep/error.hpp"
 #include "meshstep/mesh/dcel.hpp"
 #include "meshstep/mesh/tds.hpp"
+#include "lepp_bisection.hpp"
 #include "refiner.hpp"
 
 namespace meshstep {
@@ -35,8 +36,7 @@ void check(const RefineCriteria& c) {
 }
 
 // The criteria in the triangulation's scaled coordinates.
-detail::ScaledCriteria scaled(const RefineOptions& o, int exponent) {
-  const RefineCriteria& c = o.criteria;
+detail::ScaledCriteria scaled(const RefineCriteria& c, int exponent) {
   detail::ScaledCriteria s;
   const double sin_min = std::sin(quality::radians(c.min_angle_deg));
   s.sin2_min_angle = sin_min * sin_min;
@@ -68,10 +68,24 @@ TriMesh refine_with(Pslg& input, const RefineOptions& options, RefineReport& rep
   builder.build();
   report.triangulate_ms = ms_since(start);
   const auto refine_start = std::chrono::steady_clock::now();
-  detail::Refiner<Mesh, Rec> refiner(builder.triangulation(), builder.boundary_segments(), builder.input_count(),
-                                     scaled(options, builder.exponent()), options);
-  refiner.run(report);
-  builder.set_boundary_segments(refiner.boundary());
+  const std::vector<RefinePhase> phases =
+      options.phases.empty() ? std::vector<RefinePhase>{{"refine", options.criteria}} : options.phases;
+  // One algorithm object for every phase: what it knows of the boundary (which segment each
+  // split vertex lies on, the small input angles) carries over.
+  const auto refine_by = [&]<class Algorithm>(std::type_identity<Algorithm>) {
+    Algorithm algorithm(builder.triangulation(), builder.boundary_segments(), builder.input_count(),
+                        scaled(phases.front().criteria, builder.exponent()), options);
+    for (const RefinePhase& phase : phases) {
+      const auto phase_start = std::chrono::steady_clock::now();
+      algorithm.set_criteria(scaled(phase.criteria, builder.exponent()));
+      algorithm.run(report);
+      report.phase_ms.emplace_back(phase.name, ms_since(phase_start));
+      if (report.stopped_by_cap) break;
+    }
+    builder.set_boundary_segments(algorithm.boundary());
+  };
+  if (options.insertion == RefineInsertion::bisection) refine_by(std::type_identity<detail::LeppBisector<Mesh, Rec>>{});
+  else refine_by(std::type_identity<detail::Refiner<Mesh, Rec>>{});
   builder.reassign_regions();
   report.steiner_vertices = builder.triangulation().points().size() - builder.input_count();
   TriMesh out = builder.finish();
@@ -89,8 +103,26 @@ TriMesh run(Pslg& input, const RefineOptions& options, RefineReport& report) {
 
 }  // namespace
 
+std::vector<const RefineCriteria*> criteria_of(const RefineOptions& o) {
+  if (o.phases.empty()) return {&o.criteria};
+  std::vector<const RefineCriteria*> all;
+  for (const RefinePhase& p : o.phases) all.push_back(&p.criteria);
+  return all;
+}
+
+// Bisection keeps shapes and only makes triangles smaller: it takes size criteria.
+void check_bisection(const RefineOptions& o, const RefineCriteria& c) {
+  const std::string who = "longest-edge bisection (" + o.algorithm + ")";
+  if (c.min_angle_deg > 0.0 || c.max_angle_deg < 180.0 || c.max_aspect > 0.0)
+    throw InputError(who + " cannot improve angles or aspect ratios: give it --max-area or --size only");
+  if (c.max_area <= 0.0 && !c.size) throw InputError(who + " needs a size bound: --max-area or --size");
+}
+
 TriMesh refine(Pslg input, const RefineOptions& options, RefineReport* report) {
-  check(options.criteria);
+  for (const RefineCriteria* c : criteria_of(options)) {
+    check(*c);
+    if (options.insertion == RefineInsertion::bisection) check_bisection(options, *c);
+  }
   detail::validate(input);
   RefineReport local;
   RefineReport& r = report ? *report : local;
@@ -107,9 +139,11 @@ const char* to_string(Selection s) {
     case Selection::offcenter: return "offcenter";
     case Selection::lepp_midpoint: return "lepp-midpoint";
     case Selection::lepp_centroid: return "lepp-centroid";
+    case Selection::longest_edge_midpoint: return "longest-edge-midpoint";
   }
   return "?";
 }
+const char* to_string(RefineInsertion i) { return i == RefineInsertion::bisection ? "bisection" : "delaunay"; }
 const char* to_string(RefineOrder o) { return o == RefineOrder::worst_first ? "worst" : "fifo"; }
 
 }  // namespace meshstep

@@ -32,19 +32,9 @@
 #include "meshstep/refine/lepp.hpp"
 #include "meshstep/refine/quality.hpp"
 #include "meshstep/refine/refine.hpp"
+#include "scaled_criteria.hpp"
 
 namespace meshstep::detail {
-
-// The criteria in the form the loop tests them (scaled, squared, trigonometry done once).
-struct ScaledCriteria {
-  double sin2_min_angle = 0.0;   // bad when below
-  double cos_max_angle = -1.0;   // bad when below
-  double max_aspect = 0.0;       // 0: none
-  double max_area = 0.0;         // 0: none
-  std::function<double(const Point&)> size;  // in scaled units; empty: none
-  double offcenter_beta = 0.0;   // radius-edge bound for off-centers
-  std::size_t max_triangles = 0, max_steiner = 0;
-};
 
 template <TriangleMesh Mesh, class Rec>
 class Refiner {
@@ -57,8 +47,12 @@ class Refiner {
     find_small_input_angles(boundary);
   }
 
+  // The criteria of the next run() (a run in phases changes them between runs).
+  void set_criteria(const ScaledCriteria& criteria) { criteria_ = criteria; }
+
   void run(RefineReport& report) {
     Rec& rec = tri_.recorder();
+    clear_queues();  // what a capped phase left: the next phase checks every face again
     rec.phase_begin(replay::Phase::refine);
     // Every segment and boundary edge is a suspect once; every face is checked once. In an
     // order of the mesh's own (vertex ids), not of the data structure's slots: every data
@@ -247,6 +241,13 @@ class Refiner {
     return false;
   }
 
+  void clear_queues() {
+    for (auto& bucket : buckets_) bucket.clear();
+    lowest_ = kBuckets;
+    fifo_.clear();
+    segments_.clear();
+  }
+
   void push_bad(const Candidate& c) {
     if (options_.order == RefineOrder::fifo) {
       fifo_.push_back(c);
@@ -301,6 +302,11 @@ class Refiner {
     if (lepp_selection()) {
       const Point p = lepp_point(c.face);
       if (!too_close_to_terminal_vertices(p, s.shortest2)) return p;
+    }
+    if (options_.selection == Selection::longest_edge_midpoint) {
+      const Point* v[3] = {&pa, &pb, &pc};
+      const Point &p = *v[s.longest_edge], &q = *v[(s.longest_edge + 1) % 3];
+      return {(p.x + q.x) / 2.0, (p.y + q.y) / 2.0};
     }
     if (options_.selection == Selection::circumcenter || criteria_.offcenter_beta <= 0.0) return center;
     // Off-center: on the bisector of the shortest edge pq, at the apex of the isosceles

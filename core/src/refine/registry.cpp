@@ -24,6 +24,23 @@ constexpr std::array kAlgorithms = {
                   "Lepp-Delaunay inserting the centroid of the two terminal triangles instead "
                   "(the terminal edge's midpoint on the boundary)",
                   Selection::lepp_centroid, 20.7},
+    AlgorithmInfo{"lepp-bisection",
+                  "Rivara's Lepp longest-edge bisection to an area or size bound (--max-area, --size): "
+                  "bisects the terminal triangles until the target is cut; not Delaunay, conforming, "
+                  "angles never below half the starting mesh's smallest",
+                  Selection::lepp_midpoint, 0.0, RefineInsertion::bisection},
+    AlgorithmInfo{"midpoint-area",
+                  "Delaunay refinement to an area or size bound (--max-area, --size) inserting the "
+                  "midpoint of each too-large triangle's longest edge",
+                  Selection::longest_edge_midpoint, 0.0},
+    AlgorithmInfo{"lepp-aspect",
+                  "Lepp-Delaunay (terminal-triangles centroid) to an aspect-ratio bound "
+                  "(--max-aspect, default 2.83 = 1/sin 20.7 degrees)",
+                  Selection::lepp_centroid, 0.0, RefineInsertion::delaunay, kDefaultMaxAspect},
+    AlgorithmInfo{"combined",
+                  "combined criteria: a Lepp-centroid phase to an aspect-ratio bound (--max-aspect, "
+                  "default 2.83), then a phase to the minimum angle (--min-angle, default 20.7)",
+                  Selection::lepp_centroid, 20.7, RefineInsertion::delaunay, kDefaultMaxAspect, true},
 };
 
 constexpr std::array kSelections = {
@@ -31,11 +48,13 @@ constexpr std::array kSelections = {
     PartInfo{"offcenter", "the off-center of the bad triangle's shortest edge (Ungor), or its circumcenter if nearer"},
     PartInfo{"lepp-midpoint", "the midpoint of the terminal edge of the bad triangle's longest-edge propagation path"},
     PartInfo{"lepp-centroid", "the centroid of the terminal triangles of that path (on the boundary: the edge's midpoint)"},
+    PartInfo{"longest-edge-midpoint", "the midpoint of the bad triangle's longest edge"},
 };
 
 constexpr std::array kInsertions = {
     PartInfo{"flip", "Lawson: split the face or edge, then flip edges until Delaunay"},
     PartInfo{"cavity", "Bowyer-Watson: remove the faces whose circumcircle holds the point, fan the hole"},
+    PartInfo{"bisection", "Lepp longest-edge bisection: split the terminal edge at its midpoint, not Delaunay (size criteria only)"},
 };
 
 constexpr std::array kCriteria = {
@@ -82,6 +101,7 @@ std::optional<Selection> parse_selection(std::string_view name) {
   if (name == "offcenter") return Selection::offcenter;
   if (name == "lepp-midpoint") return Selection::lepp_midpoint;
   if (name == "lepp-centroid") return Selection::lepp_centroid;
+  if (name == "longest-edge-midpoint") return Selection::longest_edge_midpoint;
   return std::nullopt;
 }
 
@@ -89,7 +109,18 @@ RefineOptions options_for(const AlgorithmInfo& algorithm) {
   RefineOptions o;
   o.algorithm = std::string(algorithm.name);
   o.selection = algorithm.selection;
+  o.insertion = algorithm.insertion;
   return o;
+}
+
+std::vector<RefinePhase> aspect_then_angle_phases(const RefineCriteria& criteria, const AlgorithmInfo& algorithm) {
+  RefinePhase aspect{"aspect", criteria};
+  aspect.criteria.min_angle_deg = 0.0;
+  if (aspect.criteria.max_aspect <= 0.0) aspect.criteria.max_aspect = kDefaultMaxAspect;
+  RefinePhase angle{"min-angle", criteria};
+  angle.criteria.max_aspect = 0.0;
+  if (angle.criteria.min_angle_deg <= 0.0) angle.criteria.min_angle_deg = algorithm.default_min_angle_deg;
+  return {aspect, angle};
 }
 
 }  // namespace meshstep

@@ -99,6 +99,16 @@ class Triangulation {
     return mesh_.vertex_half_edge(v);  // the split's own handle may have been flipped away
   }
 
+  // Splits the edge of h (and the faces on both sides) at p, a point on it, and leaves the
+  // mesh as it is: longest-edge bisection, not Delaunay. Returns a half-edge leaving the
+  // new vertex.
+  HalfEdge bisect(const Point& p, HalfEdge h) {
+    const VertexId v = add_point(p);
+    rec_.vertex(v, p);
+    rec_.split_edge(mesh_, h, v, replay::SplitReason::bisection);
+    return mesh_.vertex_half_edge(v);
+  }
+
   VertexId add_point(const Point& p) {
     points_.push_back(p);
     merged_into_.push_back(kNone);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "meshstep/delaunay/triangulate.hpp"
@@ -23,7 +24,13 @@ enum class Selection {
   offcenter,     // Ungor: on the bisector of the shortest edge, no farther than needed
   lepp_midpoint, // Rivara: the midpoint of the terminal edge of the triangle's Lepp
   lepp_centroid, // Rivara et al.: the centroid of the two terminal triangles of the Lepp
+  longest_edge_midpoint,  // the midpoint of the bad triangle's own longest edge
 };
+
+// How a refinement adds its points: Delaunay insertion (the triangulation's flips or cavity,
+// TriangulateOptions::insertion) of the selected point, or Lepp longest-edge bisection
+// (Rivara; not Delaunay, size criteria only, the selection does not apply).
+enum class RefineInsertion { delaunay, bisection };
 
 enum class RefineOrder { worst_first, fifo };
 
@@ -51,11 +58,22 @@ struct RefineProgress {
   double seconds = 0.0;    // since refinement began
 };
 
+// One phase of a refinement run in phases (the combined-criteria method: an aspect-ratio
+// phase, then a min-angle phase).
+struct RefinePhase {
+  std::string name;  // for the report and the progress output
+  RefineCriteria criteria;
+};
+
 struct RefineOptions {
   std::string algorithm = "circumcenter";  // for the record and the report
   Selection selection = Selection::circumcenter;
   RefineCriteria criteria;
-  RefineOrder order = RefineOrder::worst_first;
+  // When not empty, the run goes through these in order, each to its own criteria, on the
+  // mesh the phase before left (`criteria` is then unused).
+  std::vector<RefinePhase> phases;
+  RefineInsertion insertion = RefineInsertion::delaunay;
+  RefineOrder order = RefineOrder::worst_first;  // bisection: largest area first, or FIFO
   Encroachment encroachment = Encroachment::circle;
   TriangulateOptions triangulate;  // data structure, insertion, convex hull, recording
   // Called about once a second during a long refinement (not at all for a short one).
@@ -79,6 +97,8 @@ struct RefineReport {
   std::size_t bad_near_small_input_angle = 0;
   bool bounds_met = false;
   double triangulate_ms = 0.0, refine_ms = 0.0;
+  // Per phase (one, named "refine", for a run without phases): its name and milliseconds.
+  std::vector<std::pair<std::string, double>> phase_ms;
 };
 
 // Throws InputError like triangulate(), and for criteria out of range.
@@ -86,5 +106,6 @@ TriMesh refine(Pslg input, const RefineOptions& options, RefineReport* report = 
 
 const char* to_string(Selection s);
 const char* to_string(RefineOrder o);
+const char* to_string(RefineInsertion i);
 
 }  // namespace meshstep

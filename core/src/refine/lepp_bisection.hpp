@@ -1,0 +1,250 @@
+// Lepp longest-edge bisection (Rivara): refinement to an area bound or a size function that
+// keeps every triangle's shape, not Delaunay.
+//
+// For a target triangle t, while t exists: follow Lepp(t) to its terminal edge and bisect
+// the terminal triangles there (join the edge's midpoint to their opposite vertices; one
+// triangle on the boundary). Each bisection cuts a triangle across its longest edge, so the
+// mesh stays conforming after every step and no angle falls below half the smallest angle of
+// the starting mesh. Segments do not stop a path: splitting one at its midpoint keeps it
+// covered (its two halves stay constrained), and stopping there would cut the triangle
+// across the segment through an edge that is not its longest.
+//
+// Bisection cannot raise angles, so the only criteria are size criteria (area, size
+// function) and the caps. The targets are taken largest first or in FIFO order; each step is
+// one bisection, recorded with its Lepp path.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <queue>
+#include <unordered_map>
+#include <vector>
+
+#include "meshstep/delaunay/triangulation.hpp"
+#include "meshstep/geometry/predicates.hpp"
+#include "meshstep/refine/lepp.hpp"
+#include "meshstep/refine/quality.hpp"
+#include "meshstep/refine/refine.hpp"
+#include "scaled_criteria.hpp"
+
+namespace meshstep::detail {
+
+template <TriangleMesh Mesh, class Rec>
+class LeppBisector {
+ public:
+  LeppBisector(Triangulation<Mesh, Rec>& tri, const std::vector<Segment>& boundary, std::size_t input_count,
+               const ScaledCriteria& criteria, const RefineOptions& options)
+      : tri_(tri), mesh_(tri.mesh()), input_count_(input_count), criteria_(criteria), options_(options) {
+    for (const Segment& s : boundary) markers_[edge_tie_key(s.a, s.b)] = s.marker;
+  }
+
+  // The criteria of the next run() (a run in phases changes them between runs).
+  void set_criteria(const ScaledCriteria& criteria) { criteria_ = criteria; }
+
+  void run(RefineReport& report) {
+    Rec& rec = tri_.recorder();
+    clear_queues();  // what a capped phase left: the next phase checks every face again
+    rec.phase_begin(replay::Phase::refine);
+    // Faces are checked in an order of the mesh's own (their vertex ids), never of storage
+    // slots, so that FIFO runs alike on every data structure.
+    std::vector<FaceId> faces;
+    for (FaceId f = 0; f < mesh_.face_capacity(); ++f)
+      if (mesh_.is_live(f)) faces.push_back(f);
+    check_in_order(faces);
+    const auto started = std::chrono::steady_clock::now();
+    auto last_report = started;
+    Target t;
+    for (std::uint64_t round = 1; !capped() && pop(t); ++round) {
+      if (options_.progress && round % 1024 == 0) {
+        const auto now = std::chrono::steady_clock::now();
+        if (now - last_report >= std::chrono::seconds(1)) {
+          last_report = now;
+          options_.progress({tri_.points().size() - input_count_, mesh_.face_count(), queued(),
+                             std::chrono::duration<double>(now - started).count()});
+        }
+      }
+      // Bisect along the path until the target itself is cut (or a cap or the precision
+      // floor stops it).
+      while (still_there(t) && !capped())
+        if (!bisect_terminal_edge(t.face)) break;
+    }
+    rec.phase_end(replay::Phase::refine);
+    report.stopped_by_cap = capped();
+    report.unsplittable_segments = unsplittable_;
+    report.segment_splits = segment_splits_;
+    report.triangles_split = bisections_;
+    assess(report);
+  }
+
+  // The boundary after the run: every subsegment with its segment's marker.
+  std::vector<Segment> boundary() const {
+    std::vector<Segment> out;
+    out.reserve(markers_.size());
+    for (const auto& [k, marker] : markers_)
+      out.push_back({static_cast<std::uint32_t>(k >> 32), static_cast<std::uint32_t>(k & 0xFFFFFFFFu), marker});
+    return out;
+  }
+
+ private:
+  // A target triangle: its face and its vertices (from the smallest id), to tell whether
+  // the face still holds it; its area orders the queue.
+  struct Target {
+    double area;
+    FaceId face;
+    VertexId a, b, c;
+    bool operator<(const Target& o) const {
+      if (area != o.area) return area < o.area;
+      return std::array{a, b, c} > std::array{o.a, o.b, o.c};
+    }
+  };
+
+  HalfEdge first_edge(FaceId f) const {
+    HalfEdge h = mesh_.half_edge(f);
+    const HalfEdge n = mesh_.next(h), p = mesh_.prev(h);
+    if (mesh_.origin(n) < mesh_.origin(h)) h = n;
+    if (mesh_.origin(p) < mesh_.origin(h)) h = p;
+    return h;
+  }
+  const Point& point(VertexId v) const { return tri_.point(v); }
+
+  std::array<VertexId, 3> vertices(FaceId f) const {
+    const HalfEdge h = first_edge(f);
+    return {mesh_.origin(h), mesh_.dest(h), mesh_.apex(h)};
+  }
+
+  void check_in_order(std::vector<FaceId>& faces) {
+    std::sort(faces.begin(), faces.end(), [&](FaceId f, FaceId g) { return vertices(f) < vertices(g); });
+    for (const FaceId f : faces) check(f);
+  }
+
+  void check(FaceId f) {
+    const HalfEdge h = first_edge(f);
+    const VertexId a = mesh_.origin(h), b = mesh_.dest(h), c = mesh_.apex(h);
+    const quality::Shape s = quality::shape(point(a), point(b), point(c));
+    bool target = criteria_.max_area > 0.0 && s.area > criteria_.max_area;
+    if (!target && criteria_.size) {
+      const Point centroid{(point(a).x + point(b).x + point(c).x) / 3.0, (point(a).y + point(b).y + point(c).y) / 3.0};
+      const double l = criteria_.size(centroid);
+      target = l > 0.0 && s.longest2 > l * l;
+    }
+    if (!target) return;
+    const Target t{s.area, f, a, b, c};
+    if (options_.order == RefineOrder::fifo) fifo_.push_back(t);
+    else largest_.push(t);
+  }
+
+  void clear_queues() {
+    largest_ = {};
+    fifo_.clear();
+  }
+
+  bool pop(Target& t) {
+    if (options_.order == RefineOrder::fifo) {
+      if (fifo_.empty()) return false;
+      t = fifo_.front();
+      fifo_.pop_front();
+      return true;
+    }
+    if (largest_.empty()) return false;
+    t = largest_.top();
+    largest_.pop();
+    return true;
+  }
+  std::size_t queued() const { return fifo_.size() + largest_.size(); }
+
+  bool still_there(const Target& t) const {
+    if (!mesh_.is_live(t.face)) return false;
+    const HalfEdge h = first_edge(t.face);
+    return mesh_.origin(h) == t.a && mesh_.dest(h) == t.b && mesh_.apex(h) == t.c;
+  }
+
+  bool capped() const {
+    return (criteria_.max_steiner > 0 && tri_.points().size() - input_count_ >= criteria_.max_steiner) ||
+           (criteria_.max_triangles > 0 && mesh_.face_count() >= criteria_.max_triangles);
+  }
+
+  // One step: the terminal edge of f's path, bisected with the triangles on both sides.
+  // False, changing nothing, when the rounded midpoint would not leave every triangle
+  // counterclockwise (an edge a few ulps long).
+  bool bisect_terminal_edge(FaceId f) {
+    const HalfEdge e = lepp(mesh_, tri_.points(), f, [](HalfEdge) { return false; }, path_);
+    const VertexId a = mesh_.origin(e), b = mesh_.dest(e);
+    const Point &pa = point(a), &pb = point(b);
+    const Point m{(pa.x + pb.x) / 2.0, (pa.y + pb.y) / 2.0};
+    if (!splits_cleanly(e, m)) {
+      ++unsplittable_;
+      return false;
+    }
+    Rec& rec = tri_.recorder();
+    rec.step_begin(mesh_, replay::StepKind::bisect, a, b);
+    if constexpr (Rec::enabled) {
+      path_vertices_.clear();
+      for (const FaceId g : path_) {
+        const HalfEdge h = mesh_.half_edge(g);
+        path_vertices_.insert(path_vertices_.end(), {mesh_.origin(h), mesh_.dest(h), mesh_.apex(h)});
+      }
+      rec.lepp_path(a, b, mesh_.twin(e) == kNone ? 1 : 2, path_vertices_);
+    }
+    const auto segment = markers_.find(edge_tie_key(a, b));
+    const HalfEdge out = tri_.bisect(m, e);
+    const VertexId v = mesh_.origin(out);
+    if (segment != markers_.end()) {
+      const int marker = segment->second;
+      markers_.erase(segment);
+      markers_[edge_tie_key(a, v)] = marker;
+      markers_[edge_tie_key(v, b)] = marker;
+      ++segment_splits_;
+    }
+    ++bisections_;
+    new_faces_.clear();
+    tri_.for_each_out_edge(out, [&](HalfEdge h) { new_faces_.push_back(mesh_.face(h)); });
+    check_in_order(new_faces_);
+    return true;
+  }
+
+  bool splits_cleanly(HalfEdge h, const Point& p) const {
+    const Point &a = point(mesh_.origin(h)), &b = point(mesh_.dest(h));
+    if (p == a || p == b) return false;
+    const Point& c = point(mesh_.apex(h));
+    if (orient2d(a, p, c) <= 0.0 || orient2d(p, b, c) <= 0.0) return false;
+    const HalfEdge t = mesh_.twin(h);
+    if (t == kNone) return true;
+    const Point& d = point(mesh_.apex(t));
+    return orient2d(b, p, d) > 0.0 && orient2d(p, a, d) > 0.0;
+  }
+
+  void assess(RefineReport& report) const {
+    std::size_t bad = 0;
+    for (FaceId f = 0; f < mesh_.face_capacity(); ++f) {
+      if (!mesh_.is_live(f)) continue;
+      const HalfEdge h = first_edge(f);
+      const Point &a = point(mesh_.origin(h)), &b = point(mesh_.dest(h)), &c = point(mesh_.apex(h));
+      const quality::Shape s = quality::shape(a, b, c);
+      bool fails = criteria_.max_area > 0.0 && s.area > criteria_.max_area;
+      if (!fails && criteria_.size) {
+        const double l = criteria_.size({(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0});
+        fails = l > 0.0 && s.longest2 > l * l;
+      }
+      bad += fails;
+    }
+    report.bad_triangles = bad;
+    report.bounds_met = bad == 0;
+  }
+
+  Triangulation<Mesh, Rec>& tri_;
+  Mesh& mesh_;
+  std::size_t input_count_;
+  ScaledCriteria criteria_;
+  const RefineOptions& options_;
+  std::unordered_map<std::uint64_t, int> markers_;  // subsegments and boundary edges
+  std::priority_queue<Target> largest_;
+  std::deque<Target> fifo_;
+  std::vector<FaceId> path_, new_faces_;
+  std::vector<VertexId> path_vertices_;
+  std::size_t bisections_ = 0, segment_splits_ = 0, unsplittable_ = 0;
+};
+
+}  // namespace meshstep::detail

@@ -1,0 +1,22 @@
+// The criteria in the form the refinement loops test them: in the triangulation's scaled
+// coordinates, squared, trigonometry done once.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+#include "meshstep/geometry/point.hpp"
+
+namespace meshstep::detail {
+
+struct ScaledCriteria {
+  double sin2_min_angle = 0.0;   // bad when below
+  double cos_max_angle = -1.0;   // bad when below
+  double max_aspect = 0.0;       // 0: none
+  double max_area = 0.0;         // 0: none
+  std::function<double(const Point&)> size;  // in scaled units; empty: none
+  double offcenter_beta = 0.0;   // radius-edge bound for off-centers
+  std::size_t max_triangles = 0, max_steiner = 0;
+};
+
+}  // namespace meshstep::detail
