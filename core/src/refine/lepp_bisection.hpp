@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cstdint>
 #include <deque>
 #include <queue>
@@ -28,6 +27,7 @@
 #include "meshstep/refine/lepp.hpp"
 #include "meshstep/refine/quality.hpp"
 #include "meshstep/refine/refine.hpp"
+#include "mesh_queries.hpp"
 #include "scaled_criteria.hpp"
 
 namespace meshstep::detail {
@@ -54,18 +54,10 @@ class LeppBisector {
     for (FaceId f = 0; f < mesh_.face_capacity(); ++f)
       if (mesh_.is_live(f)) faces.push_back(f);
     check_in_order(faces);
-    const auto started = std::chrono::steady_clock::now();
-    auto last_report = started;
+    ProgressClock clock(options_.progress, 1024);
     Target t;
     for (std::uint64_t round = 1; !capped() && pop(t); ++round) {
-      if (options_.progress && round % 1024 == 0) {
-        const auto now = std::chrono::steady_clock::now();
-        if (now - last_report >= std::chrono::seconds(1)) {
-          last_report = now;
-          options_.progress({tri_.points().size() - input_count_, mesh_.face_count(), queued(),
-                             std::chrono::duration<double>(now - started).count()});
-        }
-      }
+      clock.tick(round, [&] { return RefineProgress{tri_.points().size() - input_count_, mesh_.face_count(), queued()}; });
       // Bisect along the path until the target itself is cut (or a cap or the precision
       // floor stops it).
       while (still_there(t) && !capped())
@@ -101,13 +93,7 @@ class LeppBisector {
     }
   };
 
-  HalfEdge first_edge(FaceId f) const {
-    HalfEdge h = mesh_.half_edge(f);
-    const HalfEdge n = mesh_.next(h), p = mesh_.prev(h);
-    if (mesh_.origin(n) < mesh_.origin(h)) h = n;
-    if (mesh_.origin(p) < mesh_.origin(h)) h = p;
-    return h;
-  }
+  HalfEdge first_edge(FaceId f) const { return detail::first_edge(mesh_, f); }
   const Point& point(VertexId v) const { return tri_.point(v); }
 
   std::array<VertexId, 3> vertices(FaceId f) const {
@@ -155,16 +141,10 @@ class LeppBisector {
   }
   std::size_t queued() const { return fifo_.size() + largest_.size(); }
 
-  bool still_there(const Target& t) const {
-    if (!mesh_.is_live(t.face)) return false;
-    const HalfEdge h = first_edge(t.face);
-    return mesh_.origin(h) == t.a && mesh_.dest(h) == t.b && mesh_.apex(h) == t.c;
-  }
+  bool still_there(const Target& t) const { return holds_triangle(mesh_, t.face, t.a, t.b, t.c); }
 
-  bool capped() const {
-    return (criteria_.max_steiner > 0 && tri_.points().size() - input_count_ >= criteria_.max_steiner) ||
-           (criteria_.max_triangles > 0 && mesh_.face_count() >= criteria_.max_triangles);
-  }
+  bool capped() const { return reached_cap(criteria_, tri_.points().size() - input_count_, mesh_); }
+
 
   // One step: the terminal edge of f's path, bisected with the triangles on both sides.
   // False, changing nothing, when the rounded midpoint would not leave every triangle
@@ -205,16 +185,8 @@ class LeppBisector {
     return true;
   }
 
-  bool splits_cleanly(HalfEdge h, const Point& p) const {
-    const Point &a = point(mesh_.origin(h)), &b = point(mesh_.dest(h));
-    if (p == a || p == b) return false;
-    const Point& c = point(mesh_.apex(h));
-    if (orient2d(a, p, c) <= 0.0 || orient2d(p, b, c) <= 0.0) return false;
-    const HalfEdge t = mesh_.twin(h);
-    if (t == kNone) return true;
-    const Point& d = point(mesh_.apex(t));
-    return orient2d(b, p, d) > 0.0 && orient2d(p, a, d) > 0.0;
-  }
+  bool splits_cleanly(HalfEdge h, const Point& p) const { return detail::splits_cleanly(mesh_, tri_.points(), h, p); }
+
 
   void assess(RefineReport& report) const {
     std::size_t bad = 0;

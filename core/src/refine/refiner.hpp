@@ -32,6 +32,7 @@
 #include "meshstep/refine/lepp.hpp"
 #include "meshstep/refine/quality.hpp"
 #include "meshstep/refine/refine.hpp"
+#include "mesh_queries.hpp"
 #include "scaled_criteria.hpp"
 
 namespace meshstep::detail {
@@ -68,17 +69,11 @@ class Refiner {
     }
     sort_suspects(segments_.begin(), segments_.end());
     check_faces(faces);
-    const auto started = std::chrono::steady_clock::now();
-    auto last_report = started;
+    ProgressClock clock(options_.progress, 4096);
     for (std::uint64_t round = 1; !capped(); ++round) {
-      if (options_.progress && round % 4096 == 0) {
-        const auto now = std::chrono::steady_clock::now();
-        if (now - last_report >= std::chrono::seconds(1)) {
-          last_report = now;
-          options_.progress({tri_.points().size() - input_count_, mesh_.face_count(), queued() + segments_.size(),
-                             std::chrono::duration<double>(now - started).count()});
-        }
-      }
+      clock.tick(round, [&] {
+        return RefineProgress{tri_.points().size() - input_count_, mesh_.face_count(), queued() + segments_.size()};
+      });
       if (!segments_.empty()) {
         const Suspect suspect = segments_.back();
         segments_.pop_back();
@@ -135,13 +130,8 @@ class Refiner {
   // The half-edge of f leaving its smallest vertex id: shapes are measured from it, so that
   // ties between equal edges (isosceles triangles are everywhere after midpoint splits) fall
   // the same way whichever vertex the data structure lists first.
-  HalfEdge first_edge(FaceId f) const {
-    HalfEdge h = mesh_.half_edge(f);
-    const HalfEdge n = mesh_.next(h), p = mesh_.prev(h);
-    if (mesh_.origin(n) < mesh_.origin(h)) h = n;
-    if (mesh_.origin(p) < mesh_.origin(h)) h = p;
-    return h;
-  }
+  HalfEdge first_edge(FaceId f) const { return detail::first_edge(mesh_, f); }
+
 
   std::array<VertexId, 3> face_key(FaceId f) const {
     const HalfEdge h = mesh_.half_edge(f);
@@ -166,11 +156,8 @@ class Refiner {
   bool is_segment(HalfEdge h) const { return mesh_.twin(h) == kNone || mesh_.is_constrained(h); }
   const Point& point(VertexId v) const { return tri_.point(v); }
 
-  bool capped() const {
-    const std::size_t steiner = tri_.points().size() - input_count_;
-    return (criteria_.max_steiner && steiner >= criteria_.max_steiner) ||
-           (criteria_.max_triangles && mesh_.face_count() >= criteria_.max_triangles);
-  }
+  bool capped() const { return reached_cap(criteria_, tri_.points().size() - input_count_, mesh_); }
+
 
   // The half-edge of subsegment a-b if it still is one: the hint if it still holds it, else
   // a search around either end (a vertex where two parts of the domain touch has two fans,
@@ -279,11 +266,8 @@ class Refiner {
     return n;
   }
 
-  bool still_there(const Candidate& c) const {
-    if (!mesh_.is_live(c.face)) return false;
-    const HalfEdge h = first_edge(c.face);
-    return mesh_.origin(h) == c.a && mesh_.dest(h) == c.b && mesh_.apex(h) == c.c;
-  }
+  bool still_there(const Candidate& c) const { return holds_triangle(mesh_, c.face, c.a, c.b, c.c); }
+
 
   // The point a bad triangle asks for, and the alternative weighed against it.
   Point select(const Candidate& c, Point& alternative) {
@@ -518,17 +502,8 @@ class Refiner {
     return true;
   }
 
-  // Would splitting the edge of h at p leave every triangle counterclockwise (exactly)?
-  bool splits_cleanly(HalfEdge h, const Point& p) const {
-    const Point &a = point(mesh_.origin(h)), &b = point(mesh_.dest(h));
-    if (p == a || p == b) return false;
-    const Point& c = point(mesh_.apex(h));
-    if (orient2d(a, p, c) <= 0.0 || orient2d(p, b, c) <= 0.0) return false;
-    const HalfEdge t = mesh_.twin(h);
-    if (t == kNone) return true;
-    const Point& d = point(mesh_.apex(t));
-    return orient2d(b, p, d) > 0.0 && orient2d(p, a, d) > 0.0;
-  }
+  bool splits_cleanly(HalfEdge h, const Point& p) const { return detail::splits_cleanly(mesh_, tri_.points(), h, p); }
+
 
   SubsegmentInfo take_subsegment(VertexId a, VertexId b) {
     const auto it = subsegments_.find(key(a, b));

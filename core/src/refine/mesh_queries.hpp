@@ -1,0 +1,82 @@
+// Small questions both refinement loops (Delaunay refinement and Lepp bisection) ask of the
+// mesh, answered the same way for both so that their runs stay comparable.
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "meshstep/geometry/point.hpp"
+#include "meshstep/geometry/predicates.hpp"
+#include "meshstep/mesh/concept.hpp"
+#include "meshstep/refine/refine.hpp"
+#include "scaled_criteria.hpp"
+
+namespace meshstep::detail {
+
+// The half-edge of f that leaves its smallest vertex id: a face named by its vertices, not
+// by where a data structure stored it.
+template <TriangleMesh Mesh>
+HalfEdge first_edge(const Mesh& mesh, FaceId f) {
+  HalfEdge h = mesh.half_edge(f);
+  const HalfEdge n = mesh.next(h), p = mesh.prev(h);
+  if (mesh.origin(n) < mesh.origin(h)) h = n;
+  if (mesh.origin(p) < mesh.origin(h)) h = p;
+  return h;
+}
+
+// Does face f still hold the triangle (a, b, c) (a its smallest vertex)?
+template <TriangleMesh Mesh>
+bool holds_triangle(const Mesh& mesh, FaceId f, VertexId a, VertexId b, VertexId c) {
+  if (!mesh.is_live(f)) return false;
+  const HalfEdge h = first_edge(mesh, f);
+  return mesh.origin(h) == a && mesh.dest(h) == b && mesh.apex(h) == c;
+}
+
+// Would splitting the edge of h at p (a rounded point on it) leave every triangle on both
+// sides counterclockwise, exactly? Not for an edge a few ulps long.
+template <TriangleMesh Mesh>
+bool splits_cleanly(const Mesh& mesh, const std::vector<Point>& points, HalfEdge h, const Point& p) {
+  const Point &a = points[mesh.origin(h)], &b = points[mesh.dest(h)];
+  if (p == a || p == b) return false;
+  const Point& c = points[mesh.apex(h)];
+  if (orient2d(a, p, c) <= 0.0 || orient2d(p, b, c) <= 0.0) return false;
+  const HalfEdge t = mesh.twin(h);
+  if (t == kNone) return true;
+  const Point& d = points[mesh.apex(t)];
+  return orient2d(b, p, d) > 0.0 && orient2d(p, a, d) > 0.0;
+}
+
+// Has the run reached its Steiner-vertex or triangle cap?
+template <TriangleMesh Mesh>
+bool reached_cap(const ScaledCriteria& criteria, std::size_t steiner, const Mesh& mesh) {
+  return (criteria.max_steiner && steiner >= criteria.max_steiner) ||
+         (criteria.max_triangles && mesh.face_count() >= criteria.max_triangles);
+}
+
+// Calls the progress callback about once a second, looking at the clock every `every` rounds.
+class ProgressClock {
+ public:
+  ProgressClock(const std::function<void(const RefineProgress&)>& progress, std::uint64_t every)
+      : progress_(progress), every_(every) {}
+
+  template <class Make>
+  void tick(std::uint64_t round, Make make_progress) {
+    if (!progress_ || round % every_ != 0) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_ < std::chrono::seconds(1)) return;
+    last_ = now;
+    RefineProgress p = make_progress();
+    p.seconds = std::chrono::duration<double>(now - started_).count();
+    progress_(p);
+  }
+
+ private:
+  const std::function<void(const RefineProgress&)>& progress_;
+  std::uint64_t every_;
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now(), last_ = started_;
+};
+
+}  // namespace meshstep::detail
