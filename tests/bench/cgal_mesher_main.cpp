@@ -1,15 +1,19 @@
-// cgal_mesher FILE.poly [--min-angle DEG] [--max-area A] [--repeat N]
+// cgal_mesher FILE.poly [--min-angle DEG] [--max-area A] [--repeat N] [--meshstep-max-area A]
 //
 // Meshes a PSLG with CGAL's 2D Delaunay mesher N times (see cgal_mesher.hpp) and prints,
 // per run and then the median of each column: triangles in the domain, vertices, smallest
 // angle, construction and refinement wall seconds, and triangles per second of refinement.
-// The reference numbers for meshstep's own refinement.
+// With --meshstep-max-area, each CGAL run is followed by meshstep's own refinement of the
+// same input (circumcenter, same angle, that area bound), and the ratio of the two
+// throughputs (output triangles per second of construction plus refinement) is printed: the
+// peer comparison in one process, runs interleaved so that machine noise hits both.
 //
 // Exit status: 0 ok, 1 a run failed, 2 usage error or unreadable input.
 #include <CGAL/version.h>
 
 #include <algorithm>
 #include <charconv>
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -18,13 +22,15 @@
 #include <vector>
 
 #include "cgal_mesher.hpp"
+#include "meshstep/check/quality.hpp"
+#include "meshstep/refine/refine.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/triangle_io.hpp"
 
 namespace {
 
 constexpr const char* kUsage =
-    "usage: cgal_mesher FILE.poly [--min-angle DEG] [--max-area A] [--repeat N]\n";
+    "usage: cgal_mesher FILE.poly [--min-angle DEG] [--max-area A] [--repeat N] [--meshstep-max-area A]\n";
 
 constexpr const char* kHelp =
     "Meshes a Triangle .poly (or .node) file with CGAL's 2D Delaunay mesher, N times,\n"
@@ -36,6 +42,9 @@ constexpr const char* kHelp =
     "  --max-area A     triangle area bound, as Triangle's -a (default none); CGAL takes\n"
     "                   it as the edge bound sqrt(4A/sqrt(3)), the equilateral of area A\n"
     "  --repeat N       number of runs (default 3)\n"
+    "  --meshstep-max-area A\n"
+    "                   also refine with meshstep (circumcenter, same angle, area bound A)\n"
+    "                   after each CGAL run, and print both throughputs and their ratio\n"
     "  -h, --help       this text\n"
     "\n"
     "Hole points are CGAL seeds of regions not to mesh. Exit status: 0 ok, 1 a run\n"
@@ -64,12 +73,28 @@ void print_row(const char* label, double triangles, double vertices, double angl
               angle, construct, refine, refine > 0 ? triangles / refine : 0.0);
 }
 
+struct OurRun {
+  double triangles, seconds, min_angle_deg;
+};
+
+// meshstep's refinement of the same input: triangulation and refinement, timed together.
+OurRun run_meshstep(const meshstep::Pslg& input, double min_angle, double max_area) {
+  meshstep::RefineOptions o;
+  o.criteria.min_angle_deg = min_angle;
+  o.criteria.max_area = max_area;
+  const auto start = std::chrono::steady_clock::now();
+  const meshstep::TriMesh m = meshstep::refine(input, o);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return {static_cast<double>(m.triangles.size()), seconds, meshstep::angle_stats(m).min_angle_deg};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string path;
   double min_angle = 20.0;
   double max_area = 0.0;
+  double meshstep_max_area = 0.0;
   int repeat = 3;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
@@ -77,16 +102,17 @@ int main(int argc, char** argv) {
       std::printf("%s\n%s", kUsage, kHelp);
       return 0;
     }
-    if (arg == "--min-angle" || arg == "--max-area" || arg == "--repeat") {
+    if (arg == "--min-angle" || arg == "--max-area" || arg == "--repeat" || arg == "--meshstep-max-area") {
       if (i + 1 >= argc) return usage_error(std::string(arg) + " needs a value");
       const std::string_view value = argv[++i];
       if (arg == "--min-angle") {
         if (!parse_whole(value, min_angle) || !(min_angle >= 0 && min_angle < 60)) {
           return usage_error("--min-angle must be a number in [0, 60)");
         }
-      } else if (arg == "--max-area") {
-        if (!parse_whole(value, max_area) || !(max_area > 0)) {
-          return usage_error("--max-area must be a positive number");
+      } else if (arg == "--max-area" || arg == "--meshstep-max-area") {
+        double& area = arg == "--max-area" ? max_area : meshstep_max_area;
+        if (!parse_whole(value, area) || !(area > 0)) {
+          return usage_error(std::string(arg) + " must be a positive number");
         }
       } else if (!parse_whole(value, repeat) || repeat < 1) {
         return usage_error("--repeat must be a positive integer");
@@ -124,6 +150,7 @@ int main(int argc, char** argv) {
               "construct s", "refine s", "triangles/s");
 
   std::vector<double> triangles, vertices, angles, construct, refine;
+  std::vector<double> ours_rate, cgal_rate, ratio;  // with --meshstep-max-area
   double area = 0.0;
   try {
     for (int run = 1; run <= repeat; ++run) {
@@ -137,6 +164,15 @@ int main(int argc, char** argv) {
       area = r.domain_area;
       print_row(std::to_string(run).c_str(), triangles.back(), vertices.back(), angles.back(),
                 construct.back(), refine.back());
+      if (meshstep_max_area > 0) {
+        const OurRun ours = run_meshstep(input, min_angle, meshstep_max_area);
+        cgal_rate.push_back(triangles.back() / (construct.back() + refine.back()));
+        ours_rate.push_back(ours.triangles / ours.seconds);
+        ratio.push_back(ours_rate.back() / cgal_rate.back());
+        std::printf("  meshstep %11.0f triangles, min angle %.3f, %.6f s, %.0f triangles/s: %.2fx CGAL's %.0f\n",
+                    ours.triangles, ours.min_angle_deg, ours.seconds, ours_rate.back(), ratio.back(),
+                    cgal_rate.back());
+      }
       std::fflush(stdout);  // long runs: show progress as it comes
     }
   } catch (const std::exception& e) {
@@ -147,5 +183,9 @@ int main(int argc, char** argv) {
   print_row("median", median(triangles), median(vertices), median(angles), median(construct),
             median(refine));
   std::printf("domain area %.10g\n", area);
+  if (!ratio.empty()) {
+    std::printf("median triangles/s (construction + refinement): meshstep %.0f, CGAL %.0f; median ratio %.2fx\n",
+                median(ours_rate), median(cgal_rate), median(ratio));
+  }
   return 0;
 }
