@@ -313,6 +313,39 @@ TEST(RefineGenerated, RegionAttributesFollowTheNewTriangles) {
   }
 }
 
+// Each region refined to its own maximum area (the .poly's regional attributes), with or
+// without a global bound, by Delaunay refinement and by bisection alike.
+TEST(RefineCriteria, RegionsGetTheirOwnAreaBounds) {
+  Pslg in;
+  in.points = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 0}, {2, 4}};
+  in.segments = {{0, 4, 1}, {4, 1, 1}, {1, 2, 1}, {2, 5, 1}, {5, 3, 1}, {3, 0, 1}, {4, 5, 1}};
+  in.regions = {{{1, 2}, 1.0, 0.01}, {{3, 2}, 2.0, 0.1}};
+  const auto bound_at = [](double x) { return x < 2.0 ? 0.01 : 0.1; };
+  for (const RefineInsertion insertion : {RefineInsertion::delaunay, RefineInsertion::bisection}) {
+    SCOPED_TRACE(to_string(insertion));
+    RefineOptions o;
+    o.insertion = insertion;
+    if (insertion == RefineInsertion::delaunay) o.criteria.min_angle_deg = 20.0;
+    else o.criteria.max_area = 1.0;  // bisection needs a bound of its own; the regions' are smaller
+    RefineReport report;
+    const TriMesh m = refine(in, o, &report);
+    EXPECT_TRUE(report.bounds_met);
+    std::size_t left = 0, right = 0;
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      double cx = 0.0;
+      for (const std::uint32_t v : m.triangles[t]) cx += m.points[v].x / 3.0;
+      ASSERT_LE(area(m, t), bound_at(cx)) << "triangle " << t << " centroid x " << cx;
+      (cx < 2.0 ? left : right) += 1;
+    }
+    EXPECT_GT(left, 800u);  // 8 square units at 0.01 each
+    EXPECT_LT(right, left / 3);
+    // Turned off, the regions' bounds are not asked for.
+    o.regional_max_area = false;
+    const TriMesh plain = refine(in, o, &report);
+    EXPECT_LT(plain.triangles.size(), m.triangles.size() / 4);
+  }
+}
+
 TEST(RefineCriteria, AreaBoundHoldsEverywhere) {
   const Pslg in = square_with_hole();
   RefineOptions o = with_angle(25.0);

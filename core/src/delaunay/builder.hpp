@@ -149,6 +149,21 @@ class Builder {
     }
   }
 
+  // The regions' area bounds over the current faces (scaled like the points), for an
+  // algorithm that refines to them; empty when no region has one.
+  template <class Field>
+  void region_area_field(Field& field) const {
+    if (max_area_.empty()) return;
+    const Mesh& m = tri_.mesh();
+    for (FaceId f = 0; f < m.face_capacity(); ++f) {
+      if (!m.is_live(f) || f >= max_area_.size() || !(max_area_[f] > 0.0)) continue;
+      const HalfEdge h = m.half_edge(f);
+      field.add(tri_.point(m.origin(h)), tri_.point(m.dest(h)), tri_.point(m.apex(h)),
+                std::ldexp(max_area_[f], 2 * exponent_));
+    }
+    field.build();
+  }
+
   // An algorithm that split the boundary gives its pieces back for the output.
   void set_boundary_segments(std::vector<Segment> segments) {
     kept_segments_ = std::move(segments);

@@ -110,13 +110,7 @@ class LeppBisector {
     const HalfEdge h = first_edge(f);
     const VertexId a = mesh_.origin(h), b = mesh_.dest(h), c = mesh_.apex(h);
     const quality::Shape s = quality::shape(point(a), point(b), point(c));
-    bool target = criteria_.max_area > 0.0 && s.area > criteria_.max_area;
-    if (!target && criteria_.size) {
-      const Point centroid{(point(a).x + point(b).x + point(c).x) / 3.0, (point(a).y + point(b).y + point(c).y) / 3.0};
-      const double l = criteria_.size(centroid);
-      target = l > 0.0 && s.longest2 > l * l;
-    }
-    if (!target) return;
+    if (!too_large(criteria_, s, point(a), point(b), point(c))) return;
     const Target t{s.area, f, a, b, c};
     if (options_.order == RefineOrder::fifo) fifo_.push_back(t);
     else largest_.push(t);
@@ -194,13 +188,7 @@ class LeppBisector {
       if (!mesh_.is_live(f)) continue;
       const HalfEdge h = first_edge(f);
       const Point &a = point(mesh_.origin(h)), &b = point(mesh_.dest(h)), &c = point(mesh_.apex(h));
-      const quality::Shape s = quality::shape(a, b, c);
-      bool fails = criteria_.max_area > 0.0 && s.area > criteria_.max_area;
-      if (!fails && criteria_.size) {
-        const double l = criteria_.size({(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0});
-        fails = l > 0.0 && s.longest2 > l * l;
-      }
-      bad += fails;
+      bad += too_large(criteria_, quality::shape(a, b, c), a, b, c);
     }
     report.bad_triangles = bad;
     report.bounds_met = bad == 0;

@@ -11,6 +11,7 @@
 #include "meshstep/geometry/point.hpp"
 #include "meshstep/geometry/predicates.hpp"
 #include "meshstep/mesh/concept.hpp"
+#include "meshstep/refine/quality.hpp"
 #include "meshstep/refine/refine.hpp"
 #include "scaled_criteria.hpp"
 
@@ -47,6 +48,24 @@ bool splits_cleanly(const Mesh& mesh, const std::vector<Point>& points, HalfEdge
   if (t == kNone) return true;
   const Point& d = points[mesh.apex(t)];
   return orient2d(b, p, d) > 0.0 && orient2d(p, a, d) > 0.0;
+}
+
+// Does the triangle (a, b, c) of shape s fail a size criterion: the area bound, its region's
+// area bound, or the size function (longest edge) at its centroid?
+inline bool too_large(const ScaledCriteria& criteria, const quality::Shape& s, const Point& a, const Point& b,
+                      const Point& c) {
+  if (criteria.max_area > 0.0 && s.area > criteria.max_area) return true;
+  if (!criteria.max_area_at && !criteria.size) return false;
+  const Point centroid{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
+  if (criteria.max_area_at) {
+    const double bound = criteria.max_area_at(centroid);
+    if (bound > 0.0 && s.area > bound) return true;
+  }
+  if (criteria.size) {
+    const double l = criteria.size(centroid);
+    if (l > 0.0 && s.longest2 > l * l) return true;
+  }
+  return false;
 }
 
 // Has the run reached its Steiner-vertex or triangle cap?

@@ -12,6 +12,7 @@
 #include "meshstep/mesh/tds.hpp"
 #include "lepp_bisection.hpp"
 #include "refiner.hpp"
+#include "triangle_field.hpp"
 
 namespace meshstep {
 namespace {
@@ -36,7 +37,7 @@ void check(const RefineCriteria& c) {
 }
 
 // The criteria in the triangulation's scaled coordinates.
-detail::ScaledCriteria scaled(const RefineCriteria& c, int exponent) {
+detail::ScaledCriteria scaled(const RefineCriteria& c, int exponent, const detail::TriangleField& regions) {
   detail::ScaledCriteria s;
   const double sin_min = std::sin(quality::radians(c.min_angle_deg));
   s.sin2_min_angle = sin_min * sin_min;
@@ -52,6 +53,7 @@ detail::ScaledCriteria scaled(const RefineCriteria& c, int exponent) {
   // when only size bounds are set.
   const double angle = c.min_angle_deg > 0.0 ? c.min_angle_deg : 20.7;
   s.offcenter_beta = 0.5 / std::sin(quality::radians(angle));
+  if (!regions.empty()) s.max_area_at = [&regions](const Point& p) { return regions.at(p, -1.0); };
   s.max_triangles = c.max_triangles;
   s.max_steiner = c.max_steiner;
   return s;
@@ -68,16 +70,18 @@ TriMesh refine_with(Pslg& input, const RefineOptions& options, RefineReport& rep
   builder.build();
   report.triangulate_ms = ms_since(start);
   const auto refine_start = std::chrono::steady_clock::now();
+  detail::TriangleField regions;  // the regions' own area bounds, on the starting mesh
+  if (options.regional_max_area) builder.region_area_field(regions);
   const std::vector<RefinePhase> phases =
       options.phases.empty() ? std::vector<RefinePhase>{{"refine", options.criteria}} : options.phases;
   // One algorithm object for every phase: what it knows of the boundary (which segment each
   // split vertex lies on, the small input angles) carries over.
   const auto refine_by = [&]<class Algorithm>(std::type_identity<Algorithm>) {
     Algorithm algorithm(builder.triangulation(), builder.boundary_segments(), builder.input_count(),
-                        scaled(phases.front().criteria, builder.exponent()), options);
+                        scaled(phases.front().criteria, builder.exponent(), regions), options);
     for (const RefinePhase& phase : phases) {
       const auto phase_start = std::chrono::steady_clock::now();
-      algorithm.set_criteria(scaled(phase.criteria, builder.exponent()));
+      algorithm.set_criteria(scaled(phase.criteria, builder.exponent(), regions));
       algorithm.run(report);
       report.phase_ms.emplace_back(phase.name, ms_since(phase_start));
       if (report.stopped_by_cap) break;

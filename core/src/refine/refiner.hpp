@@ -201,12 +201,7 @@ class Refiner {
     const double sin2 = s.sin2_min_angle();
     const bool angle_bad = sin2 < criteria_.sin2_min_angle || s.cos_max_angle() < criteria_.cos_max_angle ||
                            (criteria_.max_aspect > 0.0 && s.aspect() > criteria_.max_aspect);
-    bool size_bad = criteria_.max_area > 0.0 && s.area > criteria_.max_area;
-    if (!size_bad && criteria_.size) {
-      const Point centroid{(point(a).x + point(b).x + point(c).x) / 3.0, (point(a).y + point(b).y + point(c).y) / 3.0};
-      const double l = criteria_.size(centroid);
-      size_bad = l > 0.0 && s.longest2 > l * l;
-    }
+    const bool size_bad = too_large(criteria_, s, point(a), point(b), point(c));
     if (!angle_bad && !size_bad) return;
     if (!size_bad && cannot_improve(h, s)) return;
     push_bad({sin2, face_key(f), f, a, b, c});
@@ -597,7 +592,7 @@ class Refiner {
       const bool below_angle = s.sin2_min_angle() < criteria_.sin2_min_angle;
       const bool fails = below_angle || s.cos_max_angle() < criteria_.cos_max_angle ||
                          (criteria_.max_aspect > 0.0 && s.aspect() > criteria_.max_aspect) ||
-                         (criteria_.max_area > 0.0 && s.area > criteria_.max_area);
+                         too_large(criteria_, s, point(a), point(b), point(c));
       below += below_angle;
       if (!fails) continue;
       ++bad;

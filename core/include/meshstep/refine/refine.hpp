@@ -75,6 +75,9 @@ struct RefineOptions {
   RefineInsertion insertion = RefineInsertion::delaunay;
   RefineOrder order = RefineOrder::worst_first;  // bisection: largest area first, or FIFO
   Encroachment encroachment = Encroachment::circle;
+  // Refine each region of the input to its own maximum area (Region::max_area, from the
+  // .poly's regional attributes), besides the global criteria.
+  bool regional_max_area = true;
   TriangulateOptions triangulate;  // data structure, insertion, convex hull, recording
   // Called about once a second during a long refinement (not at all for a short one).
   std::function<void(const RefineProgress&)> progress;
