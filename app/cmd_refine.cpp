@@ -164,17 +164,17 @@ int run_refine(const RefineArgs& args) {
   }
   if (algorithm->aspect_then_angle) options.phases = aspect_then_angle_phases(criteria, *algorithm);
 
-  // A mesh prefix (PREFIX.node + PREFIX.ele) rather than an input file.
+  // A mesh prefix (PREFIX.node + PREFIX.ele, and PREFIX.area if there) rather than an input
+  // file: re-refinement, as Triangle's -r.
+  bool re_refine = false;
   if (!ends_with(args.input, ".poly") && !ends_with(args.input, ".node")) {
     std::error_code ec;
-    if (std::filesystem::exists(args.input + ".node", ec) && std::filesystem::exists(args.input + ".ele", ec)) {
-      print_error(args.input + ": re-refinement of an existing mesh (" + args.input + ".node + " + args.input +
-                  ".ele) is not implemented yet; refine the .poly or .node it was made from");
-      return kExitBadInput;
-    }
+    re_refine = std::filesystem::exists(args.input + ".node", ec) && std::filesystem::exists(args.input + ".ele", ec);
   }
 
-  const std::string prefix = args.prefix.empty() ? default_output_prefix(args.input) : args.prefix;
+  // (A mesh prefix has no extension to strip: box.1 becomes box.2, as with Triangle.)
+  const std::string prefix =
+      args.prefix.empty() ? default_output_prefix(re_refine ? args.input + ".node" : args.input) : args.prefix;
   std::string bounds_text;
   const auto bound = [&bounds_text](const std::string& text) {
     bounds_text += (bounds_text.empty() ? "" : ", ") + text;
@@ -197,12 +197,21 @@ int run_refine(const RefineArgs& args) {
   double read_ms = 0, write_ms = 0;
   std::size_t input_vertices = 0, input_segments = 0;
   try {
-    note(verbosity, "reading " + args.input);
-    input = io::read_pslg(args.input, &warnings);
+    TriMesh old;  // the mesh to re-refine
+    if (re_refine) {
+      note(verbosity, "reading the mesh " + args.input + ".node/.ele (re-refinement)");
+      old = io::read_mesh(args.input, &warnings);
+      input.points = old.points;
+      input.first_index = old.first_index;
+      input_segments = old.segments.size();
+    } else {
+      note(verbosity, "reading " + args.input);
+      input = io::read_pslg(args.input, &warnings);
+      input_segments = input.segments.size();
+    }
     read_ms = clock.lap_ms();
     for (const std::string& w : warnings) print_warning(verbosity, w);
     input_vertices = input.points.size();
-    input_segments = input.segments.size();
     note(verbosity, "triangulating and refining " + std::to_string(input_vertices) + " vertices, " +
                         std::to_string(input_segments) + " segments: " + options.algorithm + " (selection " +
                         to_string(options.selection) + ", " + to_string(options.order) + " order, " +
@@ -217,7 +226,7 @@ int run_refine(const RefineArgs& args) {
     }
     std::unique_ptr<replay::LogWriter> log;
     if (!args.record.empty()) {
-      log = open_log(args.record, args.input, options.algorithm,
+      log = open_log(args.record, re_refine ? args.input + ".node" : args.input, options.algorithm,
                      "selection=" + std::string(to_string(options.selection)) +
                          " min_angle=" + number(criteria.min_angle_deg) +
                          " max_angle=" + number(criteria.max_angle_deg) +
@@ -234,7 +243,7 @@ int run_refine(const RefineArgs& args) {
                      options.triangulate.data_structure, options.triangulate.insertion);
       options.triangulate.record = log.get();
     }
-    mesh = refine(std::move(input), options, &report);
+    mesh = re_refine ? refine_mesh(old, options, &report) : refine(std::move(input), options, &report);
     clock.lap_ms();  // refine() times its own phases (report.triangulate_ms, refine_ms)
     for (const std::string& w : report.triangulation.warnings) print_warning(verbosity, args.input + ": " + w);
     if (!args.no_output) {
@@ -349,7 +358,8 @@ Command add_refine_command(CLI::App& parent) {
       "vertices until every triangle meets the bounds (see 'meshstep list' for the algorithms).\n"
       "Without any bound (--min-angle, --max-angle, --max-aspect, --max-area, --size) the\n"
       "algorithm's default minimum angle applies.");
-  cmd->add_option("INPUT", args->input, "Input .poly or .node file (Triangle's formats)")->required();
+  cmd->add_option("INPUT", args->input, "Input .poly or .node file (Triangle's formats), or a mesh PREFIX\n"
+                  "(PREFIX.node + PREFIX.ele, optionally PREFIX.area) to refine again, as Triangle's -r")->required();
 
   std::vector<std::string> algorithm_names, selection_names;
   for (const AlgorithmInfo& a : algorithms()) algorithm_names.emplace_back(a.name);

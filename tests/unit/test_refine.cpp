@@ -12,7 +12,9 @@
 #include <vector>
 
 #include "meshstep/check/mesh_check.hpp"
+#include "meshstep/check/quality.hpp"
 #include "meshstep/error.hpp"
+#include "meshstep/geometry/triangle_field.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/refine/refine.hpp"
 #include "meshstep/refine/registry.hpp"
@@ -344,6 +346,52 @@ TEST(RefineCriteria, RegionsGetTheirOwnAreaBounds) {
     const TriMesh plain = refine(in, o, &report);
     EXPECT_LT(plain.triangles.size(), m.triangles.size() / 4);
   }
+}
+
+// Re-refinement (Triangle's -r): a mesh refined again, with per-triangle area bounds on
+// some of its triangles. The hole stays empty, the old vertices come first, the segments are
+// covered, and each new triangle meets the bound of the old triangle its centroid lies in.
+TEST(RefineMesh, RefinesAnExistingMeshWithPerTriangleAreas) {
+  const Pslg in = square_with_hole();
+  RefineReport first_report;
+  TriMesh old = refine_checked(in, with_angle(20.0), first_report);
+  old.holes.clear();  // found again from the triangles, as from a .node + .ele alone
+  old.triangle_max_area.assign(old.triangles.size(), -1.0);
+  TriangleField bound_of_old;
+  for (std::size_t t = 0; t < old.triangles.size(); ++t) {
+    double cx = 0.0;
+    for (const std::uint32_t v : old.triangles[t]) cx += old.points[v].x / 3.0;
+    if (cx < 5.0) old.triangle_max_area[t] = 0.05;
+    const auto& v = old.triangles[t];
+    bound_of_old.add(old.points[v[0]], old.points[v[1]], old.points[v[2]], old.triangle_max_area[t]);
+  }
+  bound_of_old.build();
+  for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel}) {
+    RefineOptions o = with_angle(25.0);
+    o.triangulate.data_structure = ds;
+    RefineReport report;
+    const TriMesh m = refine_mesh(old, o, &report);
+    EXPECT_TRUE(report.bounds_met);
+    const CheckReport check = check_mesh(m, &in);
+    EXPECT_TRUE(check.ok) << check.problems.front();
+    ASSERT_GE(m.points.size(), old.points.size());
+    for (std::size_t i = 0; i < old.points.size(); ++i) ASSERT_EQ(m.points[i], old.points[i]);
+    std::size_t bounded = 0;
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      const auto& v = m.triangles[t];
+      const Point c{(m.points[v[0]].x + m.points[v[1]].x + m.points[v[2]].x) / 3.0,
+                    (m.points[v[0]].y + m.points[v[1]].y + m.points[v[2]].y) / 3.0};
+      EXPECT_FALSE(c.x > 3.0 && c.x < 7.0 && c.y > 3.0 && c.y < 5.0) << "a triangle in the hole";
+      const double bound = bound_of_old.at(c, -1.0);
+      if (bound > 0.0) {
+        ++bounded;
+        ASSERT_LE(area(m, t), bound);
+      }
+    }
+    EXPECT_GT(bounded, 300u);  // about 40 square units at 0.05
+    EXPECT_GE(angle_stats(m).min_angle_deg, 25.0 - 1e-9);
+  }
+  EXPECT_THROW(refine_mesh(TriMesh{}, with_angle(20.0)), InputError);
 }
 
 TEST(RefineCriteria, AreaBoundHoldsEverywhere) {

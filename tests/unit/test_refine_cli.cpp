@@ -230,14 +230,31 @@ TEST_F(RefineCli, SizeGridIsNotImplemented) {
   EXPECT_FALSE(fs::exists(dir_.file("ell.1.node")));
 }
 
-TEST_F(RefineCli, ReRefiningAMeshIsNotImplemented) {
-  const std::string input = write("ell.poly", kLShape);
-  const std::string prefix = dir_.file("ellmesh");
+// A mesh prefix is re-refined (Triangle's -r): PREFIX.area bounds the triangles it names,
+// the next prefix number is the default output, and the result covers the same domain.
+TEST_F(RefineCli, ReRefinesAMeshWithItsAreaFile) {
+  const std::string input = write("hole.poly", kSquareWithHole);
+  const std::string prefix = dir_.file("holemesh.1");
   ASSERT_EQ(meshstep("triangulate " + input + " -q -o " + prefix).status, 0);
-  const CommandResult r = meshstep("refine " + prefix);
-  EXPECT_EQ(r.status, 1);
+  const TriMesh old = io::read_mesh(prefix);
+  std::string area = std::to_string(old.triangles.size()) + "\n";
+  for (std::size_t t = 0; t < old.triangles.size(); ++t)
+    area += std::to_string(t + old.first_index) + " " + (t == 0 ? "0.001" : "-1") + "\n";
+  write("holemesh.1.area", area);
+  const CommandResult r = meshstep("refine " + prefix + " --min-angle 25 --stats json");
+  ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(contains(r.err, "re-refinement")) << r.err;
-  EXPECT_TRUE(contains(r.err, "not implemented")) << r.err;
+  const std::string json = last_line(r.out);
+  EXPECT_EQ(json_value(json, "bounds_met"), "true") << json;
+  const TriMesh m = io::read_mesh(dir_.file("holemesh.2"));
+  // The first old triangle (area bound 0.001) is now covered by many small triangles.
+  std::size_t small = 0;
+  for (const auto& t : m.triangles) {
+    const Point &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]];
+    small += 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) <= 0.001;
+  }
+  EXPECT_GT(small, 50u);
+  EXPECT_EQ(meshstep("check " + dir_.file("holemesh.2") + " --poly " + input + " -q").status, 0);
   // Without the mesh files, a name with no known extension is an unknown file type.
   const CommandResult u = meshstep("refine " + dir_.file("nothing"));
   EXPECT_EQ(u.status, 1);

@@ -50,18 +50,17 @@ bool splits_cleanly(const Mesh& mesh, const std::vector<Point>& points, HalfEdge
   return orient2d(b, p, d) > 0.0 && orient2d(p, a, d) > 0.0;
 }
 
-// Does the triangle (a, b, c) of shape s fail a size criterion: the area bound, its region's
-// area bound, or the size function (longest edge) at its centroid?
+// Does the triangle (a, b, c) of shape s fail a size criterion: the area bound, its own area
+// bound (region, caller), or the size function (longest edge) at its centroid?
 inline bool too_large(const ScaledCriteria& criteria, const quality::Shape& s, const Point& a, const Point& b,
                       const Point& c) {
   if (criteria.max_area > 0.0 && s.area > criteria.max_area) return true;
-  if (!criteria.max_area_at && !criteria.size) return false;
-  const Point centroid{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
-  if (criteria.max_area_at) {
-    const double bound = criteria.max_area_at(centroid);
+  if (criteria.max_area_for) {
+    const double bound = criteria.max_area_for(a, b, c);
     if (bound > 0.0 && s.area > bound) return true;
   }
   if (criteria.size) {
+    const Point centroid{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
     const double l = criteria.size(centroid);
     if (l > 0.0 && s.longest2 > l * l) return true;
   }

@@ -2,6 +2,7 @@
 #include "meshstep/refine/refine.hpp"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -12,7 +13,7 @@
 #include "meshstep/mesh/tds.hpp"
 #include "lepp_bisection.hpp"
 #include "refiner.hpp"
-#include "triangle_field.hpp"
+#include "meshstep/geometry/triangle_field.hpp"
 
 namespace meshstep {
 namespace {
@@ -37,7 +38,7 @@ void check(const RefineCriteria& c) {
 }
 
 // The criteria in the triangulation's scaled coordinates.
-detail::ScaledCriteria scaled(const RefineCriteria& c, int exponent, const detail::TriangleField& regions) {
+detail::ScaledCriteria scaled(const RefineCriteria& c, int exponent, const TriangleField& regions) {
   detail::ScaledCriteria s;
   const double sin_min = std::sin(quality::radians(c.min_angle_deg));
   s.sin2_min_angle = sin_min * sin_min;
@@ -53,7 +54,19 @@ detail::ScaledCriteria scaled(const RefineCriteria& c, int exponent, const detai
   // when only size bounds are set.
   const double angle = c.min_angle_deg > 0.0 ? c.min_angle_deg : 20.7;
   s.offcenter_beta = 0.5 / std::sin(quality::radians(angle));
-  if (!regions.empty()) s.max_area_at = [&regions](const Point& p) { return regions.at(p, -1.0); };
+  // The smaller of the regions' bound and the caller's, where either is set.
+  const bool own = !regions.empty();
+  if (own || c.max_area_for) {
+    s.max_area_for = [own, &regions, theirs = c.max_area_for, exponent](const Point& a, const Point& b, const Point& p) {
+      double bound = own ? regions.min_positive_over(a, b, p, -1.0) : -1.0;
+      if (theirs) {
+        const auto user = [exponent](const Point& q) { return Point{std::ldexp(q.x, -exponent), std::ldexp(q.y, -exponent)}; };
+        const double t = std::ldexp(theirs(user(a), user(b), user(p)), 2 * exponent);
+        if (t > 0.0) bound = bound > 0.0 ? std::min(bound, t) : t;
+      }
+      return bound;
+    };
+  }
   s.max_triangles = c.max_triangles;
   s.max_steiner = c.max_steiner;
   return s;
@@ -70,7 +83,7 @@ TriMesh refine_with(Pslg& input, const RefineOptions& options, RefineReport& rep
   builder.build();
   report.triangulate_ms = ms_since(start);
   const auto refine_start = std::chrono::steady_clock::now();
-  detail::TriangleField regions;  // the regions' own area bounds, on the starting mesh
+  TriangleField regions;  // the regions' own area bounds, on the starting mesh
   if (options.regional_max_area) builder.region_area_field(regions);
   const std::vector<RefinePhase> phases =
       options.phases.empty() ? std::vector<RefinePhase>{{"refine", options.criteria}} : options.phases;

@@ -15,9 +15,8 @@ struct ScaledCriteria {
   double max_aspect = 0.0;       // 0: none
   double max_area = 0.0;         // 0: none
   std::function<double(const Point&)> size;  // in scaled units; empty: none
-  // The area bound at a point (a triangle's centroid), from the input's regions; <= 0 or
-  // empty: none.
-  std::function<double(const Point&)> max_area_at;
+  // The area bound of a triangle (its region's, the caller's); <= 0 or empty: none.
+  std::function<double(const Point&, const Point&, const Point&)> max_area_for;
   double offcenter_beta = 0.0;   // radius-edge bound for off-centers
   std::size_t max_triangles = 0, max_steiner = 0;
 };

@@ -46,6 +46,9 @@ struct RefineCriteria {
   double max_area = 0.0;         // 0: none
   // Largest edge length wanted near a point (a size function); empty: none.
   std::function<double(const Point&)> size;
+  // Largest area wanted for the counterclockwise triangle (a, b, c) (<= 0: none); empty:
+  // none. Re-refinement fills it from the old mesh's .area.
+  std::function<double(const Point& a, const Point& b, const Point& c)> max_area_for;
   std::size_t max_triangles = 0;  // stop once the mesh has this many; 0: none
   std::size_t max_steiner = 0;    // stop after inserting this many vertices; 0: none
 };
@@ -106,6 +109,13 @@ struct RefineReport {
 
 // Throws InputError like triangulate(), and for criteria out of range.
 TriMesh refine(Pslg input, const RefineOptions& options, RefineReport* report = nullptr);
+
+// Re-refinement of an existing mesh, as Triangle's -r: its vertices (kept first, in order),
+// its segments and boundary edges as segments (boundary edges get marker 1), its holes found
+// again from its triangles; each old triangle's maximum area (mesh.triangle_max_area, read
+// from PREFIX.area) bounds the new triangles whose centroid lies in it, together with
+// options.criteria. Throws InputError for a mesh with no triangles.
+TriMesh refine_mesh(const TriMesh& mesh, RefineOptions options, RefineReport* report = nullptr);
 
 const char* to_string(Selection s);
 const char* to_string(RefineOrder o);

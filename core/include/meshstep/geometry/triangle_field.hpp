@@ -1,7 +1,8 @@
 // A piecewise-constant field over a set of triangles: at a point, the value of a triangle
-// that holds it. Refinement reads per-region area bounds from one built on the starting
-// mesh: regions are bounded by segments, so a new triangle's centroid lies in a starting
-// triangle of its own region.
+// that holds it; over a triangle, the smallest positive value of the triangles it overlaps.
+// Refinement reads area bounds from one built on the starting mesh (per region) or on the
+// mesh being re-refined (per triangle, from its .area): a new triangle must meet the bound
+// of every old triangle it overlaps, even one that holds none of its points' samples.
 //
 // A uniform grid of about one cell per triangle, each cell listing the triangles whose
 // bounding box meets it; a query tests the few triangles of one cell exactly.
@@ -16,7 +17,7 @@
 #include "meshstep/geometry/point.hpp"
 #include "meshstep/geometry/predicates.hpp"
 
-namespace meshstep::detail {
+namespace meshstep {
 
 class TriangleField {
  public:
@@ -58,6 +59,27 @@ class TriangleField {
     }
   }
 
+  // The smallest positive value among the triangles whose interior meets the interior of
+  // the counterclockwise triangle (a, b, c); `none` if there is none.
+  double min_positive_over(const Point& a, const Point& b, const Point& c, double none) const {
+    if (triangles_.empty()) return none;
+    const double x0 = std::min({a.x, b.x, c.x}), x1 = std::max({a.x, b.x, c.x});
+    const double y0 = std::min({a.y, b.y, c.y}), y1 = std::max({a.y, b.y, c.y});
+    if (x1 < lo_.x || x0 > hi_.x || y1 < lo_.y || y0 > hi_.y) return none;
+    const std::array<Point, 3> query{a, b, c};
+    double best = none;
+    for (std::uint32_t y = row(y0); y <= row(y1); ++y)
+      for (std::uint32_t x = column(x0); x <= column(x1); ++x) {
+        const std::size_t cell = static_cast<std::size_t>(y) * side_ + x;
+        for (std::uint32_t k = cells_[cell]; k < cells_[cell + 1]; ++k) {
+          const Triangle& t = triangles_[members_[k]];
+          if (!(t.value > 0.0) || (best > 0.0 && t.value >= best)) continue;
+          if (interiors_meet(t.corners, query)) best = t.value;
+        }
+      }
+    return best;
+  }
+
   // The value of a triangle holding p (closed: on an edge counts), or `outside`.
   double at(const Point& p, double outside) const {
     if (triangles_.empty() || p.x < lo_.x || p.x > hi_.x || p.y < lo_.y || p.y > hi_.y) return outside;
@@ -77,6 +99,19 @@ class TriangleField {
     double value;
   };
 
+  // Two counterclockwise triangles overlap in their interiors unless an edge of one has the
+  // whole other on its outer side (touching along an edge or at a vertex is not overlap).
+  static bool separated_by_an_edge_of(const std::array<Point, 3>& s, const std::array<Point, 3>& t) {
+    for (int i = 0; i < 3; ++i) {
+      const Point &p = s[i], &q = s[(i + 1) % 3];
+      if (orient2d(p, q, t[0]) <= 0.0 && orient2d(p, q, t[1]) <= 0.0 && orient2d(p, q, t[2]) <= 0.0) return true;
+    }
+    return false;
+  }
+  static bool interiors_meet(const std::array<Point, 3>& s, const std::array<Point, 3>& t) {
+    return !separated_by_an_edge_of(s, t) && !separated_by_an_edge_of(t, s);
+  }
+
   std::uint32_t index(double v, double lo, double hi) const {
     if (!(hi > lo)) return 0;
     const double f = (v - lo) / (hi - lo) * side_;
@@ -92,4 +127,4 @@ class TriangleField {
   std::vector<std::uint32_t> members_;  // triangle indices by cell
 };
 
-}  // namespace meshstep::detail
+}  // namespace meshstep
