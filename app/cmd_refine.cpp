@@ -15,6 +15,7 @@
 #include "json_line.hpp"
 #include "meshstep/check/quality.hpp"
 #include "meshstep/error.hpp"
+#include "meshstep/io/esri_grid.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/refine/refine.hpp"
 #include "meshstep/refine/registry.hpp"
@@ -143,12 +144,19 @@ int run_refine(const RefineArgs& args) {
   criteria.max_steiner = args.max_steiner;
   double size = 0.0;
   if (!args.size.empty()) {
-    if (!parse_number(args.size, size)) {
-      print_error("--size " + args.size +
-                  ": size grids (ESRI ASCII) are not implemented yet; give a number");
-      return kExitBadInput;
+    if (parse_number(args.size, size)) {
+      criteria.size = [size](const Point&) { return size; };
+    } else {
+      // An ESRI ASCII grid of sizes: the cell holding a triangle's centroid gives its
+      // longest edge's bound (none outside the grid, on no-data cells and at values <= 0).
+      try {
+        auto grid = std::make_shared<io::EsriGrid>(io::read_esri_grid(args.size));
+        criteria.size = [grid](const Point& p) { return grid->at(p, -1.0); };
+      } catch (const InputError& e) {
+        print_error(std::string("--size: ") + e.what());
+        return kExitBadInput;
+      }
     }
-    criteria.size = [size](const Point&) { return size; };
   }
   bool any_bound = false;
   for (const CLI::Option* o : args.bounds) any_bound = any_bound || o->count() > 0;
@@ -184,7 +192,7 @@ int run_refine(const RefineArgs& args) {
   if (criteria.max_angle_deg < 180.0) bound("max angle " + number(criteria.max_angle_deg));
   if (criteria.max_aspect > 0.0) bound("max aspect " + number(criteria.max_aspect));
   if (criteria.max_area > 0.0) bound("max area " + number(criteria.max_area));
-  if (criteria.size) bound("size " + number(size));
+  if (criteria.size) bound("size " + (size > 0.0 ? number(size) : args.size));
   if (bounds_text.empty()) bounds_text = "no bounds";
   if (criteria.max_triangles) bound("at most " + std::to_string(criteria.max_triangles) + " triangles");
   if (criteria.max_steiner) bound("at most " + std::to_string(criteria.max_steiner) + " Steiner vertices");
@@ -232,7 +240,7 @@ int run_refine(const RefineArgs& args) {
                          " max_angle=" + number(criteria.max_angle_deg) +
                          " max_aspect=" + number(criteria.max_aspect) +
                          " max_area=" + number(criteria.max_area) +
-                         " size=" + number(criteria.size ? size : 0.0) +
+                         " size=" + (size > 0.0 ? number(size) : args.size.empty() ? "0" : args.size) +
                          " max_triangles=" + std::to_string(criteria.max_triangles) +
                          " max_steiner=" + std::to_string(criteria.max_steiner) +
                          " order=" + to_string(options.order) + " insertion=" + insertion_name(options) +
@@ -388,10 +396,11 @@ Command add_refine_command(CLI::App& parent) {
                              ->check(positive_number(false))
                              ->type_name("A"));
   args->bounds.push_back(cmd->add_option("--size", args->size,
-                                         "Every edge at most VALUE long (a positive number; size grids\n"
-                                         "are not implemented yet)")
-                             ->check(positive_number(false))  // a file name passes: refused later (exit 1)
-                             ->type_name("VALUE"));
+                                         "Every edge at most VALUE long: a positive number, or an ESRI ASCII\n"
+                                         "grid (.asc) whose cell under a triangle's centroid bounds its longest\n"
+                                         "edge (no bound outside the grid, on no-data cells, at values <= 0)")
+                             ->check(positive_number(false))  // a file name passes: read later (exit 1 if bad)
+                             ->type_name("VALUE|GRID.asc"));
   cmd->add_option("--max-triangles", args->max_triangles, "Stop once the mesh has N triangles")
       ->check(positive_number(false))
       ->type_name("N");

@@ -222,12 +222,43 @@ TEST_F(RefineCli, MissingInputNamesThePath) {
   EXPECT_TRUE(contains(r.err, "meshstep: error: " + missing)) << r.err;
 }
 
-TEST_F(RefineCli, SizeGridIsNotImplemented) {
+// --size GRID.asc: an ESRI ASCII grid of sizes, fine on the west half of the L and coarse
+// on the east; every edge meets the cell under its triangle's centroid. Bad grids are
+// input errors with the file and line, and nothing is written.
+TEST_F(RefineCli, SizeGridBoundsEdgesCellByCell) {
   const std::string input = write("ell.poly", kLShape);
-  const CommandResult r = meshstep("refine " + input + " --size abc");
-  EXPECT_EQ(r.status, 1);
-  EXPECT_TRUE(contains(r.err, "not implemented")) << r.err;
-  EXPECT_FALSE(fs::exists(dir_.file("ell.1.node")));
+  const std::string grid = write("sizes.asc",
+                                 "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1.5\n"
+                                 "NODATA_value -9999\n0.1 0.5\n0.1 0.5\n");
+  // 1.5 x 1.5 cells: x in [0, 1.5) is 0.1, [1.5, 3] is 0.5; the L spans [0, 3] x [0, 3].
+  const std::string prefix = dir_.file("graded");
+  const CommandResult r = meshstep("refine " + input + " --size " + grid + " -o " + prefix + " --stats json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(json_value(last_line(r.out), "bounds_met"), "true");
+  const TriMesh m = io::read_mesh(prefix);
+  std::size_t fine = 0, coarse = 0;
+  for (const auto& t : m.triangles) {
+    const Point &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]];
+    const double longest = std::max({std::hypot(a.x - b.x, a.y - b.y), std::hypot(b.x - c.x, b.y - c.y),
+                                     std::hypot(c.x - a.x, c.y - a.y)});
+    const double cx = (a.x + b.x + c.x) / 3.0;
+    ASSERT_LE(longest, (cx < 1.5 ? 0.1 : 0.5) * (1 + 1e-12)) << "centroid x " << cx;
+    (cx < 1.5 ? fine : coarse) += 1;
+  }
+  EXPECT_GT(fine, 10 * coarse);
+
+  const std::string bad = write("bad.asc", "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2\n3 x\n");
+  const CommandResult e = meshstep("refine " + input + " --size " + bad + " -o " + dir_.file("never"));
+  EXPECT_EQ(e.status, 1);
+  EXPECT_TRUE(contains(e.err, "bad.asc:7:")) << e.err;
+  EXPECT_FALSE(fs::exists(dir_.file("never.node")));
+  const CommandResult short_grid = meshstep("refine " + input + " --size " +
+                                            write("short.asc", "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3\n"));
+  EXPECT_EQ(short_grid.status, 1);
+  EXPECT_TRUE(contains(short_grid.err, "3 values; ncols x nrows = 4")) << short_grid.err;
+  const CommandResult missing = meshstep("refine " + input + " --size " + dir_.file("absent.asc"));
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_TRUE(contains(missing.err, "absent.asc")) << missing.err;
 }
 
 // A mesh prefix is re-refined (Triangle's -r): PREFIX.area bounds the triangles it names,

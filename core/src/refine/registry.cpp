@@ -62,7 +62,7 @@ constexpr std::array kCriteria = {
     PartInfo{"max-angle", "--max-angle DEG: every angle at most DEG (above 60)"},
     PartInfo{"max-aspect", "--max-aspect R: longest edge / shortest altitude at most R (equilateral: 1.1547)"},
     PartInfo{"max-area", "--max-area A: every triangle's area at most A"},
-    PartInfo{"size", "--size VALUE: every edge at most VALUE long"},
+    PartInfo{"size", "--size VALUE|GRID.asc: every edge at most VALUE long, or the value of an ESRI ASCII grid's cell under the triangle's centroid"},
     PartInfo{"max-triangles", "--max-triangles N: stop once the mesh has N triangles"},
     PartInfo{"max-steiner", "--max-steiner N: stop after inserting N vertices"},
 };

@@ -1,0 +1,84 @@
+// Reading ESRI ASCII grids (io/esri_grid.hpp).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "io/fields.hpp"
+#include "io/record_reader.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/io/esri_grid.hpp"
+
+namespace meshstep::io {
+namespace {
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+}  // namespace
+
+double EsriGrid::at(const Point& p, double outside) const {
+  const double fx = (p.x - x0) / cellsize, fy = (p.y - y0) / cellsize;
+  if (!(fx >= 0.0 && fy >= 0.0 && fx <= static_cast<double>(ncols) && fy <= static_cast<double>(nrows))) return outside;
+  const auto column = std::min(static_cast<std::size_t>(fx), ncols - 1);
+  const auto row_from_south = std::min(static_cast<std::size_t>(fy), nrows - 1);
+  const double v = values[(nrows - 1 - row_from_south) * ncols + column];
+  return has_nodata && v == nodata ? outside : v;
+}
+
+EsriGrid read_esri_grid(const std::string& path) {
+  detail::RecordReader r(path);
+  EsriGrid g;
+  bool seen[6] = {};  // ncols, nrows, x, y, cellsize, nodata
+  bool x_center = false, y_center = false;
+  const auto header_key = [](const std::string& key) -> int {
+    if (key == "ncols") return 0;
+    if (key == "nrows") return 1;
+    if (key == "xllcorner" || key == "xllcenter") return 2;
+    if (key == "yllcorner" || key == "yllcenter") return 3;
+    if (key == "cellsize") return 4;
+    if (key == "nodata_value") return 5;
+    return -1;
+  };
+  bool have_record = r.next();
+  for (; have_record; have_record = r.next()) {
+    const std::string key = lower(r.field(0));
+    const int k = header_key(key);
+    if (k < 0) break;  // the values begin
+    detail::expect_fields(r, 2, "key, value");
+    if (seen[k]) r.fail("'" + key + "' appears twice");
+    seen[k] = true;
+    switch (k) {
+      case 0: g.ncols = detail::parse_count(r, 1, "ncols"); break;
+      case 1: g.nrows = detail::parse_count(r, 1, "nrows"); break;
+      case 2: g.x0 = detail::parse_real(r, 1, key); x_center = key == "xllcenter"; break;
+      case 3: g.y0 = detail::parse_real(r, 1, key); y_center = key == "yllcenter"; break;
+      case 4: g.cellsize = detail::parse_real(r, 1, "cellsize"); break;
+      case 5: g.nodata = detail::parse_real(r, 1, "NODATA_value"); g.has_nodata = true; break;
+    }
+  }
+  const char* names[] = {"ncols", "nrows", "xllcorner or xllcenter", "yllcorner or yllcenter", "cellsize"};
+  for (int k = 0; k < 5; ++k)
+    if (!seen[k]) r.fail(std::string("the header has no ") + names[k]);
+  if (g.ncols == 0 || g.nrows == 0) r.fail("ncols and nrows must be positive");
+  if (!(g.cellsize > 0.0)) r.fail("cellsize must be positive");
+  if (x_center) g.x0 -= g.cellsize / 2.0;
+  if (y_center) g.y0 -= g.cellsize / 2.0;
+  const std::uint64_t count = static_cast<std::uint64_t>(g.ncols) * g.nrows;
+  if (count > (std::uint64_t{1} << 32)) r.fail("ncols x nrows = " + std::to_string(count) + " is too large a grid");
+  g.values.reserve(std::min<std::uint64_t>(count, std::uint64_t{1} << 24));  // the file may be short
+  for (; have_record; have_record = r.next())
+    for (std::size_t i = 0; i < r.field_count(); ++i) {
+      if (g.values.size() == count) r.fail("more values than ncols x nrows = " + std::to_string(count));
+      g.values.push_back(detail::parse_real(r, i, "grid value"));
+    }
+  if (g.values.size() != count)
+    r.fail("the grid has " + std::to_string(g.values.size()) + " values; ncols x nrows = " + std::to_string(count));
+  return g;
+}
+
+}  // namespace meshstep::io
