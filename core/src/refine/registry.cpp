@@ -75,7 +75,9 @@ constexpr std::array kDataStructures = {
 constexpr std::array kFileFormats = {
     PartInfo{".node", "Triangle's vertices (input: a point set; output)"},
     PartInfo{".poly", "Triangle's PSLG: vertices, segments, holes, regions (input; output)"},
-    PartInfo{".ele", "Triangle's triangles (output; with .node, a mesh to check)"},
+    PartInfo{".ele", "Triangle's triangles (output; with .node, a mesh to check or to refine again)"},
+    PartInfo{".area", "Triangle's per-triangle maximum areas (input with a mesh to refine again; output)"},
+    PartInfo{".asc", "ESRI ASCII grid (input: refine --size GRID.asc)"},
     PartInfo{".edge / .neigh", "Triangle's edges and neighbours (output, -e / -n)"},
     PartInfo{".mslog", "meshstep replay log (--record; read by meshstep log)"},
 };
