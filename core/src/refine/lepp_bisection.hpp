@@ -35,9 +35,10 @@ namespace meshstep::detail {
 template <TriangleMesh Mesh, class Rec>
 class LeppBisector {
  public:
+  // The criteria come with set_criteria(), before each run().
   LeppBisector(Triangulation<Mesh, Rec>& tri, const std::vector<Segment>& boundary, std::size_t input_count,
-               const ScaledCriteria& criteria, const RefineOptions& options)
-      : tri_(tri), mesh_(tri.mesh()), input_count_(input_count), criteria_(criteria), options_(options) {
+               const RefineOptions& options)
+      : tri_(tri), mesh_(tri.mesh()), input_count_(input_count), options_(options) {
     for (const Segment& s : boundary) markers_[edge_tie_key(s.a, s.b)] = s.marker;
   }
 
@@ -139,7 +140,6 @@ class LeppBisector {
 
   bool capped() const { return reached_cap(criteria_, tri_.points().size() - input_count_, mesh_); }
 
-
   // One step: the terminal edge of f's path, bisected with the triangles on both sides.
   // False, changing nothing, when the rounded midpoint would not leave every triangle
   // counterclockwise (an edge a few ulps long).
@@ -154,14 +154,7 @@ class LeppBisector {
     }
     Rec& rec = tri_.recorder();
     rec.step_begin(mesh_, replay::StepKind::bisect, a, b);
-    if constexpr (Rec::enabled) {
-      path_vertices_.clear();
-      for (const FaceId g : path_) {
-        const HalfEdge h = mesh_.half_edge(g);
-        path_vertices_.insert(path_vertices_.end(), {mesh_.origin(h), mesh_.dest(h), mesh_.apex(h)});
-      }
-      rec.lepp_path(a, b, mesh_.twin(e) == kNone ? 1 : 2, path_vertices_);
-    }
+    if constexpr (Rec::enabled) record_lepp_path(rec, mesh_, path_, e, mesh_.twin(e) == kNone ? 1 : 2, path_vertices_);
     const auto segment = markers_.find(edge_tie_key(a, b));
     const HalfEdge out = tri_.bisect(m, e);
     const VertexId v = mesh_.origin(out);
@@ -180,7 +173,6 @@ class LeppBisector {
   }
 
   bool splits_cleanly(HalfEdge h, const Point& p) const { return detail::splits_cleanly(mesh_, tri_.points(), h, p); }
-
 
   void assess(RefineReport& report) const {
     std::size_t bad = 0;

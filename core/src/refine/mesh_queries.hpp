@@ -67,6 +67,19 @@ inline bool too_large(const ScaledCriteria& criteria, const quality::Shape& s, c
   return false;
 }
 
+// Records a Lepp path: its faces as vertex triples (into `scratch`), its terminal edge e and
+// how many terminal triangles it has.
+template <class Rec, TriangleMesh Mesh>
+void record_lepp_path(Rec& rec, const Mesh& mesh, const std::vector<FaceId>& path, HalfEdge e,
+                      std::uint32_t terminal_triangles, std::vector<VertexId>& scratch) {
+  scratch.clear();
+  for (const FaceId g : path) {
+    const HalfEdge h = mesh.half_edge(g);
+    scratch.insert(scratch.end(), {mesh.origin(h), mesh.dest(h), mesh.apex(h)});
+  }
+  rec.lepp_path(mesh.origin(e), mesh.dest(e), terminal_triangles, scratch);
+}
+
 // Has the run reached its Steiner-vertex or triangle cap?
 template <TriangleMesh Mesh>
 bool reached_cap(const ScaledCriteria& criteria, std::size_t steiner, const Mesh& mesh) {

@@ -1,8 +1,8 @@
 // The refine() front door: checks the criteria, triangulates, refines, converts.
 #include "meshstep/refine/refine.hpp"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -11,9 +11,9 @@
 #include "meshstep/error.hpp"
 #include "meshstep/mesh/dcel.hpp"
 #include "meshstep/mesh/tds.hpp"
+#include "meshstep/geometry/triangle_field.hpp"
 #include "lepp_bisection.hpp"
 #include "refiner.hpp"
-#include "meshstep/geometry/triangle_field.hpp"
 
 namespace meshstep {
 namespace {
@@ -90,8 +90,7 @@ TriMesh refine_with(Pslg& input, const RefineOptions& options, RefineReport& rep
   // One algorithm object for every phase: what it knows of the boundary (which segment each
   // split vertex lies on, the small input angles) carries over.
   const auto refine_by = [&]<class Algorithm>(std::type_identity<Algorithm>) {
-    Algorithm algorithm(builder.triangulation(), builder.boundary_segments(), builder.input_count(),
-                        scaled(phases.front().criteria, builder.exponent(), regions), options);
+    Algorithm algorithm(builder.triangulation(), builder.boundary_segments(), builder.input_count(), options);
     for (const RefinePhase& phase : phases) {
       const auto phase_start = std::chrono::steady_clock::now();
       algorithm.set_criteria(scaled(phase.criteria, builder.exponent(), regions));
@@ -118,8 +117,7 @@ TriMesh run(Pslg& input, const RefineOptions& options, RefineReport& report) {
   return refine_with<Mesh>(input, options, report, std::move(recorder));
 }
 
-}  // namespace
-
+// Every set of criteria a run will use: its phases', or its one.
 std::vector<const RefineCriteria*> criteria_of(const RefineOptions& o) {
   if (o.phases.empty()) return {&o.criteria};
   std::vector<const RefineCriteria*> all;
@@ -134,6 +132,8 @@ void check_bisection(const RefineOptions& o, const RefineCriteria& c) {
     throw InputError(who + " cannot improve angles or aspect ratios: give it --max-area or --size only");
   if (c.max_area <= 0.0 && !c.size) throw InputError(who + " needs a size bound: --max-area or --size");
 }
+
+}  // namespace
 
 TriMesh refine(Pslg input, const RefineOptions& options, RefineReport* report) {
   for (const RefineCriteria* c : criteria_of(options)) {

@@ -18,8 +18,8 @@
 #pragma once
 
 #include <algorithm>
-#include <chrono>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <deque>
@@ -40,9 +40,10 @@ namespace meshstep::detail {
 template <TriangleMesh Mesh, class Rec>
 class Refiner {
  public:
+  // The criteria come with set_criteria(), before each run().
   Refiner(Triangulation<Mesh, Rec>& tri, const std::vector<Segment>& boundary, std::size_t input_count,
-          const ScaledCriteria& criteria, const RefineOptions& options)
-      : tri_(tri), mesh_(tri.mesh()), input_count_(input_count), criteria_(criteria), options_(options) {
+          const RefineOptions& options)
+      : tri_(tri), mesh_(tri.mesh()), input_count_(input_count), options_(options) {
     for (const Segment& s : boundary) subsegments_[key(s.a, s.b)] = {s.marker, s.a, s.b};
     on_segment_.assign(tri_.points().size(), {kNone, kNone});
     find_small_input_angles(boundary);
@@ -132,7 +133,6 @@ class Refiner {
   // the same way whichever vertex the data structure lists first.
   HalfEdge first_edge(FaceId f) const { return detail::first_edge(mesh_, f); }
 
-
   std::array<VertexId, 3> face_key(FaceId f) const {
     const HalfEdge h = mesh_.half_edge(f);
     std::array<VertexId, 3> k{mesh_.origin(h), mesh_.dest(h), mesh_.apex(h)};
@@ -157,7 +157,6 @@ class Refiner {
   const Point& point(VertexId v) const { return tri_.point(v); }
 
   bool capped() const { return reached_cap(criteria_, tri_.points().size() - input_count_, mesh_); }
-
 
   // The half-edge of subsegment a-b if it still is one: the hint if it still holds it, else
   // a search around either end (a vertex where two parts of the domain touch has two fans,
@@ -263,7 +262,6 @@ class Refiner {
 
   bool still_there(const Candidate& c) const { return holds_triangle(mesh_, c.face, c.a, c.b, c.c); }
 
-
   // The point a bad triangle asks for, and the alternative weighed against it.
   Point select(const Candidate& c, Point& alternative) {
     const Point &pa = point(c.a), &pb = point(c.b), &pc = point(c.c);
@@ -328,14 +326,7 @@ class Refiner {
     const HalfEdge e = lepp(f);
     const Point &a = point(mesh_.origin(e)), &b = point(mesh_.dest(e));
     const bool boundary = is_segment(e);
-    if constexpr (Rec::enabled) {
-      lepp_vertices_.clear();
-      for (const FaceId g : lepp_faces_) {
-        const HalfEdge h = mesh_.half_edge(g);
-        lepp_vertices_.insert(lepp_vertices_.end(), {mesh_.origin(h), mesh_.dest(h), mesh_.apex(h)});
-      }
-      tri_.recorder().lepp_path(mesh_.origin(e), mesh_.dest(e), boundary ? 1 : 2, lepp_vertices_);
-    }
+    if constexpr (Rec::enabled) record_lepp_path(tri_.recorder(), mesh_, lepp_faces_, e, boundary ? 1 : 2, lepp_vertices_);
     if (boundary || options_.selection == Selection::lepp_midpoint) return {(a.x + b.x) / 2.0, (a.y + b.y) / 2.0};
     // The centroid of the two terminal triangles (a, b, c) and (b, a, d): the mean of their
     // centroids.
@@ -499,7 +490,6 @@ class Refiner {
 
   bool splits_cleanly(HalfEdge h, const Point& p) const { return detail::splits_cleanly(mesh_, tri_.points(), h, p); }
 
-
   SubsegmentInfo take_subsegment(VertexId a, VertexId b) {
     const auto it = subsegments_.find(key(a, b));
     if (it == subsegments_.end()) return {1, a, b};
@@ -553,7 +543,6 @@ class Refiner {
     star_start_ = start;
     return start;
   }
-
 
   // Input vertices where two segments meet at less than 60 degrees: refinement cannot make
   // the triangles there meet the bounds, and the report says so.
