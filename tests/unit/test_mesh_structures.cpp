@@ -300,6 +300,46 @@ TYPED_TEST(MeshStructures, SplitBoundaryEdge) {
   }
 }
 
+TYPED_TEST(MeshStructures, MergeStarUndoesSplitFace) {
+  TypeParam m;
+  const HalfEdge h = make_sphere(m, 5);
+  const FaceSet before = face_set(m);
+  // Flags on the ring survive the merge; the spokes go with the vertex.
+  m.set_constrained(h, true);  // 0 -> 1
+  const HalfEdge out = m.split_face(m.face(h), 3);
+  m.set_constrained(out, true);  // a spoke: 3 -> 0
+  EXPECT_EQ(m.face_count(), 6u);
+  const HalfEdge merged = m.merge_star(find_half_edge(m, 3, 1));
+  EXPECT_EQ(face_set(m), before);
+  EXPECT_EQ(m.face_count(), 4u);
+  EXPECT_EQ(canonical(triple(m, m.face(merged))), (Triple{0, 1, 2}));
+  EXPECT_EQ(m.vertex_half_edge(3), kNone);
+  EXPECT_EQ(constrained_edges(m), (std::vector<std::pair<VertexId, VertexId>>{{0, 1}}));
+  ASSERT_VALID(m);
+  // The slots the merge freed are taken again.
+  m.split_face(m.face(merged), 4);
+  EXPECT_EQ(m.face_count(), 6u);
+  EXPECT_EQ(m.face_capacity(), 6u);
+  ASSERT_VALID(m);
+}
+
+TYPED_TEST(MeshStructures, MergeStarAfterAFlipAroundTheVertex) {
+  // 3 splits face (0, 1, 2), then 5 splits edge 3-0: 5 has neighbours 0, 1, 3, 2. Flipping
+  // 5-1 (to 0-3) leaves it degree 3, and the merge removes it: the vertex-removal sequence.
+  TypeParam m;
+  const HalfEdge h = make_sphere(m, 6);
+  m.split_face(m.face(h), 3);
+  m.split_edge(find_half_edge(m, 3, 0), 5);
+  const FaceSet before = face_set(m);
+  m.flip(find_half_edge(m, 5, 1));
+  ASSERT_VALID(m);
+  const HalfEdge out = m.merge_star(find_half_edge(m, 5, 0));
+  ASSERT_VALID(m);
+  EXPECT_EQ(m.face_count(), before.size() - 2);
+  EXPECT_EQ(face_set(m), faces_of({{0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {1, 0, I}, {2, 1, I}, {0, 2, I}}));
+  EXPECT_EQ(canonical(triple(m, m.face(out))), canonical({2, 0, 3}));
+}
+
 TYPED_TEST(MeshStructures, FlipAndFlipBack) {
   TypeParam m;
   const HalfEdge h = make_sphere(m, 4);
@@ -496,7 +536,7 @@ TYPED_TEST(MeshStructures, StaleHandlesAreSafeToTest) {
 // Random sequences applied to both structures.
 
 struct Op {
-  enum Kind { split_face, split_edge, flip, star_cavity, remove_face, set_constrained } kind;
+  enum Kind { split_face, split_edge, flip, star_cavity, remove_face, set_constrained, merge_star } kind;
   Triple face;    // canonical vertex triple of the face acted on
   int edge = 0;   // edge i runs face[i] -> face[(i + 1) % 3]
   unsigned mask = 0;
@@ -534,6 +574,7 @@ std::pair<VertexId, VertexId> apply(M& m, const Op& op) {
     case Op::set_constrained:
       m.set_constrained(edge_of(m, op), op.flag);
       return {kNone, kNone};
+    case Op::merge_star: out = m.merge_star(edge_of(m, op)); break;
   }
   return {m.origin(out), m.dest(out)};
 }
@@ -560,6 +601,26 @@ bool choose(const Tds& m, std::mt19937& rng, VertexId next_vertex, bool allow_re
     const VertexId c = m.apex(h), d = m.apex(t);
     if (c == d || find_half_edge(m, c, d) != kNone || find_half_edge(m, d, c) != kNone)
       return false;
+  } else if (r < 75) {
+    // A vertex of degree 3 with no boundary round it, whose merged face is not already
+    // there reversed (a tetrahedron would fold flat); searched from a random face, since
+    // a random edge rarely leaves one.
+    op.kind = Op::merge_star;
+    const auto mergeable = [&](HalfEdge e) {
+      HalfEdge g = e;
+      for (int i = 0; i < 3; ++i) {
+        if (m.twin(m.prev(g)) == kNone) return false;
+        g = m.twin(m.prev(g));
+      }
+      return g == e && find_face(m, {m.apex(m.twin(e)), m.apex(e), m.dest(e)}) == kNone;
+    };
+    const std::size_t start = rng() % faces.size();
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+      op.face = faces[(start + i) % faces.size()];
+      for (op.edge = 0; op.edge < 3; ++op.edge)
+        if (mergeable(edge_of(m, op))) return true;
+    }
+    return false;
   } else if (r < 90) {
     // A face and some neighbours form a disk without interior vertices exactly when the
     // ring's vertices are distinct.
@@ -594,7 +655,8 @@ void run_random_episode(unsigned seed, int operations, VertexId outer, bool allo
   b.init_sphere(0, 1, 2, outer);
   VertexId next_vertex = 4;
   int done = 0, attempts = 0;
-  int counts[6] = {};
+  int counts[7] = {};
+  std::size_t merged = 0;
   while (done < operations && attempts < 20 * operations) {
     ++attempts;
     Op op;
@@ -637,9 +699,14 @@ void run_random_episode(unsigned seed, int operations, VertexId outer, bool allo
     }
     if (op.kind == Op::split_face || op.kind == Op::split_edge || op.kind == Op::star_cavity)
       ++next_vertex;
+    if (op.kind == Op::merge_star) {
+      ++merged;
+      ASSERT_EQ(a.vertex_half_edge(op.face[op.edge]), kNone);
+      ASSERT_EQ(b.vertex_half_edge(op.face[op.edge]), kNone);
+    }
     if (!allow_remove) {
       // A closed surface: Euler gives F = 2V - 4 and E = 3V - 6, V counting the outer one.
-      const std::size_t vertices = next_vertex;
+      const std::size_t vertices = next_vertex - merged;
       ASSERT_EQ(b.face_count(), 2 * vertices - 4);
       ASSERT_EQ(b.edge_count(), 3 * vertices - 6);
       ASSERT_EQ(boundary_half_edges(b), 0u);
@@ -648,7 +715,7 @@ void run_random_episode(unsigned seed, int operations, VertexId outer, bool allo
   EXPECT_EQ(done, operations);
   // Every kind was exercised.
   for (const int k : {Op::split_face, Op::split_edge, Op::flip, Op::star_cavity,
-                      Op::set_constrained})
+                      Op::set_constrained, Op::merge_star})
     EXPECT_GT(counts[k], 0) << "kind " << k;
   if (allow_remove) {
     EXPECT_GT(counts[Op::remove_face], 0);

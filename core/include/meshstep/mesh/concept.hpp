@@ -14,7 +14,7 @@
 //
 // Constraint flags: flip makes an unconstrained diagonal; split_edge gives both halves the
 // old edge's flag; star_cavity keeps the ring edges' flags and makes unconstrained spokes;
-// remove_face keeps the flag on the side that remains. Call set_vertex_count before
+// merge_star keeps the ring edges' flags; remove_face keeps the flag on the side that remains. Call set_vertex_count before
 // init_sphere; reserve() counts faces of a closed surface.
 #pragma once
 
@@ -66,6 +66,10 @@ concept TriangleMesh = requires(M& m, const M& cm, HalfEdge h, FaceId f, VertexI
   // joining v to its boundary. ring holds the boundary half-edges inside the cavity, in
   // counterclockwise order (dest of one is origin of the next). Returns v -> origin(ring[0]).
   { m.star_cavity(ring, faces, v) } -> std::same_as<HalfEdge>;
+  // Remove the vertex origin(h), of degree 3 and not on the boundary: its three faces become
+  // the one triangle of its neighbours. Returns a half-edge of that face. The vertex keeps
+  // its id; vertex_half_edge(origin(h)) answers kNone from then on.
+  { m.merge_star(h) } -> std::same_as<HalfEdge>;
   { m.remove_face(f) };
   { m.rebuild_vertex_half_edges() };
   { m.set_constrained(h, flag) };          // both sides of the edge

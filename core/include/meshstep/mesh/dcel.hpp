@@ -202,6 +202,28 @@ class Dcel {
 
   // Leaves vertex_half_edge() stale for the face's vertices (the concept allows it until
   // rebuild_vertex_half_edges).
+  HalfEdge merge_star(HalfEdge h) {
+    // h = v->a in (v, a, b); going counterclockwise round v: (v, b, c), then (v, c, a).
+    const HalfEdge r0 = next(h), h1 = next(r0) ^ 1;
+    const HalfEdge r1 = next(h1), h2 = next(r1) ^ 1;
+    const HalfEdge r2 = next(h2);
+    assert(next(r2) == (h ^ 1));
+    const VertexId v = origin_[h];
+    const FaceId f = face_[h];
+    const FaceId g1 = face_[h1], g2 = face_[h2];
+    make_face(f, r0, r1, r2);
+    note_vertex(origin_[r0], r0);
+    note_vertex(origin_[r1], r1);
+    note_vertex(origin_[r2], r2);
+    free_pair(h >> 1);
+    free_pair(h1 >> 1);
+    free_pair(h2 >> 1);
+    free_face(g1);
+    free_face(g2);
+    vertex_half_edge_[slot(v)] = kNone;
+    return r0;
+  }
+
   void remove_face(FaceId f) {
     const HalfEdge e0 = face_half_edge_[f], e1 = next(e0), e2 = next(e1);
     detach(e0);

@@ -168,6 +168,25 @@ class Tds {
     return 3 * fan_[0] + 2;
   }
 
+  HalfEdge merge_star(HalfEdge h) {
+    // h = v->a in (v, a, b); going counterclockwise round v: (v, b, c), then (v, c, a).
+    const HalfEdge h1 = twin(prev(h)), h2 = twin(prev(h1));
+    assert(h1 != kNone && h2 != kNone && twin(prev(h2)) == h);
+    const HalfEdge r0 = next(h), r1 = next(h1), r2 = next(h2);
+    const VertexId v = origin(h), a = origin(r0), b = origin(r1), c = origin(r2);
+    const std::uint32_t across_ab = twins_[r0], across_bc = twins_[r1], across_ca = twins_[r2];
+    const FaceId f = face(h);
+    kill_face(face(h1));
+    kill_face(face(h2));
+    set_face(f, a, b, c);
+    relink(3 * f + 0, across_ab);
+    relink(3 * f + 1, across_bc);
+    relink(3 * f + 2, across_ca);
+    if (v == kInfiniteVertex) infinite_half_edge_ = kNone;
+    else vertex_half_edges_[v] = kNone;
+    return 3 * f;
+  }
+
   void remove_face(FaceId f) {
     for (int i = 0; i < 3; ++i) {
       const HalfEdge t = twin(3 * f + i);
