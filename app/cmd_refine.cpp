@@ -43,6 +43,7 @@ struct RefineArgs {
   std::string encroachment = "circle";
   std::string ds = "tds";
   bool convex_hull = false;
+  bool improve = false;
   std::string record;
   std::string stats;
   bool no_output = false;
@@ -134,6 +135,11 @@ int run_refine(const RefineArgs& args) {
   options.triangulate.insertion = args.insertion == "cavity" ? Insertion::cavity : Insertion::flip;
   if (args.insertion == "bisection") options.insertion = RefineInsertion::bisection;
   options.triangulate.convex_hull = args.convex_hull;
+  options.improve = options.improve || args.improve;
+  if (options.improve && options.insertion == RefineInsertion::bisection) {
+    print_error("--improve removes vertices from a Delaunay mesh: it does not go with bisection");
+    return kExitUsage;
+  }
 
   RefineCriteria& criteria = options.criteria;
   criteria.min_angle_deg = args.min_angle;
@@ -295,9 +301,10 @@ int run_refine(const RefineArgs& args) {
   }
   if (verbosity == Verbosity::verbose) {
     std::printf("  refinement: %zu segment splits, %zu triangles split, %zu points rejected (encroaching),"
-                " %zu bad triangles left at small input angles, %zu unsplittable segments\n",
+                " %zu bad triangles left at small input angles, %zu unsplittable segments,"
+                " %zu Steiner vertices removed\n",
                 report.segment_splits, report.triangles_split, report.rejected_points, report.skipped_small_angle,
-                report.unsplittable_segments);
+                report.unsplittable_segments, report.removed_vertices);
     std::printf("  after: %zu triangles below the minimum angle, %zu missing a bound\n", report.below_min_angle,
                 report.bad_triangles);
     // (report.triangulation.steiner_vertices is the run's total after refine(), not the
@@ -336,6 +343,7 @@ int run_refine(const RefineArgs& args) {
         .field("input_vertices", input_vertices)
         .field("input_segments", input_segments)
         .field("steiner", report.steiner_vertices)
+        .field("removed_vertices", report.removed_vertices)
         .field("segment_splits", report.segment_splits)
         .field("triangles_split", report.triangles_split)
         .field("rejected_points", report.rejected_points)
@@ -428,6 +436,9 @@ Command add_refine_command(CLI::App& parent) {
       ->capture_default_str();
   cmd->add_flag("-c,--convex-hull", args->convex_hull,
                 "Mesh the whole convex hull (minus holes), not only what segments enclose");
+  cmd->add_flag("--improve", args->improve,
+                "After refining, remove every free Steiner vertex whose removal raises the\n"
+                "smallest angle round it and keeps the bounds (what --algorithm improve does)");
   add_record_option(*cmd, args->record);
   cmd->add_option("-o,--output", args->prefix,
                   "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly\n"

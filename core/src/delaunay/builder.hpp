@@ -181,8 +181,23 @@ class Builder {
         input_count_(sorted.points.size()), input_of_(std::move(sorted.input_of)),
         tri_(std::move(sorted.points), options.insertion, std::move(rec)), segments_(tri_) {}
 
-  // Input numbering of an internal vertex (Steiner vertices keep theirs, after the input's).
-  std::uint32_t external(VertexId v) const { return v < input_count_ ? input_of_[v] : v; }
+  // Input numbering of an internal vertex. Steiner vertices follow the input's in the order
+  // they were made, closing the gaps that removed ones leave.
+  std::uint32_t external(VertexId v) const {
+    if (v < input_count_) return input_of_[v];
+    return steiner_index_.empty() ? v : steiner_index_[v - input_count_];
+  }
+  // Numbers the Steiner vertices that remain, when some were removed.
+  void number_steiner_vertices() {
+    if (tri_.removed_vertices().empty()) return;
+    const std::size_t count = tri_.points().size() - input_count_;
+    std::vector<std::uint8_t> removed(count, 0);
+    for (const VertexId v : tri_.removed_vertices()) removed[v - input_count_] = 1;
+    steiner_index_.assign(count, kNone);
+    std::uint32_t next = static_cast<std::uint32_t>(input_count_);
+    for (std::size_t i = 0; i < count; ++i)
+      if (!removed[i]) steiner_index_[i] = next++;
+  }
 
   // Duplicates are merged into whichever copy was inserted first, which the shuffled
   // insertion order makes arbitrary: let the output use the copy that comes first in the
@@ -340,8 +355,9 @@ class Builder {
 
   TriMesh to_tri_mesh() {
     prefer_first_duplicates();
+    number_steiner_vertices();
     const Mesh& m = tri_.mesh();
-    const std::size_t vertex_count = tri_.points().size();
+    const std::size_t vertex_count = tri_.points().size() - tri_.removed_vertices().size();
     TriMesh out;
     out.first_index = in_.first_index;
     out.input_vertex_count = input_count_;
@@ -390,7 +406,8 @@ class Builder {
     // The vertices last, once the mesh is released: a lower peak for large inputs.
     tri_.mesh() = Mesh{};
     out.points.resize(vertex_count);
-    for (VertexId v = 0; v < vertex_count; ++v) out.points[external(v)] = tri_.point(v);
+    for (VertexId v = 0; v < tri_.points().size(); ++v)
+      if (const std::uint32_t i = external(v); i != kNone) out.points[i] = tri_.point(v);
     scale_points(out.points, -exponent_);
     out.attributes_per_vertex = in_.attributes_per_vertex;
     out.vertex_attributes = std::move(in_.vertex_attributes);
@@ -412,6 +429,7 @@ class Builder {
   int exponent_;
   std::size_t input_count_;
   std::vector<std::uint32_t> input_of_;
+  std::vector<std::uint32_t> steiner_index_;  // by Steiner vertex: its output index (kNone: removed)
   Triangulation<Mesh, Rec> tri_;
   SegmentInserter<Mesh, Rec> segments_;
   std::vector<FaceId> stack_;

@@ -103,7 +103,8 @@ TriMesh refine_with(Pslg& input, const RefineOptions& options, RefineReport& rep
   if (options.insertion == RefineInsertion::bisection) refine_by(std::type_identity<detail::LeppBisector<Mesh, Rec>>{});
   else refine_by(std::type_identity<detail::Refiner<Mesh, Rec>>{});
   builder.reassign_regions();
-  report.steiner_vertices = builder.triangulation().points().size() - builder.input_count();
+  report.steiner_vertices = builder.triangulation().points().size() - builder.input_count() -
+                            builder.triangulation().removed_vertices().size();
   TriMesh out = builder.finish();
   report.refine_ms = ms_since(refine_start);
   return out;

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "meshstep/delaunay/triangulation.hpp"
+#include "meshstep/delaunay/vertex_removal.hpp"
 #include "meshstep/refine/lepp.hpp"
 #include "meshstep/refine/quality.hpp"
 #include "meshstep/refine/refine.hpp"
@@ -88,6 +89,8 @@ class Refiner {
       fix(c);
     }
     rec.phase_end(replay::Phase::refine);
+    if (options_.improve && !capped()) improve();
+    report.removed_vertices = removed_;
     report.segment_splits = segment_splits_;
     report.triangles_split = triangles_split_;
     report.rejected_points = rejected_;
@@ -193,13 +196,18 @@ class Refiner {
 
   // Is face f bad, and if so with what priority? Skips (and counts) the ones whose smallest
   // angle lies between two segments when only the angle bounds fail.
+  // Does a triangle of shape s miss an angle or aspect bound?
+  bool angle_bad(const quality::Shape& s) const {
+    return s.sin2_min_angle() < criteria_.sin2_min_angle || s.cos_max_angle() < criteria_.cos_max_angle ||
+           (criteria_.max_aspect > 0.0 && s.aspect() > criteria_.max_aspect);
+  }
+
   void check_face(FaceId f) {
     const HalfEdge h = first_edge(f);
     const VertexId a = mesh_.origin(h), b = mesh_.dest(h), c = mesh_.apex(h);
     const quality::Shape s = quality::shape(point(a), point(b), point(c));
     const double sin2 = s.sin2_min_angle();
-    const bool angle_bad = sin2 < criteria_.sin2_min_angle || s.cos_max_angle() < criteria_.cos_max_angle ||
-                           (criteria_.max_aspect > 0.0 && s.aspect() > criteria_.max_aspect);
+    const bool angle_bad = this->angle_bad(s);
     const bool size_bad = too_large(criteria_, s, point(a), point(b), point(c));
     if (!angle_bad && !size_bad) return;
     if (!size_bad && cannot_improve(h, s)) return;
@@ -220,6 +228,65 @@ class Refiner {
     for (const VertexId apex : {p.first, p.second})
       if ((apex == q.first || apex == q.second) && small_angle_[apex]) return true;
     return false;
+  }
+
+  // Improvement: removes free Steiner vertices whose removal raises the smallest angle of
+  // the triangles round them and leaves triangles that meet the criteria, worst
+  // neighbourhood first. A removal makes the neighbours candidates again. Every removal
+  // takes a vertex away for good, so the pass ends.
+  void improve() {
+    Rec& rec = tri_.recorder();
+    rec.phase_begin(replay::Phase::improve);
+    VertexRemover<Mesh, Rec> remover(tri_);
+    std::vector<std::pair<double, VertexId>> worst_first;
+    for (VertexId v = static_cast<VertexId>(input_count_); v < tri_.points().size(); ++v)
+      if (const HalfEdge out = mesh_.vertex_half_edge(v); out != kNone) worst_first.push_back({star_quality(out), v});
+    std::sort(worst_first.begin(), worst_first.end());
+    std::deque<VertexId> work;
+    std::vector<std::uint8_t> queued(tri_.points().size(), 0);
+    for (const auto& [quality, v] : worst_first) {
+      work.push_back(v);
+      queued[v] = 1;
+    }
+    while (!work.empty()) {
+      const VertexId v = work.front();
+      work.pop_front();
+      queued[v] = 0;
+      const HalfEdge out = mesh_.vertex_half_edge(v);
+      if (out == kNone || !remover.plan(out) || !removal_improves(remover.old_triangles(), remover.new_triangles()))
+        continue;
+      rec.step_begin(mesh_, replay::StepKind::remove_vertex, v);
+      for (const VertexId w : remover.apply())
+        if (w >= input_count_ && !queued[w]) {
+          work.push_back(w);
+          queued[w] = 1;
+        }
+      ++removed_;
+    }
+    rec.phase_end(replay::Phase::improve);
+  }
+
+  // sin^2 of the smallest angle of the triangles round origin(out).
+  double star_quality(HalfEdge out) const {
+    double worst = 1.0;
+    tri_.for_each_out_edge(out, [&](HalfEdge h) {
+      if (mesh_.apex(h) == kInfiniteVertex || mesh_.dest(h) == kInfiniteVertex) return;
+      worst = std::min(worst, quality::shape(point(mesh_.origin(h)), point(mesh_.dest(h)), point(mesh_.apex(h))).sin2_min_angle());
+    });
+    return worst;
+  }
+
+  template <class Triangles>
+  bool removal_improves(const Triangles& before, const Triangles& after) const {
+    double worst_before = 1.0;
+    for (const auto& t : before)
+      worst_before = std::min(worst_before, quality::shape(point(t[0]), point(t[1]), point(t[2])).sin2_min_angle());
+    for (const auto& t : after) {
+      const quality::Shape s = quality::shape(point(t[0]), point(t[1]), point(t[2]));
+      if (s.sin2_min_angle() <= worst_before || angle_bad(s) || too_large(criteria_, s, point(t[0]), point(t[1]), point(t[2])))
+        return false;
+    }
+    return true;
   }
 
   void clear_queues() {
@@ -260,7 +327,16 @@ class Refiner {
     return n;
   }
 
-  bool still_there(const Candidate& c) const { return holds_triangle(mesh_, c.face, c.a, c.b, c.c); }
+  // Is the candidate's triangle still in the mesh? Where it is, not only in the slot it had:
+  // a triangle that was destroyed and made again (a flip and its reverse) may or may not get
+  // its old slot back, depending on the data structure, and the runs must not depend on it.
+  bool still_there(Candidate& c) const {
+    if (holds_triangle(mesh_, c.face, c.a, c.b, c.c)) return true;
+    const HalfEdge h = tri_.find_edge(c.a, c.b);
+    if (h == kNone || mesh_.apex(h) != c.c) return false;
+    c.face = mesh_.face(h);
+    return true;
+  }
 
   // The point a bad triangle asks for, and the alternative weighed against it.
   Point select(const Candidate& c, Point& alternative) {
@@ -331,7 +407,9 @@ class Refiner {
     // The centroid of the two terminal triangles (a, b, c) and (b, a, d): the mean of their
     // centroids.
     const Point &c = point(mesh_.apex(e)), &d = point(mesh_.apex(mesh_.twin(e)));
-    return {(2.0 * (a.x + b.x) + c.x + d.x) / 6.0, (2.0 * (a.y + b.y) + c.y + d.y) / 6.0};
+    // (c + d) summed first: the same rounding whichever way round the data structure
+    // hands over the terminal edge.
+    return {(2.0 * (a.x + b.x) + (c.x + d.x)) / 6.0, (2.0 * (a.y + b.y) + (c.y + d.y)) / 6.0};
   }
 
   struct WalkResult {
@@ -341,9 +419,11 @@ class Refiner {
 
   // Straight-line walk from the centroid of face f towards p, stopping at the first segment
   // or boundary edge the line crosses. Where the line meets a vertex exactly it starts again
-  // from the centroid of the face it reached, so a walk never depends on a tie.
+  // from the centroid of the face it reached, so a walk never depends on a tie. Each face is
+  // read from its smallest vertex (first_edge): the centroid's rounding and the order the
+  // edges are tried in are then the mesh's, not the data structure's.
   WalkResult walk(FaceId f, const Point& p) {
-    HalfEdge h = mesh_.half_edge(f);
+    HalfEdge h = first_edge(f);
     Point from = centroid(h);
     const std::size_t limit = 2 * mesh_.face_count() + 16;
     for (std::size_t step = 0; step < limit; ++step) {
@@ -375,7 +455,7 @@ class Refiner {
         through_vertex = true;
       }
       if (is_segment(e[exit])) return {WalkResult::Kind::blocked, e[exit]};
-      h = mesh_.twin(e[exit]);
+      h = first_edge(mesh_.face(mesh_.twin(e[exit])));
       if (through_vertex) from = centroid(h);
     }
     throw std::logic_error("refinement: point location did not terminate");
@@ -445,7 +525,7 @@ class Refiner {
     if (lepp_selection()) requeue(c);
   }
 
-  void requeue(const Candidate& c) {
+  void requeue(Candidate c) {
     if (still_there(c)) push_bad(c);
   }
 
@@ -579,9 +659,7 @@ class Refiner {
       const VertexId a = mesh_.origin(h), b = mesh_.dest(h), c = mesh_.apex(h);
       const quality::Shape s = quality::shape(point(a), point(b), point(c));
       const bool below_angle = s.sin2_min_angle() < criteria_.sin2_min_angle;
-      const bool fails = below_angle || s.cos_max_angle() < criteria_.cos_max_angle ||
-                         (criteria_.max_aspect > 0.0 && s.aspect() > criteria_.max_aspect) ||
-                         too_large(criteria_, s, point(a), point(b), point(c));
+      const bool fails = angle_bad(s) || too_large(criteria_, s, point(a), point(b), point(c));
       below += below_angle;
       if (!fails) continue;
       ++bad;
@@ -617,7 +695,7 @@ class Refiner {
   std::vector<FaceId> cavity_;
   std::vector<HalfEdge> stack_;
   std::vector<HalfEdge> encroached_;
-  std::size_t segment_splits_ = 0, triangles_split_ = 0, rejected_ = 0, unsplittable_ = 0;
+  std::size_t segment_splits_ = 0, triangles_split_ = 0, rejected_ = 0, unsplittable_ = 0, removed_ = 0;
 };
 
 }  // namespace meshstep::detail

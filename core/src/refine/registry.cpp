@@ -37,6 +37,11 @@ constexpr std::array kAlgorithms = {
                   "Lepp-Delaunay (terminal-triangles centroid) to an aspect-ratio bound "
                   "(--max-aspect, default 2.83 = 1/sin 20.7 degrees)",
                   Selection::lepp_centroid, 0.0, RefineInsertion::delaunay, kDefaultMaxAspect},
+    AlgorithmInfo{"improve",
+                  "improvement + refinement (Coll et al.): Delaunay refinement (circumcenter; --select "
+                  "another), then removal of every free Steiner vertex whose removal raises the smallest "
+                  "angle round it and keeps the bounds",
+                  Selection::circumcenter, 20.7, RefineInsertion::delaunay, 0.0, false, true},
     AlgorithmInfo{"combined",
                   "combined criteria: a Lepp-centroid phase to an aspect-ratio bound (--max-aspect, "
                   "default 2.83), then a phase to the minimum angle (--min-angle, default 20.7)",
@@ -112,6 +117,7 @@ RefineOptions options_for(const AlgorithmInfo& algorithm) {
   o.algorithm = std::string(algorithm.name);
   o.selection = algorithm.selection;
   o.insertion = algorithm.insertion;
+  o.improve = algorithm.improve;
   return o;
 }
 

@@ -12,7 +12,7 @@ constexpr const char* kPhaseNames[] = {"insert_vertices", "recover_segments", "c
                                        "improve"};
 constexpr const char* kLocateNames[] = {"in_face", "on_edge", "on_vertex"};
 constexpr const char* kSplitNames[] = {"insert", "crossing", "encroached", "bisection"};
-constexpr const char* kFlipNames[] = {"delaunay", "segment_recovery"};
+constexpr const char* kFlipNames[] = {"delaunay", "segment_recovery", "vertex_removal"};
 constexpr const char* kRemoveNames[] = {"ghost", "hole", "outside"};
 
 static_assert(std::size(kStepNames) == static_cast<std::size_t>(StepKind::count_));

@@ -188,7 +188,7 @@ void LogReader::index_events(std::size_t block, const DecodedEvents& events) {
     if (h.type == EventType::vertex || h.type == EventType::duplicate) {
       const VertexId v = h.ids[0];
       if (v >= kInfiniteVertex) throw InputError(path_, 0, where(block) + ": event " + std::to_string(e) + " introduces an invalid vertex id");
-      if (v >= vertices_.size()) vertices_.resize(std::size_t{v} + 1, VertexInfo{{0, 0}, kNone, kNone, kNone});
+      if (v >= vertices_.size()) vertices_.resize(std::size_t{v} + 1, VertexInfo{{0, 0}, kNone, kNone, kNone, UINT64_MAX});
       VertexInfo& info = vertices_[v];
       info.point = h.point;
       info.event = e;
@@ -198,6 +198,13 @@ void LogReader::index_events(std::size_t block, const DecodedEvents& events) {
         info.same_as = h.ids[1];
         info.input_index = h.ids[2];
       }
+    }
+    if (h.type == EventType::remove_vertex) {
+      const VertexId v = h.ids[0];
+      if (v >= vertices_.size() || vertices_[v].removed != UINT64_MAX)
+        throw InputError(path_, 0, where(block) + ": event " + std::to_string(e) + " removes vertex " +
+                                       std::to_string(v) + ", which is not there to remove");
+      vertices_[v].removed = e;
     }
   }
   event_count_ += events.size();

@@ -173,6 +173,7 @@ TriMesh Replay::mesh() const {
   std::vector<VertexId> present;
   for (VertexId v = 0; v < vertices.size(); ++v) {
     if (vertices[v].event == kNone || vertices[v].event >= position_) continue;
+    if (vertices[v].removed < position_) continue;  // removed by then (improvement)
     input[v] = vertices[v].input_index;
     present.push_back(v);
   }

@@ -50,6 +50,13 @@ class Triangulation {
   HalfEdge flip(HalfEdge h, replay::FlipReason reason) { return rec_.flip(mesh_, h, reason); }
   void set_constrained(HalfEdge h, bool on, int marker) { rec_.set_constrained(mesh_, h, on, marker); }
   void remove_face(FaceId f, replay::RemoveReason reason) { rec_.remove_face(mesh_, f, reason); }
+  // Removes origin(h), of degree 3 (see TriangleMesh::merge_star); its id stays taken.
+  HalfEdge merge_star(HalfEdge h) {
+    removed_.push_back(mesh_.origin(h));
+    return rec_.merge_star(mesh_, h);
+  }
+  // The vertices merge_star removed, in the order it removed them.
+  const std::vector<VertexId>& removed_vertices() const { return removed_; }
 
   // Inserts every point in index order (callers sort the points spatially first); the first
   // three non-collinear ones start the triangulation. A point equal to an earlier one is
@@ -229,26 +236,22 @@ class Triangulation {
     }
   }
 
-  // Some half-edge from a to b, or kNone.
+  // Some half-edge from a to b, or kNone. Looked for among the faces round a and, as an
+  // edge coming into b, among the faces round b: a vertex where the domain pinches (two
+  // boundary fans meeting at one point) keeps only one fan in vertex_half_edge, and which one
+  // depends on the data structure, so one end alone may miss the edge.
   HalfEdge find_edge(VertexId a, VertexId b) const {
-    const HalfEdge start = mesh_.vertex_half_edge(a);
-    if (start == kNone) return kNone;
-    HalfEdge h = start;
-    do {
-      if (mesh_.dest(h) == b) return h;
-      const HalfEdge t = mesh_.twin(mesh_.prev(h));
-      if (t == kNone) break;
-      h = t;
-    } while (h != start);
-    // Open fan (boundary): rotate the other way as well.
-    h = start;
-    for (;;) {
-      const HalfEdge t = mesh_.twin(h);
-      if (t == kNone) return kNone;
-      h = mesh_.next(t);
-      if (h == start) return kNone;
-      if (mesh_.dest(h) == b) return h;
-    }
+    HalfEdge found = kNone;
+    if (const HalfEdge out = mesh_.vertex_half_edge(a); out != kNone)
+      for_each_out_edge(out, [&](HalfEdge h) {
+        if (found == kNone && mesh_.dest(h) == b) found = h;
+      });
+    if (found != kNone) return found;
+    if (const HalfEdge out = mesh_.vertex_half_edge(b); out != kNone)
+      for_each_out_edge(out, [&](HalfEdge h) {
+        if (found == kNone && mesh_.origin(mesh_.prev(h)) == a) found = mesh_.prev(h);
+      });
+    return found;
   }
 
   // Calls f for every half-edge leaving origin(out), going counterclockwise; on a boundary
@@ -404,6 +407,7 @@ class Triangulation {
   std::vector<Point> points_;
   Insertion insertion_;
   Mesh mesh_;
+  std::vector<VertexId> removed_;
   std::vector<VertexId> merged_into_;
   std::size_t duplicates_ = 0;
   std::array<VertexId, 3> first_{kNone, kNone, kNone};

@@ -78,6 +78,10 @@ struct RefineOptions {
   RefineInsertion insertion = RefineInsertion::delaunay;
   RefineOrder order = RefineOrder::worst_first;  // bisection: largest area first, or FIFO
   Encroachment encroachment = Encroachment::circle;
+  // Improvement + refinement (Coll et al. 2008): after refining, remove every free Steiner
+  // vertex (not on a segment) whose removal raises the smallest angle round it and leaves
+  // triangles that meet the criteria. Delaunay insertion only.
+  bool improve = false;
   // Refine each region of the input to its own maximum area (Region::max_area, from the
   // .poly's regional attributes), besides the global criteria.
   bool regional_max_area = true;
@@ -94,6 +98,7 @@ struct RefineReport {
   std::size_t rejected_points = 0;       // selected points that encroached (a segment split instead)
   std::size_t skipped_small_angle = 0;   // bad triangles left alone by rule (quality::cannot_improve)
   std::size_t unsplittable_segments = 0; // splits refused: the subsegment is a few ulps long
+  std::size_t removed_vertices = 0;      // Steiner vertices the improvement removed (not in steiner_vertices)
   bool stopped_by_cap = false;           // max_triangles or max_steiner reached
   // After the run: triangles that miss the bounds, and how many of them touch a small
   // input angle (a vertex where two segments meet at less than 60 degrees, or a vertex on

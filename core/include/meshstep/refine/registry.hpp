@@ -20,6 +20,8 @@ struct AlgorithmInfo {
   double default_max_aspect = 0.0;  // likewise (0: none)
   // Runs in two phases: an aspect-ratio phase, then a min-angle phase (combined criteria).
   bool aspect_then_angle = false;
+  // Removes Steiner vertices after refining (improvement + refinement, RefineOptions::improve).
+  bool improve = false;
 };
 
 // 1 / sin(20.7 degrees): a triangle whose aspect ratio (longest edge over shortest altitude,

@@ -41,7 +41,7 @@ enum class EventType : std::uint8_t {
   cavity,          // Bowyer-Watson: the faces in conflict replaced by a fan; ids: vertex
   constrain,       // code: 1 set, 0 cleared; ids: edge endpoints, segment marker
   remove_face,     // code: RemoveReason
-  remove_vertex,   // a vertex and its star replaced by a triangulation of the star's boundary
+  remove_vertex,   // a vertex of degree 3 removed: its three faces become one; ids: vertex
   point_selected,  // code: strategy; ids: the bad triangle; point: chosen; list/points: alternatives
   lepp_path,       // ids: terminal edge, number of terminal triangles; list: triangles (3 ids each)
   encroached,      // ids: segment endpoints, encroaching vertex (or kNone); point: encroaching point
@@ -65,7 +65,8 @@ enum class StepKind : std::uint8_t {
 enum class Phase : std::uint8_t { insert_vertices, recover_segments, carve, refine, improve, count_ };
 enum class LocateResult : std::uint8_t { in_face, on_edge, on_vertex, count_ };
 enum class SplitReason : std::uint8_t { insert, crossing, encroached, bisection, count_ };
-enum class FlipReason : std::uint8_t { delaunay, segment_recovery, count_ };
+// vertex_removal: a flip that lowers a vertex's degree on the way to removing it.
+enum class FlipReason : std::uint8_t { delaunay, segment_recovery, vertex_removal, count_ };
 enum class RemoveReason : std::uint8_t { ghost, hole, outside, count_ };
 
 // What one face slot holds: the triangle (counterclockwise, as the data structure stores

@@ -38,6 +38,7 @@ struct VertexInfo {
   std::uint32_t input_index = kNone;  // in the input's numbering (Steiner: its own id)
   std::uint64_t event = 0;            // the event that introduced it
   VertexId same_as = kNone;           // for a duplicate: the vertex standing for it
+  std::uint64_t removed = UINT64_MAX;  // the event that removed it (remove_vertex), if any
 };
 
 class LogReader {

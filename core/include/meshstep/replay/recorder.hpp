@@ -62,6 +62,7 @@ struct NullRecorder {
                        VertexId v) {
     return m.star_cavity(ring, faces, v);
   }
+  template <TriangleMesh M> HalfEdge merge_star(M& m, HalfEdge h) { return m.merge_star(h); }
   template <TriangleMesh M> void remove_face(M& m, FaceId f, RemoveReason) { m.remove_face(f); }
   template <TriangleMesh M> void set_constrained(M& m, HalfEdge h, bool on, int) {
     m.set_constrained(h, on);
@@ -185,6 +186,18 @@ class Recorder {
     for (const FaceId f : faces) put_face(m, f);
     const HalfEdge out = m.star_cavity(ring, faces, v);
     put_star(m, out);
+    end_event();
+    return out;
+  }
+
+  // The last move of a vertex removal (flips bring the vertex to degree 3 first).
+  template <TriangleMesh M> HalfEdge merge_star(M& m, HalfEdge h) {
+    begin(EventType::remove_vertex, 0);
+    ids(m.origin(h));
+    const HalfEdge h1 = m.twin(m.prev(h)), h2 = m.twin(m.prev(h1));
+    put_faces(m, {m.face(h), m.face(h1), m.face(h2)});
+    const HalfEdge out = m.merge_star(h);
+    put_faces(m, {m.face(out)});
     end_event();
     return out;
   }
