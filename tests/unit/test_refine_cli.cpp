@@ -146,6 +146,36 @@ TEST_F(RefineCli, LeppBisectionToAnAreaBound) {
   EXPECT_EQ(json_value(last_line(composed.out), "triangles"), json_value(json, "triangles"));
 }
 
+// improve: the plain run's Steiner vertices minus the removed ones, a valid mesh that still
+// meets the bound; --improve composes it with another selection; not with bisection.
+TEST_F(RefineCli, ImproveRemovesVerticesAndKeepsTheBound) {
+  const std::string input = write("hole.poly", kSquareWithHole);
+  const std::string prefix = dir_.file("improved");
+  const CommandResult plain = meshstep("refine " + input + " --min-angle 28 --max-area 0.05 --no-output --stats json");
+  const CommandResult r = meshstep("refine " + input + " --algorithm improve --min-angle 28 --max-area 0.05 -o " +
+                                   prefix + " --stats json");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string json = last_line(r.out), before = last_line(plain.out);
+  EXPECT_EQ(json_value(json, "bounds_met"), "true") << json;
+  EXPECT_GT(json_number(json, "removed_vertices"), 0.0) << json;
+  EXPECT_EQ(json_number(json, "steiner") + json_number(json, "removed_vertices"), json_number(before, "steiner"));
+  EXPECT_GE(json_number(json, "min_angle"), json_number(before, "min_angle"));
+  EXPECT_EQ(json_value(before, "removed_vertices"), "0") << before;
+  EXPECT_EQ(meshstep("check " + prefix + " --poly " + input + " -q").status, 0);
+  const TriMesh mesh = io::read_mesh(prefix);
+  EXPECT_EQ(std::to_string(mesh.points.size()), json_value(json, "vertices"));
+
+  const CommandResult composed = meshstep("refine " + input + " --select offcenter --improve --min-angle 28 "
+                                          "--max-area 0.05 --no-output --stats json");
+  ASSERT_EQ(composed.status, 0) << composed.err;
+  EXPECT_EQ(json_value(last_line(composed.out), "selection"), "offcenter");
+  const CommandResult bisection =
+      meshstep("refine " + input + " --algorithm lepp-bisection --improve --max-area 0.05 --no-output");
+  EXPECT_EQ(bisection.status, 2) << bisection.err;
+  EXPECT_TRUE(contains(bisection.err, "--improve")) << bisection.err;
+}
+
 TEST_F(RefineCli, DefaultPrefixAndDefaultBound) {
   const std::string input = write("ell.poly", kLShape);
   const CommandResult r = meshstep("refine " + input + " --algorithm offcenter --stats json");
