@@ -152,13 +152,16 @@ class Triangulation {
   // of each flipped quadrilateral, until the stack is empty. Entries may name edges that
   // later flips moved: checking any live edge is harmless, and an edge whose face a flip
   // changed is on that flip's quadrilateral, so it is pushed again.
-  void make_delaunay(std::vector<HalfEdge>& stack) {
+  // `flipped`, if given, receives the two faces of every flip (some appear more than once,
+  // and a later flip may have changed what they hold).
+  void make_delaunay(std::vector<HalfEdge>& stack, std::vector<FaceId>* flipped = nullptr) {
     while (!stack.empty()) {
       const HalfEdge h = stack.back();
       stack.pop_back();
       if (!mesh_.is_live(mesh_.face(h)) || is_locally_delaunay(h)) continue;
       const HalfEdge d = flip(h, replay::FlipReason::delaunay);  // apex(h) -> apex(twin(h))
       const HalfEdge e = mesh_.twin(d);
+      if (flipped) flipped->insert(flipped->end(), {mesh_.face(d), mesh_.face(e)});
       stack.push_back(mesh_.next(d));
       stack.push_back(mesh_.prev(d));
       stack.push_back(mesh_.next(e));
