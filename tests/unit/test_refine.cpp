@@ -113,7 +113,7 @@ TEST_P(RefineCorpus, MeetsTheBoundAwayFromSmallInputAngles) {
   const Pslg in = io::read_pslg(GetParam());
   const double input_angle = smallest_input_angle_deg(in);
   // The Lepp selections away from small input angles at 25 degrees (Lepp-midpoint's proven
-  // bound is 25.66; Lepp-centroid leaves a few triangles at 30 on earcut_water-huge, see
+  // bound is 25.66; both leave one triangle at 30 on earcut_water-huge, see
   // docs/refinement.md), and at 30 where every input angle allows it.
   std::vector<std::pair<Selection, double>> runs = {
       {Selection::circumcenter, 20.0},  {Selection::circumcenter, 25.0},  {Selection::circumcenter, 30.0},
