@@ -16,18 +16,11 @@
 #include "meshstep/delaunay/triangulation.hpp"
 #include "meshstep/mesh/dcel.hpp"
 #include "meshstep/mesh/tds.hpp"
+#include "triangulate_support.hpp"
 #include "meshstep/refine/lepp.hpp"
 
 namespace meshstep {
 namespace {
-
-std::vector<Point> random_points(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<Point> p(n);
-  for (Point& q : p) q = {u(rng), u(rng)};
-  return p;
-}
 
 // Rings of points on common circles, and their centers: cocircular quadruples everywhere and
 // many edges of equal length, where only the tie-break decides the path.
@@ -116,7 +109,7 @@ std::vector<std::vector<std::array<VertexId, 3>>> as_sorted_paths(const std::vec
 TEST(Lepp, RandomPointsInvariantsOnBothStructures) {
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    const std::vector<Point> points = random_points(3000, seed);
+    const std::vector<Point> points = testing::random_unit_points(3000, seed);
     EXPECT_EQ(as_sorted_paths(check_every_path<Tds>(points)), as_sorted_paths(check_every_path<Dcel>(points)));
   }
 }

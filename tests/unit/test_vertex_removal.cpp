@@ -15,19 +15,12 @@
 #include "meshstep/delaunay/vertex_removal.hpp"
 #include "meshstep/mesh/dcel.hpp"
 #include "meshstep/mesh/tds.hpp"
+#include "triangulate_support.hpp"
 
 namespace meshstep {
 namespace {
 
 using PointTriangle = std::array<std::pair<double, double>, 3>;
-
-std::vector<Point> random_points(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<Point> p(n);
-  for (Point& q : p) q = {u(rng), u(rng)};
-  return p;
-}
 
 // A grid with the centres of its cells: four cocircular points round every centre, and
 // every centre on the diagonals of its cell.
@@ -114,7 +107,7 @@ std::pair<std::vector<PointTriangle>, std::size_t> remove_many(const std::vector
 TEST(VertexRemoval, RandomPointsLeaveTheDelaunayTriangulationOfTheRest) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    const std::vector<Point> points = random_points(400, seed);
+    const std::vector<Point> points = testing::random_unit_points(400, seed);
     const auto tds = remove_many<Tds>(points, seed, 20);
     const auto dcel = remove_many<Dcel>(points, seed, 50);
     EXPECT_EQ(tds, dcel);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,15 @@
 #include "meshstep/delaunay/triangulate.hpp"
 
 namespace meshstep::testing {
+
+// n points uniform in the unit square, reproducible from the seed.
+inline std::vector<Point> random_unit_points(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Point> p(n);
+  for (Point& q : p) q = {u(rng), u(rng)};
+  return p;
+}
 
 inline std::vector<TriangulateOptions> all_configurations(bool convex_hull = false) {
   std::vector<TriangulateOptions> configs;
