@@ -244,17 +244,29 @@ class Triangulation {
   // boundary fans meeting at one point) keeps only one fan in vertex_half_edge, and which one
   // depends on the data structure, so one end alone may miss the edge.
   HalfEdge find_edge(VertexId a, VertexId b) const {
-    HalfEdge found = kNone;
-    if (const HalfEdge out = mesh_.vertex_half_edge(a); out != kNone)
-      for_each_out_edge(out, [&](HalfEdge h) {
-        if (found == kNone && mesh_.dest(h) == b) found = h;
-      });
-    if (found != kNone) return found;
-    if (const HalfEdge out = mesh_.vertex_half_edge(b); out != kNone)
-      for_each_out_edge(out, [&](HalfEdge h) {
-        if (found == kNone && mesh_.origin(mesh_.prev(h)) == a) found = mesh_.prev(h);
-      });
-    return found;
+    const HalfEdge from_a = first_out_edge(mesh_.vertex_half_edge(a), [&](HalfEdge h) { return mesh_.dest(h) == b; });
+    if (from_a != kNone) return from_a;
+    const HalfEdge into_b =
+        first_out_edge(mesh_.vertex_half_edge(b), [&](HalfEdge h) { return mesh_.origin(mesh_.prev(h)) == a; });
+    return into_b == kNone ? kNone : mesh_.prev(into_b);
+  }
+
+  // The first half-edge leaving origin(out) that `pred` accepts, going counterclockwise from
+  // out, then on a boundary clockwise; kNone if none does (or out is kNone).
+  template <class Pred>
+  HalfEdge first_out_edge(HalfEdge out, Pred&& pred) const {
+    if (out == kNone) return kNone;
+    HalfEdge h = out;
+    do {
+      if (pred(h)) return h;
+      h = mesh_.twin(mesh_.prev(h));
+    } while (h != kNone && h != out);
+    if (h == out) return kNone;
+    for (HalfEdge t = mesh_.twin(out); t != kNone; t = mesh_.twin(h)) {
+      h = mesh_.next(t);
+      if (pred(h)) return h;
+    }
+    return kNone;
   }
 
   // Calls f for every half-edge leaving origin(out), going counterclockwise; on a boundary
