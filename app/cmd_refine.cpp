@@ -44,6 +44,7 @@ struct RefineArgs {
   std::string ds = "tds";
   bool convex_hull = false;
   bool improve = false;
+  bool delete_free = false;
   std::string record;
   std::string stats;
   bool no_output = false;
@@ -136,8 +137,10 @@ int run_refine(const RefineArgs& args) {
   if (args.insertion == "bisection") options.insertion = RefineInsertion::bisection;
   options.triangulate.convex_hull = args.convex_hull;
   options.improve = options.improve || args.improve;
-  if (options.improve && options.insertion == RefineInsertion::bisection) {
-    print_error("--improve removes vertices from a Delaunay mesh: it does not go with bisection");
+  options.delete_free_near_splits = args.delete_free;
+  if ((options.improve || options.delete_free_near_splits) && options.insertion == RefineInsertion::bisection) {
+    print_error(std::string(options.improve ? "--improve" : "--delete-free") +
+                " removes vertices from a Delaunay mesh: it does not go with bisection");
     return kExitUsage;
   }
 
@@ -439,6 +442,9 @@ Command add_refine_command(CLI::App& parent) {
   cmd->add_flag("--improve", args->improve,
                 "After refining, remove every free Steiner vertex whose removal raises the\n"
                 "smallest angle round it and keeps the bounds (what --algorithm improve does)");
+  cmd->add_flag("--delete-free", args->delete_free,
+                "When a segment is split, remove the free Steiner vertices inside its\n"
+                "diametral circle (Ruppert's variant; counted in removed_vertices)");
   add_record_option(*cmd, args->record);
   cmd->add_option("-o,--output", args->prefix,
                   "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly\n"

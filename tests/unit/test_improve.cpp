@@ -169,6 +169,64 @@ TEST(Improve, EachRecordedRemovalRaisesTheAngleRoundItsVertex) {
   EXPECT_GT(total_removed, 0u);
 }
 
+// Deletion of free vertices near split segments (with the diametral lens, which lets
+// vertices into a segment's diametral circle): the mesh stays a valid CDT meeting the bound,
+// tds and dcel agree, and every vertex a split step removed lay inside the diametral circle
+// of the segment that step split (read back from the recorded log).
+TEST(DeleteFreeNearSplits, RemovesOnlyVerticesInTheSplitSegmentsCircle) {
+  testing::TempDir dir("meshstep_delete_free_");
+  const std::string path = dir.file("delete.mslog");
+  std::size_t removed = 0;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const Pslg in = random_square(150, seed);
+    RefineOptions o = at_angle(30.0, false);
+    o.encroachment = Encroachment::lens;
+    o.delete_free_near_splits = true;
+    RefineReport report, dcel_report;
+    TriMesh direct;
+    {
+      replay::LogWriter writer(path, replay::LogHeader{});
+      o.triangulate.record = &writer;
+      direct = refine(in, o, &report);
+      writer.finish();
+    }
+    o.triangulate.record = nullptr;
+    o.triangulate.data_structure = DataStructure::dcel;
+    const TriMesh dcel = refine(in, o, &dcel_report);
+    const CheckReport check = check_mesh(direct, &in);
+    EXPECT_TRUE(check.ok) << (check.problems.empty() ? std::string() : check.problems.front());
+    EXPECT_TRUE(report.bounds_met);
+    EXPECT_EQ(canonical_triangles(dcel), canonical_triangles(direct));
+    EXPECT_EQ(direct.points.size(), in.points.size() + report.steiner_vertices);
+    removed += report.removed_vertices;
+
+    const replay::LogReader log(path);
+    const replay::VerifyReport v = replay::verify(log);
+    ASSERT_TRUE(v.ok) << v.problem;
+    std::size_t seen = 0;
+    Point a{}, b{};
+    bool in_split = false;
+    for (std::uint64_t e = 0; e < log.event_count(); ++e) {
+      const replay::Event ev = log.event(e);
+      if (ev.type == replay::EventType::step_begin) {
+        in_split = ev.code == static_cast<std::uint8_t>(replay::StepKind::split_segment);
+        if (in_split) {
+          a = log.vertices()[ev.ids[0]].point;
+          b = log.vertices()[ev.ids[1]].point;
+        }
+      }
+      if (ev.type != replay::EventType::remove_vertex) continue;
+      ASSERT_TRUE(in_split) << "a removal outside a segment split, event " << e;
+      const Point q = log.vertices()[ev.ids[0]].point;
+      EXPECT_LT((a.x - q.x) * (b.x - q.x) + (a.y - q.y) * (b.y - q.y), 0.0) << "event " << e;
+      ++seen;
+    }
+    EXPECT_EQ(seen, report.removed_vertices);
+  }
+  EXPECT_GT(removed, 0u);
+}
+
 TEST(Improve, IsARegisteredAlgorithm) {
   const AlgorithmInfo* improve = find_algorithm("improve");
   ASSERT_NE(improve, nullptr);

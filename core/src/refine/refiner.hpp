@@ -537,8 +537,57 @@ class Refiner {
     ++segment_splits_;
     segments_.push_back({std::min(a, b), v, kNone});
     segments_.push_back({v, std::max(a, b), kNone});
+    if (options_.delete_free_near_splits) {
+      delete_free_vertices_near(a, b, v);
+      out = mesh_.vertex_half_edge(v);
+    }
     after_insertion(out);
     return true;
+  }
+
+  // Optional, after splitting segment a-b at v (Ruppert's variant): the free Steiner vertices
+  // (not on a segment) inside a-b's diametral circle are removed, so that none crowds the
+  // new subsegments. Found from v's faces outwards, through faces with a vertex in the
+  // circle. The triangles each removal makes are checked, and remembered for still_there()
+  // (a removal may bring back triangles the vertex's insertion destroyed).
+  void delete_free_vertices_near(VertexId a, VertexId b, VertexId v) {
+    const Point &pa = point(a), &pb = point(b);
+    const auto inside = [&](VertexId x) {  // the diametral circle, whatever --encroachment says
+      const Point& q = point(x);
+      return x != a && x != b && x != v && (pa.x - q.x) * (pb.x - q.x) + (pa.y - q.y) * (pb.y - q.y) < 0.0;
+    };
+    const auto has_inside = [&](FaceId f) {
+      const HalfEdge h = mesh_.half_edge(f);
+      return inside(mesh_.origin(h)) || inside(mesh_.dest(h)) || inside(mesh_.apex(h));
+    };
+    cavity_.clear();
+    tri_.for_each_out_edge(mesh_.vertex_half_edge(v), [&](HalfEdge h) { cavity_.push_back(mesh_.face(h)); });
+    doomed_.clear();
+    for (std::size_t i = 0; i < cavity_.size(); ++i) {
+      const HalfEdge first = mesh_.half_edge(cavity_[i]);
+      for (const HalfEdge h : {first, mesh_.next(first), mesh_.prev(first)}) {
+        const VertexId x = mesh_.origin(h);
+        if (inside(x) && x >= input_count_ && on_segment_[x].first == kNone) doomed_.push_back(x);
+        if (is_segment(h)) continue;
+        const FaceId g = mesh_.face(mesh_.twin(h));
+        if (has_inside(g) && std::find(cavity_.begin(), cavity_.end(), g) == cavity_.end()) cavity_.push_back(g);
+      }
+    }
+    std::sort(doomed_.begin(), doomed_.end());
+    doomed_.erase(std::unique(doomed_.begin(), doomed_.end()), doomed_.end());
+    for (const VertexId x : doomed_) {
+      const HalfEdge out = mesh_.vertex_half_edge(x);
+      if (out == kNone || !remover_.plan(out)) continue;
+      const std::vector<std::array<VertexId, 3>> made = remover_.new_triangles();
+      remover_.apply();
+      ++removed_;
+      for (const auto& t : made) {
+        std::array<VertexId, 3> k = t;
+        std::sort(k.begin(), k.end());
+        recreated_.insert(triangle_hash(k));
+        if (const HalfEdge h = tri_.find_edge(t[0], t[1]); h != kNone && mesh_.apex(h) == t[2]) check_face(mesh_.face(h));
+      }
+    }
   }
 
   bool splits_cleanly(HalfEdge h, const Point& p) const { return detail::splits_cleanly(mesh_, tri_.points(), h, p); }
@@ -669,6 +718,8 @@ class Refiner {
   std::vector<HalfEdge> stack_;
   std::vector<HalfEdge> encroached_;
   std::vector<FaceId> flipped_;
+  std::vector<VertexId> doomed_;  // free vertices near a split segment, to delete
+  VertexRemover<Mesh, Rec> remover_{tri_};
   std::unordered_set<std::uint64_t> recreated_;  // hashes of triangles a split's flips made (collisions: a search more)
   std::size_t segment_splits_ = 0, triangles_split_ = 0, rejected_ = 0, unsplittable_ = 0, removed_ = 0;
 };

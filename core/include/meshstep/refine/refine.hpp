@@ -82,6 +82,9 @@ struct RefineOptions {
   // vertex (not on a segment) whose removal raises the smallest angle round it and leaves
   // triangles that meet the criteria. Delaunay insertion only.
   bool improve = false;
+  // When a segment is split, remove the free Steiner vertices inside its diametral circle
+  // (Ruppert's variant: they would crowd the new subsegments). Delaunay insertion only.
+  bool delete_free_near_splits = false;
   // Refine each region of the input to its own maximum area (Region::max_area, from the
   // .poly's regional attributes), besides the global criteria.
   bool regional_max_area = true;
@@ -98,7 +101,8 @@ struct RefineReport {
   std::size_t rejected_points = 0;       // selected points that encroached (a segment split instead)
   std::size_t skipped_small_angle = 0;   // bad triangles left alone by rule (quality::cannot_improve)
   std::size_t unsplittable_segments = 0; // splits refused: the subsegment is a few ulps long
-  std::size_t removed_vertices = 0;      // Steiner vertices the improvement removed (not in steiner_vertices)
+  std::size_t removed_vertices = 0;      // Steiner vertices removed again (improvement, deletion near
+                                         // split segments); not in steiner_vertices
   bool stopped_by_cap = false;           // max_triangles or max_steiner reached
   // After the run: triangles that miss the bounds, and how many of them touch a small
   // input angle (a vertex where two segments meet at less than 60 degrees, or a vertex on
