@@ -179,12 +179,18 @@ class Refiner {
     return holds(h) && is_segment(h) ? h : kNone;
   }
 
+  // Is p strictly inside the circle with diameter a-b (the angle a-p-b over 90 degrees)?
+  bool in_diametral_circle(const Point& p, VertexId a, VertexId b) const {
+    const Point &pa = point(a), &pb = point(b);
+    return (pa.x - p.x) * (pb.x - p.x) + (pa.y - p.y) * (pb.y - p.y) < 0.0;
+  }
+
   // Does p encroach on the segment a-b?
   bool encroaches(const Point& p, VertexId a, VertexId b) const {
+    if (options_.encroachment == Encroachment::circle) return in_diametral_circle(p, a, b);
     const Point &pa = point(a), &pb = point(b);
     const double ax = pa.x - p.x, ay = pa.y - p.y, bx = pb.x - p.x, by = pb.y - p.y;
     const double dot = ax * bx + ay * by;
-    if (options_.encroachment == Encroachment::circle) return dot < 0.0;
     // The lens: the angle a-p-b is over 120 degrees.
     return dot < 0.0 && 4.0 * dot * dot > (ax * ax + ay * ay) * (bx * bx + by * by);
   }
@@ -551,10 +557,8 @@ class Refiner {
   // circle. The triangles each removal makes are checked, and remembered for still_there()
   // (a removal may bring back triangles the vertex's insertion destroyed).
   void delete_free_vertices_near(VertexId a, VertexId b, VertexId v) {
-    const Point &pa = point(a), &pb = point(b);
     const auto inside = [&](VertexId x) {  // the diametral circle, whatever --encroachment says
-      const Point& q = point(x);
-      return x != a && x != b && x != v && (pa.x - q.x) * (pb.x - q.x) + (pa.y - q.y) * (pb.y - q.y) < 0.0;
+      return x != a && x != b && x != v && in_diametral_circle(point(x), a, b);
     };
     const auto has_inside = [&](FaceId f) {
       const HalfEdge h = mesh_.half_edge(f);

@@ -73,17 +73,17 @@ class VertexRemover {
   // now in a new triangle.
   const std::vector<VertexId>& apply() {
     polygon_ = ring_;
-    std::vector<std::uint8_t> done(plan_.size(), 0);
-    done[holder_] = 1;
+    done_.assign(plan_.size(), 0);
+    done_[holder_] = 1;
     while (polygon_.size() > 3) {
       const std::size_t n = polygon_.size();
       bool cut = false;
       for (std::size_t i = 0; i < n && !cut; ++i) {
         const VertexId p = polygon_[(i + n - 1) % n], c = polygon_[i], q = polygon_[(i + 1) % n];
         for (std::size_t t = 0; t < plan_.size() && !cut; ++t) {
-          if (done[t] || !same_triangle(plan_[t], {p, c, q})) continue;
+          if (done_[t] || !same_triangle(plan_[t], {p, c, q})) continue;
           tri_.flip(tri_.find_edge(vertex_, c), replay::FlipReason::vertex_removal);
-          done[t] = 1;
+          done_[t] = 1;
           polygon_.erase(polygon_.begin() + static_cast<std::ptrdiff_t>(i));
           cut = true;
         }
@@ -99,8 +99,6 @@ class VertexRemover {
     tri_.make_delaunay(stack_);
     return ring_;
   }
-
-  VertexId vertex() const { return vertex_; }
 
  private:
   const Point& point(VertexId v) const { return tri_.point(v); }
@@ -164,6 +162,7 @@ class VertexRemover {
   std::vector<Triangle> plan_, old_;
   std::size_t holder_ = 0;
   std::vector<HalfEdge> stack_;
+  std::vector<std::uint8_t> done_;  // by planned triangle: cut off already (scratch, kept)
 };
 
 }  // namespace meshstep
