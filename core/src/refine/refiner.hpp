@@ -7,10 +7,10 @@
 // point is rejected and those segments are split instead; otherwise it is inserted. New
 // faces are checked as they appear, so the queue holds every bad triangle at all times.
 //
-// Segment splits use concentric shells: a subsegment with exactly one input-vertex end is
-// split at a power-of-two distance from that end, so that splits on two segments meeting at a
-// small angle stay at matching distances and do not chase each other (Ruppert's
-// "modified segment splitting"). A bad triangle whose smallest angle sits between two
+// Segment splits use concentric shells: a subsegment with exactly one segment end (an input
+// vertex or a crossing) is split at a power-of-two distance from that end, so that splits on
+// two segments meeting at a small angle stay at matching distances and do not chase each
+// other (Ruppert's "modified segment splitting"). A bad triangle whose smallest angle sits between two
 // segments cannot be improved (the angle is the input's) and is skipped.
 //
 // Works in the triangulation's scaled coordinates (triangulate's exact power-of-two scaling):
@@ -502,7 +502,7 @@ class Refiner {
   }
 
   // Splits the segment of h: at its midpoint, or on a concentric shell around its one
-  // input-vertex end. `by`: the vertex or rejected point that encroached, for the record.
+  // segment end (is_segment_end). `by`: the vertex or rejected point that encroached, for the record.
   // Returns false, changing nothing, when the rounded split point would not leave both
   // halves with valid triangles (a subsegment a few ulps long): the floor of refinement.
   bool split_segment(HalfEdge h, VertexId by_vertex, const Point* by_point) {
@@ -604,12 +604,17 @@ class Refiner {
     return info;
   }
 
+  // A vertex where segments end: an input vertex, or one the triangulation put where two
+  // segments cross (a crossing makes small angles as surely as the input's own corners).
+  // Not a vertex that refinement put on a segment.
+  bool is_segment_end(VertexId v) const { return on_segment_[v].first == kNone; }
+
   Point split_point(VertexId a, VertexId b) const {
     const Point &pa = point(a), &pb = point(b);
-    const bool a_input = a < input_count_, b_input = b < input_count_;
-    if (a_input == b_input) return {(pa.x + pb.x) / 2.0, (pa.y + pb.y) / 2.0};
-    // A shell around the input end: the power of two nearest half the length.
-    const Point &from = a_input ? pa : pb, &to = a_input ? pb : pa;
+    const bool a_end = is_segment_end(a), b_end = is_segment_end(b);
+    if (a_end == b_end) return {(pa.x + pb.x) / 2.0, (pa.y + pb.y) / 2.0};
+    // A shell around the segment's end: the power of two nearest half the length.
+    const Point &from = a_end ? pa : pb, &to = a_end ? pb : pa;
     const double length = std::sqrt(quality::squared_distance(pa, pb));
     const double d = std::exp2(std::round(std::log2(length / 2.0)));
     const double t = d / length;
