@@ -12,6 +12,7 @@
 #include "meshstep/io/triangle_io.hpp"
 #include "run_cli.hpp"
 #include "temp_dir.hpp"
+#include "triangulate_support.hpp"
 
 namespace meshstep {
 namespace {
@@ -336,6 +337,31 @@ TEST_F(RefineCli, MaxSteinerStopsAtTheCap) {
   EXPECT_TRUE(contains(r.err, "--max-steiner")) << r.err;
   EXPECT_TRUE(contains(r.out, "bounds missed by")) << r.out;
   EXPECT_FALSE(fs::exists(dir_.file("hole.1.node")));  // --no-output
+}
+
+// Longest-edge midpoints against an angle bound: on A.poly at 30 degrees they never finish
+// (the smallest angle falls as the vertices pile up). Without a cap of the user's the run gets
+// one and says so up front; with one, or with an area bound only, nothing is added.
+TEST_F(RefineCli, MidpointsAgainstAnAngleBoundGetACap) {
+  const fs::path a = testing::shared_data() / "pslg" / "A.poly";
+  if (!fs::exists(a)) GTEST_SKIP() << a << " is absent: skipped";
+  const CommandResult r = meshstep("refine " + a.string() + " --algorithm midpoint-area --min-angle 30 --no-output --stats json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string json = last_line(r.out);
+  EXPECT_EQ(json_value(json, "stopped_by_cap"), "true") << json;
+  EXPECT_EQ(json_number(json, "steiner"), 100'000.0 + 100.0 * json_number(json, "input_vertices")) << json;
+  EXPECT_TRUE(contains(r.err, "longest-edge midpoints")) << r.err;
+  EXPECT_TRUE(contains(r.err, "--max-steiner")) << r.err;
+
+  const CommandResult capped =
+      meshstep("refine " + a.string() + " --algorithm midpoint-area --min-angle 30 --max-steiner 500 --no-output --stats json");
+  ASSERT_EQ(capped.status, 0) << capped.err;
+  EXPECT_EQ(json_number(last_line(capped.out), "steiner"), 500.0);
+  EXPECT_FALSE(contains(capped.err, "longest-edge midpoints")) << capped.err;
+  const CommandResult area = meshstep("refine " + a.string() + " --algorithm midpoint-area --max-area 0.01 --no-output --stats json");
+  ASSERT_EQ(area.status, 0) << area.err;
+  EXPECT_EQ(json_value(last_line(area.out), "bounds_met"), "true");
+  EXPECT_FALSE(contains(area.err, "longest-edge midpoints")) << area.err;
 }
 
 TEST_F(RefineCli, RecordedRunVerifies) {

@@ -1,0 +1,223 @@
+// refine_table DIR [--inputs A,guitar,...] [--bounds 20,25,...,36] [--max-steiner N]
+//
+// The comparison tables of docs/refinement.md, as Markdown on standard output: each Delaunay
+// selection at each angle bound on each input (Steiner vertices, triangles, smallest angle,
+// bound met, misses and how many of them lie away from small input angles, ms); the highest
+// bound each selection reaches on each input; improvement + refinement against the plain
+// run (25 to 33 degrees); and the area, aspect and combined algorithms. One run per cell (refinement is
+// deterministic; the ms column is one measurement, for scale only).
+//
+// Exit status: 0 ok, 1 a run failed, 2 usage error or unreadable input.
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include "meshstep/check/quality.hpp"
+#include "meshstep/delaunay/triangulate.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/io/triangle_io.hpp"
+#include "meshstep/refine/refine.hpp"
+#include "meshstep/refine/registry.hpp"
+
+namespace {
+
+using namespace meshstep;
+
+constexpr const char* kUsage =
+    "usage: refine_table DIR [--inputs A,guitar,la,face,earcut_water-huge] [--bounds 20,25,30,33,34,35,36]\n"
+    "                    [--max-steiner N]\n"
+    "Prints docs/refinement.md's tables for DIR/NAME.poly of each input.\n";
+
+int usage_error(const std::string& message) {
+  std::fprintf(stderr, "refine_table: error: %s\n%s", message.c_str(), kUsage);
+  return 2;
+}
+
+template <class T>
+bool parse_whole(std::string_view text, T& value) {
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return ec == std::errc{} && end == text.data() + text.size();
+}
+
+struct Run {
+  RefineReport report;
+  AngleStats angles;
+  std::size_t triangles = 0;
+  double ms = 0.0;
+};
+
+Run run(const Pslg& in, const RefineOptions& options) {
+  Run r;
+  const auto start = std::chrono::steady_clock::now();
+  const TriMesh m = refine(in, options, &r.report);
+  r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  r.angles = angle_stats(m);
+  r.triangles = m.triangles.size();
+  return r;
+}
+
+std::vector<std::string> split(std::string_view text) {
+  std::vector<std::string> out;
+  std::stringstream ss{std::string(text)};
+  for (std::string item; std::getline(ss, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+const char* met(const Run& r) { return r.report.stopped_by_cap ? "capped" : r.report.bounds_met ? "yes" : "no"; }
+std::size_t far_misses(const Run& r) { return r.report.bad_triangles - r.report.bad_near_small_input_angle; }
+
+double domain_area(const Pslg& in) {
+  const TriMesh m = triangulate(in);
+  double area = 0.0;
+  for (const auto& t : m.triangles) {
+    const Point &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]];
+    area += 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  }
+  return area;
+}
+
+RefineOptions named(std::string_view name, double min_angle, std::size_t max_steiner) {
+  const AlgorithmInfo* algorithm = find_algorithm(name);
+  if (!algorithm) throw std::logic_error("refine_table: no algorithm " + std::string(name));
+  RefineOptions o = options_for(*algorithm);
+  o.criteria.min_angle_deg = min_angle;
+  o.criteria.max_steiner = max_steiner;
+  return o;
+}
+
+struct Input {
+  std::string name;
+  Pslg pslg;
+};
+
+void selection_table(const std::vector<Input>& inputs, const std::vector<double>& bounds, std::size_t cap) {
+  static constexpr std::string_view kSelections[] = {"circumcenter", "offcenter", "lepp-midpoint", "lepp-centroid"};
+  std::printf("| input | algorithm | bound | Steiner | triangles | min angle | met | missing | far from small angles | ms |\n"
+              "|---|---|--:|--:|--:|--:|---|--:|--:|--:|\n");
+  // Highest bound reached, per input and selection: everywhere, and away from small angles.
+  std::vector<std::string> highest;
+  for (const Input& in : inputs)
+    for (const std::string_view selection : kSelections) {
+      double everywhere = 0.0, away = 0.0;
+      for (const double bound : bounds) {
+        const Run r = run(in.pslg, named(selection, bound, cap));
+        std::printf("| %s | %s | %g | %zu | %zu | %.2f | %s | %zu | %zu | %.1f |\n", in.name.c_str(),
+                    std::string(selection).c_str(), bound, r.report.steiner_vertices, r.triangles,
+                    r.angles.min_angle_deg, met(r), r.report.bad_triangles, far_misses(r), r.ms);
+        std::fflush(stdout);
+        if (r.report.bounds_met) everywhere = bound;
+        if (!r.report.stopped_by_cap && far_misses(r) == 0) away = bound;
+      }
+      char line[256];
+      std::snprintf(line, sizeof line, "| %s | %s | %s | %s |\n", in.name.c_str(), std::string(selection).c_str(),
+                    everywhere > 0 ? (std::to_string(static_cast<int>(everywhere)) + "°").c_str() : "-",
+                    away > 0 ? (std::to_string(static_cast<int>(away)) + "°").c_str() : "-");
+      highest.push_back(line);
+    }
+  std::printf("\nHighest bound reached (of those tried):\n\n"
+              "| input | algorithm | everywhere | away from small input angles |\n|---|---|--:|--:|\n");
+  for (const std::string& line : highest) std::fputs(line.c_str(), stdout);
+}
+
+void improvement_table(const std::vector<Input>& inputs, const std::vector<double>& bounds, std::size_t cap) {
+  std::printf("\n| input | selection | bound | Steiner plain | Steiner improved | removed | min angle plain | improved | "
+              "met | ms |\n|---|---|--:|--:|--:|--:|--:|--:|---|--:|\n");
+  for (const Input& in : inputs)
+    for (const std::string_view selection : {"circumcenter", "offcenter", "lepp-centroid"})
+      for (const double bound : bounds) {
+        if (bound < 25.0 || bound > 33.0) continue;  // where every selection finishes
+        const RefineOptions plain_options = named(selection, bound, cap);
+        RefineOptions improved_options = plain_options;
+        improved_options.improve = true;
+        const Run plain = run(in.pslg, plain_options), improved = run(in.pslg, improved_options);
+        std::printf("| %s | %s | %g | %zu | %zu | %zu | %.2f | %.2f | %s / %s | %.1f |\n", in.name.c_str(),
+                    std::string(selection).c_str(), bound, plain.report.steiner_vertices,
+                    improved.report.steiner_vertices, improved.report.removed_vertices, plain.angles.min_angle_deg,
+                    improved.angles.min_angle_deg, met(plain), met(improved), improved.ms);
+        std::fflush(stdout);
+      }
+}
+
+void other_algorithms_table(const std::vector<Input>& inputs, std::size_t cap) {
+  std::printf("\n| input | algorithm | Steiner | triangles | min angle | met | missing | far from small angles | ms |\n"
+              "|---|---|--:|--:|--:|---|--:|--:|--:|\n");
+  for (const Input& in : inputs) {
+    RefineOptions area = named("midpoint-area", 0.0, cap);
+    area.criteria.max_area = domain_area(in.pslg) / 3000.0;
+    RefineOptions aspect = named("lepp-aspect", 0.0, cap);
+    aspect.criteria.max_aspect = kDefaultMaxAspect;
+    RefineCriteria combined_criteria;
+    combined_criteria.min_angle_deg = 30.0;
+    combined_criteria.max_aspect = kDefaultMaxAspect;
+    combined_criteria.max_steiner = cap;
+    RefineOptions combined = named("combined", 0.0, cap);
+    combined.phases = aspect_then_angle_phases(combined_criteria, *find_algorithm("combined"));
+    for (const auto& [name, options] : {std::pair{"midpoint-area", area}, {"lepp-aspect", aspect}, {"combined", combined}}) {
+      const Run r = run(in.pslg, options);
+      std::printf("| %s | %s | %zu | %zu | %.2f | %s | %zu | %zu | %.1f |\n", in.name.c_str(), name,
+                  r.report.steiner_vertices, r.triangles, r.angles.min_angle_deg, met(r), r.report.bad_triangles,
+                  far_misses(r), r.ms);
+      std::fflush(stdout);
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> names = {"A", "guitar", "la", "face", "earcut_water-huge"};
+  std::vector<double> bounds = {20, 25, 30, 33, 34, 35, 36};
+  std::size_t cap = 1'000'000;  // runs past the highest bound stop here
+  std::string dir;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (arg == "-h" || arg == "--help") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
+    if (arg == "--inputs" && has_value) {
+      names = split(argv[++i]);
+    } else if (arg == "--bounds" && has_value) {
+      bounds.clear();
+      for (const std::string& b : split(argv[++i])) {
+        double value = 0.0;
+        if (!parse_whole(b, value) || !(value > 0.0 && value < 60.0)) return usage_error("--bounds: '" + b + "' is not an angle in (0, 60)");
+        bounds.push_back(value);
+      }
+    } else if (arg == "--max-steiner" && has_value) {
+      if (!parse_whole(argv[++i], cap)) return usage_error(std::string("--max-steiner: '") + argv[i] + "' is not a count");
+    } else if (dir.empty() && !arg.starts_with("-")) {
+      dir = arg;
+    } else {
+      return usage_error(std::string("unexpected argument '") + argv[i] + "'");
+    }
+  }
+  if (dir.empty()) return usage_error("no input directory");
+  if (names.empty() || bounds.empty()) return usage_error("no inputs or no bounds");
+  std::vector<Input> inputs;
+  try {
+    for (const std::string& name : names)
+      inputs.push_back({name, io::read_pslg((std::filesystem::path(dir) / (name + ".poly")).string())});
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "refine_table: error: %s\n", e.what());
+    return 2;
+  }
+  try {
+    selection_table(inputs, bounds, cap);
+    improvement_table(inputs, bounds, cap);
+    other_algorithms_table(inputs, cap);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "refine_table: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
