@@ -101,7 +101,8 @@ TriMesh refine_checked(const Pslg& in, const RefineOptions& o, RefineReport& rep
 
 class RefineCorpus : public ::testing::TestWithParam<std::string> {};
 
-// Every corpus input, every Delaunay selection, at 20, 25, 30 and 33 degrees: terminates
+// Every corpus input, every Delaunay selection, at 20, 25, 30 and 33 degrees (and combined
+// at 30): terminates
 // without a cap, valid, every miss next to a small input angle (refine_checked), no segment
 // split down to the precision floor; and the bound met everywhere when every input angle
 // is at least 30 degrees (up to 30) or 60 (above: inputs with angles between 33 and 60,
@@ -124,6 +125,18 @@ TEST_P(RefineCorpus, MeetsTheBoundAwayFromSmallInputAngles) {
         for (std::size_t t = 0; t < m.triangles.size(); ++t) ASSERT_GE(min_angle_deg(m, t), bound - 1e-9);
       }
     }
+  // The combined algorithm (an aspect phase, then 30 degrees) as well.
+  const AlgorithmInfo& combined = *find_algorithm("combined");
+  RefineOptions o = with_angle(30.0, combined.selection);
+  o.phases = aspect_then_angle_phases(o.criteria, combined);
+  SCOPED_TRACE("combined, 30 degrees");
+  RefineReport report;
+  refine_checked(in, o, report);
+  EXPECT_FALSE(report.stopped_by_cap);
+  EXPECT_EQ(report.unsplittable_segments, 0u);
+  if (input_angle >= 30.0) {
+    EXPECT_TRUE(report.bounds_met);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(RefineSharedDataSlow, RefineCorpus, ::testing::ValuesIn(testing::corpus_polys()), testing::corpus_test_name);

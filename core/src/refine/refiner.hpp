@@ -226,18 +226,32 @@ class Refiner {
 
   // Triangles refinement leaves alone when only their angles are bad: the smallest angle
   // lies between two segments (it is the input's), or the shortest edge spans a small input
-  // angle (its ends lie on two segments meeting there at under 60 degrees: a vertex inside
-  // would only split both segments closer to the apex, and so on without end).
+  // angle on a shell: its ends lie on two segments meeting there at under 60 degrees, at the
+  // same distance from the apex. A vertex inside would only split both segments on a shell
+  // closer to the apex, and so on without end. At different distances the shortest edge is
+  // not the shells' doing, and splitting does fix it (earcut.poly: a 21.5-degree triangle
+  // by a 48-degree corner was left alone before this distinction).
   bool cannot_improve(HalfEdge h, const quality::Shape& s) const {
     HalfEdge e = h;
     for (int i = 0; i < s.shortest_edge; ++i) e = mesh_.next(e);
     if (is_segment(mesh_.next(e)) && is_segment(mesh_.prev(e))) return true;
-    const auto& p = on_segment_[mesh_.origin(e)];
-    const auto& q = on_segment_[mesh_.dest(e)];
+    const VertexId u = mesh_.origin(e), w = mesh_.dest(e);
+    const auto& p = on_segment_[u];
+    const auto& q = on_segment_[w];
     if (p.first == kNone || q.first == kNone || p == q) return false;
+    const VertexId r = mesh_.apex(e);
     for (const VertexId apex : {p.first, p.second})
-      if ((apex == q.first || apex == q.second) && small_angle_[apex]) return true;
+      if ((apex == q.first || apex == q.second) && small_angle_[apex] && on_shell(u, w, r, apex)) return true;
     return false;
+  }
+
+  // Are u and w on the same shell round apex (the same distance, to within the rounding of
+  // shell splits), and r no farther out than the next shell?
+  bool on_shell(VertexId u, VertexId w, VertexId r, VertexId apex) const {
+    const double du = quality::squared_distance(point(u), point(apex));
+    const double dw = quality::squared_distance(point(w), point(apex));
+    const double dr = quality::squared_distance(point(r), point(apex));
+    return du < 1.002 * dw && dw < 1.002 * du && dr < 4.01 * du;
   }
 
   // Improvement's rule: a removal must raise the smallest angle of the triangles it
