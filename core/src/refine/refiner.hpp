@@ -544,12 +544,19 @@ class Refiner {
     });
     flipped_.clear();
     tri_.make_delaunay(stack_, &flipped_);
-    // A flip here may bring back a triangle the split destroyed (v lies a hair off the line,
-    // beyond an old edge): remembered for still_there().
+    // A flip here may make a face without v (v lies a hair off the line, beyond an old
+    // edge), often one the split destroyed: remembered for still_there(), and checked here,
+    // since after_insertion() checks only the faces round v.
+    away_from_v_.clear();
     for (const FaceId f : flipped_)
       if (const HalfEdge e = mesh_.half_edge(f); mesh_.is_live(f) && mesh_.origin(e) != v && mesh_.dest(e) != v &&
-                                                 mesh_.apex(e) != v)
+                                                 mesh_.apex(e) != v) {
         recreated_.insert(triangle_hash(face_key(f)));
+        away_from_v_.push_back(f);
+      }
+    std::sort(away_from_v_.begin(), away_from_v_.end());
+    away_from_v_.erase(std::unique(away_from_v_.begin(), away_from_v_.end()), away_from_v_.end());
+    check_faces(away_from_v_);
     out = mesh_.vertex_half_edge(v);
     on_segment_.push_back({info.a, info.b});
     subsegments_[key(a, v)] = info;
@@ -741,6 +748,7 @@ class Refiner {
   std::vector<HalfEdge> stack_;
   std::vector<HalfEdge> encroached_;
   std::vector<FaceId> flipped_;
+  std::vector<FaceId> away_from_v_;  // faces a split's flips made without the new vertex
   std::vector<VertexId> doomed_;  // free vertices near a split segment, to delete
   VertexRemover<Mesh, Rec> remover_{tri_};
   std::unordered_set<std::uint64_t> recreated_;  // hashes of triangles a split's flips made (collisions: a search more)
