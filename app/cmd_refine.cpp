@@ -180,27 +180,29 @@ int run_refine(const RefineArgs& args) {
       }
     }
   }
+  // A mesh prefix (PREFIX.node + PREFIX.ele, and PREFIX.area if there) rather than an input
+  // file: re-refinement, as Triangle's -r.
+  bool re_refine = false, area_file = false;
+  if (!ends_with(args.input, ".poly") && !ends_with(args.input, ".node")) {
+    std::error_code ec;
+    re_refine = std::filesystem::exists(args.input + ".node", ec) && std::filesystem::exists(args.input + ".ele", ec);
+    area_file = re_refine && std::filesystem::exists(args.input + ".area", ec);
+  }
+
   bool any_bound = false;
   for (const CLI::Option* o : args.bounds) any_bound = any_bound || o->count() > 0;
   if (!any_bound) {
     criteria.min_angle_deg = algorithm->default_min_angle_deg;
     criteria.max_aspect = algorithm->default_max_aspect;
   }
+  // (A re-refined mesh's PREFIX.area is a bound of its own, as with Triangle's -r -a.)
   if (criteria.min_angle_deg <= 0.0 && criteria.max_angle_deg >= 180.0 && criteria.max_aspect <= 0.0 &&
-      criteria.max_area <= 0.0 && !criteria.size) {
+      criteria.max_area <= 0.0 && !criteria.size && !area_file) {
     print_error(std::string(algorithm->name) + " needs a bound: --max-area or --size" +
                 (algorithm->insertion == RefineInsertion::bisection ? "" : " (or an angle or aspect bound)"));
     return kExitUsage;
   }
   if (algorithm->aspect_then_angle) options.phases = aspect_then_angle_phases(criteria, *algorithm);
-
-  // A mesh prefix (PREFIX.node + PREFIX.ele, and PREFIX.area if there) rather than an input
-  // file: re-refinement, as Triangle's -r.
-  bool re_refine = false;
-  if (!ends_with(args.input, ".poly") && !ends_with(args.input, ".node")) {
-    std::error_code ec;
-    re_refine = std::filesystem::exists(args.input + ".node", ec) && std::filesystem::exists(args.input + ".ele", ec);
-  }
 
   // (A mesh prefix has no extension to strip: box.1 becomes box.2, as with Triangle.)
   const std::string prefix =

@@ -363,8 +363,7 @@ TEST(RefineCriteria, RegionsGetTheirOwnAreaBounds) {
     SCOPED_TRACE(to_string(insertion));
     RefineOptions o;
     o.insertion = insertion;
-    if (insertion == RefineInsertion::delaunay) o.criteria.min_angle_deg = 20.0;
-    else o.criteria.max_area = 1.0;  // bisection needs a bound of its own; the regions' are smaller
+    if (insertion == RefineInsertion::delaunay) o.criteria.min_angle_deg = 20.0;  // bisection: the regions' alone
     RefineReport report;
     const TriMesh m = refine(in, o, &report);
     EXPECT_TRUE(report.bounds_met);
@@ -377,8 +376,12 @@ TEST(RefineCriteria, RegionsGetTheirOwnAreaBounds) {
     }
     EXPECT_GT(left, 800u);  // 8 square units at 0.01 each
     EXPECT_LT(right, left / 3);
-    // Turned off, the regions' bounds are not asked for.
+    // Turned off, the regions' bounds are not asked for (bisection then has no bound at all).
     o.regional_max_area = false;
+    if (insertion == RefineInsertion::bisection) {
+      EXPECT_THROW(refine(in, o, &report), InputError);
+      o.criteria.max_area = 1.0;
+    }
     const TriMesh plain = refine(in, o, &report);
     EXPECT_LT(plain.triangles.size(), m.triangles.size() / 4);
   }

@@ -317,6 +317,20 @@ TEST_F(RefineCli, ReRefinesAMeshWithItsAreaFile) {
   }
   EXPECT_GT(small, 50u);
   EXPECT_EQ(meshstep("check " + dir_.file("holemesh.2") + " --poly " + input + " -q").status, 0);
+  // The .area file is a bound of its own: the area-only algorithms take it without
+  // --max-area (as Triangle's -r -a), and every triangle it bounds comes out small.
+  for (const char* algorithm : {"midpoint-area", "lepp-bisection"}) {
+    SCOPED_TRACE(algorithm);
+    const std::string out = dir_.file(std::string("by_area_") + algorithm);
+    const CommandResult a = meshstep("refine " + prefix + " --algorithm " + algorithm + " -o " + out + " --stats json");
+    ASSERT_EQ(a.status, 0) << a.err;
+    EXPECT_EQ(json_value(last_line(a.out), "bounds_met"), "true") << a.out;
+    EXPECT_GT(json_number(last_line(a.out), "steiner"), 10.0) << a.out;
+  }
+  std::filesystem::remove(dir_.file("holemesh.1.area"));
+  const CommandResult no_bound = meshstep("refine " + prefix + " --algorithm midpoint-area --no-output");
+  EXPECT_EQ(no_bound.status, 2) << no_bound.err;
+  EXPECT_TRUE(contains(no_bound.err, "needs a bound")) << no_bound.err;
   // Without the mesh files, a name with no known extension is an unknown file type.
   const CommandResult u = meshstep("refine " + dir_.file("nothing"));
   EXPECT_EQ(u.status, 1);

@@ -126,12 +126,16 @@ std::vector<const RefineCriteria*> criteria_of(const RefineOptions& o) {
   return all;
 }
 
-// Bisection keeps shapes and only makes triangles smaller: it takes size criteria.
-void check_bisection(const RefineOptions& o, const RefineCriteria& c) {
+// Bisection keeps shapes and only makes triangles smaller: it takes size criteria (a global
+// or per-triangle area, a size function, or the input's regional areas).
+void check_bisection(const RefineOptions& o, const RefineCriteria& c, const Pslg& input) {
   const std::string who = "longest-edge bisection (" + o.algorithm + ")";
   if (c.min_angle_deg > 0.0 || c.max_angle_deg < 180.0 || c.max_aspect > 0.0)
     throw InputError(who + " cannot improve angles or aspect ratios: give it --max-area or --size only");
-  if (c.max_area <= 0.0 && !c.size) throw InputError(who + " needs a size bound: --max-area or --size");
+  const bool regional = o.regional_max_area && std::any_of(input.regions.begin(), input.regions.end(),
+                                                           [](const Region& r) { return r.max_area > 0.0; });
+  if (c.max_area <= 0.0 && !c.size && !c.max_area_for && !regional)
+    throw InputError(who + " needs a size bound: --max-area or --size");
 }
 
 }  // namespace
@@ -139,7 +143,7 @@ void check_bisection(const RefineOptions& o, const RefineCriteria& c) {
 TriMesh refine(Pslg input, const RefineOptions& options, RefineReport* report) {
   for (const RefineCriteria* c : criteria_of(options)) {
     check(*c);
-    if (options.insertion == RefineInsertion::bisection) check_bisection(options, *c);
+    if (options.insertion == RefineInsertion::bisection) check_bisection(options, *c, input);
   }
   detail::validate(input);
   RefineReport local;
