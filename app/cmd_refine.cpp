@@ -1,5 +1,6 @@
 // meshstep refine: Delaunay refinement of a .poly PSLG (or a .node point set) into a quality
 // mesh, by one of the registered algorithms (refine/registry.hpp).
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -195,13 +196,18 @@ int run_refine(const RefineArgs& args) {
     criteria.min_angle_deg = algorithm->default_min_angle_deg;
     criteria.max_aspect = algorithm->default_max_aspect;
   }
-  // (A re-refined mesh's PREFIX.area is a bound of its own, as with Triangle's -r -a.)
-  if (criteria.min_angle_deg <= 0.0 && criteria.max_angle_deg >= 180.0 && criteria.max_aspect <= 0.0 &&
-      criteria.max_area <= 0.0 && !criteria.size && !area_file) {
+  // Without a bound on the command line, a re-refined mesh's PREFIX.area (as with Triangle's
+  // -r -a) or a .poly's regional areas may still give one: the latter is known only once the
+  // input is read.
+  const bool no_bound = criteria.min_angle_deg <= 0.0 && criteria.max_angle_deg >= 180.0 &&
+                        criteria.max_aspect <= 0.0 && criteria.max_area <= 0.0 && !criteria.size && !area_file;
+  const auto refuse_without_bound = [&] {
     print_error(std::string(algorithm->name) + " needs a bound: --max-area or --size" +
-                (algorithm->insertion == RefineInsertion::bisection ? "" : " (or an angle or aspect bound)"));
+                (algorithm->insertion == RefineInsertion::bisection ? "" : " (or an angle or aspect bound)") +
+                ", or a .poly with regional areas");
     return kExitUsage;
-  }
+  };
+  if (no_bound && (re_refine || ends_with(args.input, ".node"))) return refuse_without_bound();
   if (algorithm->aspect_then_angle) options.phases = aspect_then_angle_phases(criteria, *algorithm);
 
   // (A mesh prefix has no extension to strip: box.1 becomes box.2, as with Triangle.)
@@ -244,6 +250,9 @@ int run_refine(const RefineArgs& args) {
     read_ms = clock.lap_ms();
     for (const std::string& w : warnings) print_warning(verbosity, w);
     input_vertices = input.points.size();
+    if (no_bound && !std::any_of(input.regions.begin(), input.regions.end(),
+                                 [](const Region& r) { return r.max_area > 0.0; }))
+      return refuse_without_bound();
     if (const std::size_t cap = midpoint_shape_cap(options, input_vertices)) {
       criteria.max_steiner = cap;
       print_warning(verbosity, "longest-edge midpoints need not ever reach an angle or aspect bound (above about 20 "

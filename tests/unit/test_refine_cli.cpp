@@ -149,6 +149,27 @@ TEST_F(RefineCli, LeppBisectionToAnAreaBound) {
 
 // improve: the plain run's Steiner vertices minus the removed ones, a valid mesh that still
 // meets the bound; --improve composes it with another selection; not with bisection.
+// A .poly whose regions carry maximum areas gives the area-only algorithms their bound; a
+// .poly without them is refused before any work, with the ways to give one.
+TEST_F(RefineCli, RegionalAreasAreABoundOfTheirOwn) {
+  const std::string regions = write("regions.poly",
+                                    "# 4 x 4 square cut in two; left half area 0.01, right half 0.1\n"
+                                    "6 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n5 2 0\n6 2 4\n"
+                                    "7 0\n1 1 5\n2 5 2\n3 2 3\n4 3 6\n5 6 4\n6 4 1\n7 5 6\n0\n"
+                                    "2\n1 1 2 1 0.01\n2 3 2 2 0.1\n");
+  for (const char* algorithm : {"lepp-bisection", "midpoint-area"}) {
+    SCOPED_TRACE(algorithm);
+    const CommandResult r = meshstep("refine " + regions + " --algorithm " + algorithm + " --no-output --stats json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(json_value(last_line(r.out), "bounds_met"), "true") << r.out;
+    EXPECT_GT(json_number(last_line(r.out), "triangles"), 800.0) << r.out;  // 8 square units at 0.01
+  }
+  const CommandResult plain = meshstep("refine " + write("ell.poly", kLShape) + " --algorithm lepp-bisection");
+  EXPECT_EQ(plain.status, 2) << plain.err;
+  EXPECT_TRUE(contains(plain.err, "needs a bound")) << plain.err;
+  EXPECT_TRUE(contains(plain.err, "regional")) << plain.err;
+}
+
 TEST_F(RefineCli, ImproveRemovesVerticesAndKeepsTheBound) {
   const std::string input = write("hole.poly", kSquareWithHole);
   const std::string prefix = dir_.file("improved");
