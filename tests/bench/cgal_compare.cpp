@@ -46,6 +46,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench_args.hpp"
 #include "meshstep/delaunay/triangulate.hpp"
 #include "random_points.hpp"
 
@@ -168,11 +169,7 @@ int usage_error(const char* message) {
   return 2;
 }
 
-template <class T>
-bool parse_whole(std::string_view text, T& value) {
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  return !text.empty() && ec == std::errc() && end == text.data() + text.size();
-}
+using meshstep::bench::parse_whole;
 
 }  // namespace
 

@@ -21,6 +21,7 @@
 #include <system_error>
 #include <vector>
 
+#include "bench_args.hpp"
 #include "cgal_mesher.hpp"
 #include "meshstep/check/quality.hpp"
 #include "meshstep/refine/refine.hpp"
@@ -50,16 +51,9 @@ constexpr const char* kHelp =
     "Hole points are CGAL seeds of regions not to mesh. Exit status: 0 ok, 1 a run\n"
     "failed, 2 usage error or unreadable input.\n";
 
-int usage_error(const std::string& message) {
-  std::fprintf(stderr, "cgal_mesher: error: %s\n%s", message.c_str(), kUsage);
-  return 2;
-}
+int usage_error(const std::string& message) { return meshstep::bench::usage_error("cgal_mesher", message, kUsage); }
 
-template <class T>
-bool parse_whole(std::string_view text, T& value) {
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  return !text.empty() && ec == std::errc() && end == text.data() + text.size();
-}
+using meshstep::bench::parse_whole;
 
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());

@@ -18,6 +18,7 @@
 #include <system_error>
 #include <vector>
 
+#include "bench_args.hpp"
 #include "random_points.hpp"
 
 namespace {
@@ -27,13 +28,7 @@ int usage(const char* message) {
   return 2;
 }
 
-template <class T>
-bool parse_whole(std::string_view text, T& value) {
-  const char* first = text.data();
-  const char* last = first + text.size();
-  const auto [end, ec] = std::from_chars(first, last, value);
-  return ec == std::errc() && end == last && !text.empty();
-}
+using meshstep::bench::parse_whole;
 
 }  // namespace
 

@@ -8,7 +8,6 @@
 // deterministic; the ms column is one measurement, for scale only).
 //
 // Exit status: 0 ok, 1 a run failed, 2 usage error or unreadable input.
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -16,9 +15,9 @@
 #include <sstream>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <vector>
 
+#include "bench_args.hpp"
 #include "meshstep/check/quality.hpp"
 #include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/error.hpp"
@@ -35,16 +34,9 @@ constexpr const char* kUsage =
     "                    [--max-steiner N]\n"
     "Prints docs/refinement.md's tables for DIR/NAME.poly of each input.\n";
 
-int usage_error(const std::string& message) {
-  std::fprintf(stderr, "refine_table: error: %s\n%s", message.c_str(), kUsage);
-  return 2;
-}
+int usage_error(const std::string& message) { return meshstep::bench::usage_error("refine_table", message, kUsage); }
 
-template <class T>
-bool parse_whole(std::string_view text, T& value) {
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  return ec == std::errc{} && end == text.data() + text.size();
-}
+using meshstep::bench::parse_whole;
 
 struct Run {
   RefineReport report;

@@ -61,7 +61,9 @@ TriMesh bisect_checked(const Pslg& in, const RefineOptions& o, RefineReport& rep
   EXPECT_TRUE(report.bounds_met);
   EXPECT_FALSE(report.stopped_by_cap);
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
-    if (o.criteria.max_area > 0.0) EXPECT_LE(area(m, t), o.criteria.max_area) << "triangle " << t;
+    if (o.criteria.max_area > 0.0) {
+      EXPECT_LE(area(m, t), o.criteria.max_area) << "triangle " << t;
+    }
   }
   const double start = angle_stats(triangulate(in)).min_angle_deg;
   EXPECT_GE(angle_stats(m).min_angle_deg, start / 2.0 - 1e-9) << "started at " << start << " degrees";

@@ -102,7 +102,7 @@ TriMesh refine_checked(const Pslg& in, const RefineOptions& o, RefineReport& rep
 class RefineCorpus : public ::testing::TestWithParam<std::string> {};
 
 // Every corpus input, every Delaunay selection, at 20, 25, 30 and 33 degrees (and combined
-// at 30): terminates
+// at 30; at 30 also on dcel with cavities, which must give the same mesh): terminates
 // without a cap, valid, every miss next to a small input angle (refine_checked), no segment
 // split down to the precision floor; and the bound met everywhere when every input angle
 // is at least 30 degrees (up to 30) or 60 (above: inputs with angles between 33 and 60,
@@ -120,6 +120,14 @@ TEST_P(RefineCorpus, MeetsTheBoundAwayFromSmallInputAngles) {
       const TriMesh m = refine_checked(in, with_angle(bound, selection), report);
       EXPECT_FALSE(report.stopped_by_cap);
       EXPECT_EQ(report.unsplittable_segments, 0u);
+      if (bound == 30.0) {  // the other data structure and insertion: the same mesh
+        RefineOptions other = with_angle(bound, selection);
+        other.triangulate.data_structure = DataStructure::dcel;
+        other.triangulate.insertion = Insertion::cavity;
+        RefineReport other_report;
+        EXPECT_EQ(canonical_triangles(refine_checked(in, other, other_report)), canonical_triangles(m))
+            << "dcel + cavity differs from tds + flip";
+      }
       if (input_angle >= (bound <= 30.0 ? 30.0 : 60.0)) {
         EXPECT_TRUE(report.bounds_met) << "smallest input angle " << input_angle;
         for (std::size_t t = 0; t < m.triangles.size(); ++t) ASSERT_GE(min_angle_deg(m, t), bound - 1e-9);
