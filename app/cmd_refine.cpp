@@ -447,7 +447,8 @@ Command add_refine_command(CLI::App& parent) {
   cmd->add_option("--max-triangles", args->max_triangles, "Stop once the mesh has N triangles")
       ->check(positive_number(false))
       ->type_name("N");
-  cmd->add_option("--max-steiner", args->max_steiner, "Stop after inserting N Steiner vertices (default: none; for longest-edge\n"
+  cmd->add_option("--max-steiner", args->max_steiner,
+                  "Stop after inserting N Steiner vertices (default: none; for longest-edge\n"
                   "midpoints against an angle or aspect bound, which need not end: 100000\n"
                   "+ 100 per input vertex)")
       ->check(positive_number(false))

@@ -152,7 +152,9 @@ void other_algorithms_table(const std::vector<Input>& inputs, std::size_t cap) {
     combined_criteria.max_steiner = cap;
     RefineOptions combined = named("combined", 0.0, cap);
     combined.phases = aspect_then_angle_phases(combined_criteria, *find_algorithm("combined"));
-    for (const auto& [name, options] : {std::pair{"midpoint-area", area}, {"lepp-aspect", aspect}, {"combined", combined}}) {
+    const std::pair<const char*, RefineOptions> runs[] = {
+        {"midpoint-area", area}, {"lepp-aspect", aspect}, {"combined", combined}};
+    for (const auto& [name, options] : runs) {
       const Run r = run(in.pslg, options);
       std::printf("| %s | %s | %zu | %zu | %.2f | %s | %zu | %zu | %.1f |\n", in.name.c_str(), name,
                   r.report.steiner_vertices, r.triangles, r.angles.min_angle_deg, met(r), r.report.bad_triangles,
@@ -182,11 +184,13 @@ int main(int argc, char** argv) {
       bounds.clear();
       for (const std::string& b : split(argv[++i])) {
         double value = 0.0;
-        if (!parse_whole(b, value) || !(value > 0.0 && value < 60.0)) return usage_error("--bounds: '" + b + "' is not an angle in (0, 60)");
+        if (!parse_whole(b, value) || !(value > 0.0 && value < 60.0))
+          return usage_error("--bounds: '" + b + "' is not an angle in (0, 60)");
         bounds.push_back(value);
       }
     } else if (arg == "--max-steiner" && has_value) {
-      if (!parse_whole(argv[++i], cap)) return usage_error(std::string("--max-steiner: '") + argv[i] + "' is not a count");
+      if (!parse_whole(argv[++i], cap))
+        return usage_error(std::string("--max-steiner: '") + argv[i] + "' is not a count");
     } else if (dir.empty() && !arg.starts_with("-")) {
       dir = arg;
     } else {

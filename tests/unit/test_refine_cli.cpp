@@ -380,7 +380,8 @@ TEST_F(RefineCli, MaxSteinerStopsAtTheCap) {
 TEST_F(RefineCli, MidpointsAgainstAnAngleBoundGetACap) {
   const fs::path a = testing::shared_data() / "pslg" / "A.poly";
   if (!fs::exists(a)) GTEST_SKIP() << a << " is absent: skipped";
-  const CommandResult r = meshstep("refine " + a.string() + " --algorithm midpoint-area --min-angle 30 --no-output --stats json");
+  const std::string midpoints = "refine " + a.string() + " --algorithm midpoint-area --no-output --stats json";
+  const CommandResult r = meshstep(midpoints + " --min-angle 30");
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string json = last_line(r.out);
   EXPECT_EQ(json_value(json, "stopped_by_cap"), "true") << json;
@@ -388,12 +389,11 @@ TEST_F(RefineCli, MidpointsAgainstAnAngleBoundGetACap) {
   EXPECT_TRUE(contains(r.err, "longest-edge midpoints")) << r.err;
   EXPECT_TRUE(contains(r.err, "--max-steiner")) << r.err;
 
-  const CommandResult capped =
-      meshstep("refine " + a.string() + " --algorithm midpoint-area --min-angle 30 --max-steiner 500 --no-output --stats json");
+  const CommandResult capped = meshstep(midpoints + " --min-angle 30 --max-steiner 500");
   ASSERT_EQ(capped.status, 0) << capped.err;
   EXPECT_EQ(json_number(last_line(capped.out), "steiner"), 500.0);
   EXPECT_FALSE(contains(capped.err, "longest-edge midpoints")) << capped.err;
-  const CommandResult area = meshstep("refine " + a.string() + " --algorithm midpoint-area --max-area 0.01 --no-output --stats json");
+  const CommandResult area = meshstep(midpoints + " --max-area 0.01");
   ASSERT_EQ(area.status, 0) << area.err;
   EXPECT_EQ(json_value(last_line(area.out), "bounds_met"), "true");
   EXPECT_FALSE(contains(area.err, "longest-edge midpoints")) << area.err;

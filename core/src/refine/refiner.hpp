@@ -10,8 +10,8 @@
 // Segment splits use concentric shells: a subsegment with exactly one segment end (an input
 // vertex or a crossing) is split at a power-of-two distance from that end, so that splits on
 // two segments meeting at a small angle stay at matching distances and do not chase each
-// other (Ruppert's "modified segment splitting"). A bad triangle whose smallest angle sits between two
-// segments cannot be improved (the angle is the input's) and is skipped.
+// other (Ruppert's "modified segment splitting"). A bad triangle whose smallest angle sits
+// between two segments cannot be improved (the angle is the input's) and is skipped.
 //
 // Works in the triangulation's scaled coordinates (triangulate's exact power-of-two scaling):
 // angles do not change, and the caller scales area and size bounds.
@@ -516,7 +516,8 @@ class Refiner {
   }
 
   // Splits the segment of h: at its midpoint, or on a concentric shell around its one
-  // segment end (is_segment_end). `by`: the vertex or rejected point that encroached, for the record.
+  // segment end (is_segment_end). `by`: the vertex or rejected point that encroached, for
+  // the record.
   // Returns false, changing nothing, when the rounded split point would not leave both
   // halves with valid triangles (a subsegment a few ulps long): the floor of refinement.
   bool split_segment(HalfEdge h, VertexId by_vertex, const Point* by_point) {
