@@ -1,6 +1,5 @@
 // meshstep refine: Delaunay refinement of a .poly PSLG (or a .node point set) into a quality
 // mesh, by one of the registered algorithms (refine/registry.hpp).
-#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -250,9 +249,7 @@ int run_refine(const RefineArgs& args) {
     read_ms = clock.lap_ms();
     for (const std::string& w : warnings) print_warning(verbosity, w);
     input_vertices = input.points.size();
-    if (no_bound && !std::any_of(input.regions.begin(), input.regions.end(),
-                                 [](const Region& r) { return r.max_area > 0.0; }))
-      return refuse_without_bound();
+    if (no_bound && !has_regional_area_bounds(input)) return refuse_without_bound();
     if (const std::size_t cap = midpoint_shape_cap(options, input_vertices)) {
       criteria.max_steiner = cap;
       print_warning(verbosity, "longest-edge midpoints need not ever reach an angle or aspect bound (above about 20 "

@@ -132,8 +132,7 @@ void check_bisection(const RefineOptions& o, const RefineCriteria& c, const Pslg
   const std::string who = "longest-edge bisection (" + o.algorithm + ")";
   if (c.min_angle_deg > 0.0 || c.max_angle_deg < 180.0 || c.max_aspect > 0.0)
     throw InputError(who + " cannot improve angles or aspect ratios: give it --max-area or --size only");
-  const bool regional = o.regional_max_area && std::any_of(input.regions.begin(), input.regions.end(),
-                                                           [](const Region& r) { return r.max_area > 0.0; });
+  const bool regional = o.regional_max_area && has_regional_area_bounds(input);
   if (c.max_area <= 0.0 && !c.size && !c.max_area_for && !regional)
     throw InputError(who + " needs a size bound: --max-area or --size");
 }

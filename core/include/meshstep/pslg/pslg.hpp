@@ -37,4 +37,11 @@ struct Pslg {
   int first_index = 0;  // numbering of the file it came from (0 or 1), kept for output
 };
 
+// Does some region carry a maximum area (a size bound of the input's own)?
+inline bool has_regional_area_bounds(const Pslg& pslg) {
+  for (const Region& r : pslg.regions)
+    if (r.max_area > 0.0) return true;
+  return false;
+}
+
 }  // namespace meshstep
