@@ -63,7 +63,7 @@ class DiscardSink final : public meshstep::replay::EventSink {
   std::uint64_t words = 0;
 
  protected:
-  void hand_over(std::vector<std::uint32_t>& batch) override {
+  void hand_over(meshstep::replay::EventWords& batch) override {
     words += batch.size();
     batch.clear();
   }

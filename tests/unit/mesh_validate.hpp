@@ -73,7 +73,14 @@ std::vector<std::string> validate_connectivity(const M& m, bool check_vertex_hal
       faces_ok = false;
       continue;
     }
-    live.insert(live.end(), {h0, h1, h2});
+    const std::array<HalfEdge, 3> corners{h0, h1, h2};
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      if (m.corner(corners[i]) != i)
+        edge_problem(f, corners[i], "corner() is " + std::to_string(m.corner(corners[i])) + ", not " + std::to_string(i));
+      if (((m.constraint_mask(f) >> i) & 1u) != std::uint32_t{m.is_constrained(corners[i])})
+        edge_problem(f, corners[i], "constraint_mask() disagrees with is_constrained()");
+    }
+    live.insert(live.end(), corners.begin(), corners.end());
   }
   std::sort(live.begin(), live.end());
   for (std::size_t i = 1; i < live.size(); ++i) {

@@ -132,7 +132,7 @@ TYPED_TEST_SUITE(MeshStructures, Structures, StructureName);
 // The validator itself: each kind of corruption, injected by hiding one member of a real
 // structure, must be reported, and the intact structure must not be.
 
-enum class Fault { none, twin, constraint, vertex_half_edge, next, face_count, face };
+enum class Fault { none, twin, constraint, vertex_half_edge, next, face_count, face, corner, constraint_mask };
 
 template <class M>
 struct Faulty : M {
@@ -157,6 +157,13 @@ struct Faulty : M {
     return fault == Fault::face && h == target ? M::face(M::twin(h)) : M::face(h);
   }
   std::size_t face_count() const { return M::face_count() + (fault == Fault::face_count); }
+  std::uint32_t corner(HalfEdge h) const {
+    return fault == Fault::corner && h == target ? (M::corner(h) + 1) % 3 : M::corner(h);
+  }
+  std::uint32_t constraint_mask(FaceId f) const {
+    return fault == Fault::constraint_mask && f == M::face(target) ? M::constraint_mask(f) ^ 4u
+                                                                    : M::constraint_mask(f);
+  }
 };
 
 TYPED_TEST(MeshStructures, ValidatorReportsEachKindOfCorruption) {
@@ -168,7 +175,7 @@ TYPED_TEST(MeshStructures, ValidatorReportsEachKindOfCorruption) {
 
   const HalfEdge h01 = find_half_edge(m, 0, 1);
   for (const Fault fault : {Fault::twin, Fault::constraint, Fault::vertex_half_edge, Fault::next,
-                            Fault::face_count, Fault::face}) {
+                            Fault::face_count, Fault::face, Fault::corner, Fault::constraint_mask}) {
     m.fault = fault;
     m.target = h01;
     m.target_vertex = 3;

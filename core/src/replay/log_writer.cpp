@@ -57,8 +57,8 @@ struct LogWriter::Impl {
 
   std::mutex mutex;
   std::condition_variable changed;
-  std::deque<std::vector<std::uint32_t>> pending;
-  std::vector<std::vector<std::uint32_t>> spare;
+  std::deque<EventWords> pending;
+  std::vector<EventWords> spare;
   bool closing = false;
   std::exception_ptr failure;
   std::thread worker;
@@ -108,7 +108,7 @@ struct LogWriter::Impl {
   void run() {
     try {
       for (;;) {
-        std::vector<std::uint32_t> batch;
+        EventWords batch;
         {
           std::unique_lock lock(mutex);
           changed.wait(lock, [&] { return !pending.empty() || closing; });
@@ -131,7 +131,7 @@ struct LogWriter::Impl {
     changed.notify_all();
   }
 
-  void submit(std::vector<std::uint32_t>& words) {
+  void submit(EventWords& words) {
     std::unique_lock lock(mutex);
     changed.wait(lock, [&] { return pending.size() < kMaxPending || failure; });
     if (failure) std::rethrow_exception(failure);
@@ -140,8 +140,7 @@ struct LogWriter::Impl {
       words = std::move(spare.back());
       spare.pop_back();
     } else {
-      words = {};
-      words.reserve(kBatchWords + kBatchWords / 4);
+      words = {};  // the sink sizes it
     }
     changed.notify_all();
   }
@@ -178,11 +177,11 @@ LogWriter::~LogWriter() {
   std::remove(impl_->partial.c_str());
 }
 
-void LogWriter::hand_over(std::vector<std::uint32_t>& words) { impl_->submit(words); }
+void LogWriter::hand_over(EventWords& words) { impl_->submit(words); }
 
 void LogWriter::finish() {
   if (impl_->finished) return;
-  if (!words_.empty()) impl_->submit(words_);
+  flush();
   impl_->finished = true;  // read by the worker only after stop() below wakes it
   impl_->stop();
   const bool closed = std::fclose(impl_->file) == 0;

@@ -20,6 +20,7 @@
 
 #include <concepts>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 
 #include "meshstep/mesh/handles.hpp"
@@ -41,6 +42,12 @@ concept TriangleMesh = requires(M& m, const M& cm, HalfEdge h, FaceId f, VertexI
   { cm.half_edge(f) } -> std::same_as<HalfEdge>;
   { cm.vertex_half_edge(v) } -> std::same_as<HalfEdge>;
   { cm.is_constrained(h) } -> std::same_as<bool>;
+  // Where h stands in its face: 0 for half_edge(face(h)), 1 for the next, 2 for the one
+  // after; and the face's constraint flags, bit i for its i-th half-edge in that order. The
+  // recorder reads both for every face a flip touches, and the Tds answers them with
+  // arithmetic where next/prev chains would not fold.
+  { cm.corner(h) } -> std::same_as<std::uint32_t>;
+  { cm.constraint_mask(f) } -> std::same_as<std::uint32_t>;
 
   // Size. Face ids are below face_capacity(); dead slots answer is_live() == false.
   { cm.face_capacity() } -> std::same_as<std::size_t>;

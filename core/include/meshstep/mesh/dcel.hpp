@@ -53,6 +53,15 @@ class Dcel {
   HalfEdge half_edge(FaceId f) const { return face_half_edge_[f]; }
   HalfEdge vertex_half_edge(VertexId v) const { return vertex_half_edge_[slot(v)]; }
   bool is_constrained(HalfEdge h) const { return (next_[h] & kConstrainedBit) != 0; }
+  std::uint32_t corner(HalfEdge h) const {
+    const HalfEdge first = half_edge(face(h));
+    return h == first ? 0 : h == next(first) ? 1 : 2;
+  }
+  std::uint32_t constraint_mask(FaceId f) const {
+    const HalfEdge h = half_edge(f), n = next(h);
+    return std::uint32_t{is_constrained(h)} | std::uint32_t{is_constrained(n)} << 1 |
+           std::uint32_t{is_constrained(next(n))} << 2;
+  }
 
   // Size ----------------------------------------------------------------------------------
   std::size_t face_capacity() const { return face_half_edge_.size(); }

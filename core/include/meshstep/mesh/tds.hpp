@@ -37,6 +37,12 @@ class Tds {
     return v == kInfiniteVertex ? infinite_half_edge_ : vertex_half_edges_[v];
   }
   bool is_constrained(HalfEdge h) const { return (twins_[h] & kConstrainedBit) != 0; }
+  std::uint32_t corner(HalfEdge h) const { return h % 3; }
+  std::uint32_t constraint_mask(FaceId f) const {
+    const std::uint32_t* t = &twins_[3 * f];
+    return std::uint32_t{(t[0] & kConstrainedBit) != 0} | std::uint32_t{(t[1] & kConstrainedBit) != 0} << 1 |
+           std::uint32_t{(t[2] & kConstrainedBit) != 0} << 2;
+  }
 
   // Size ----------------------------------------------------------------------------------
   std::size_t face_capacity() const { return vertices_.size() / 3; }

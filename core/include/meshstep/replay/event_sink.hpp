@@ -1,5 +1,5 @@
 // Where a Recorder puts events: raw 32-bit words in a buffer that the sink hands over in
-// batches (to a log writer's compression thread, or to a test). Appending is a push_back;
+// batches (to a log writer's compression thread, or to a test). Appending bumps a pointer;
 // the hand-over is one call every few thousand events.
 //
 // Raw layout of one event (a private contract between Recorder and the log writer):
@@ -33,6 +33,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 #include "meshstep/geometry/point.hpp"
@@ -52,16 +53,40 @@ struct KeyframePolicy {
   std::uint64_t min_events = 65536;
 };
 
+// An allocator that leaves new elements uninitialised: a batch buffer is written before it
+// is read, and zero-filling 64 KiB per batch would cost as much as writing the events.
+template <class T> struct UninitializedAllocator : std::allocator<T> {
+  template <class U> struct rebind { using other = UninitializedAllocator<U>; };
+  UninitializedAllocator() = default;
+  template <class U> UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
+  template <class U> void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
+  template <class U, class... Args> void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
+// A batch of raw event words; its size is the number of words written.
+using EventWords = std::vector<std::uint32_t, UninitializedAllocator<std::uint32_t>>;
+
 class EventSink {
  public:
   virtual ~EventSink() = default;
   const KeyframePolicy& keyframe_policy() const { return keyframes_; }
 
-  void put(std::uint32_t w) { words_.push_back(w); }
+  // Appends n words to be written through the returned pointer (valid until the next
+  // append). A bump of a pointer: the recorder calls this several times per flip.
+  std::uint32_t* extend(std::size_t n) {
+    if (static_cast<std::size_t>(end_ - cursor_) < n) [[unlikely]] grow(n);
+    std::uint32_t* out = cursor_;
+    cursor_ += n;
+    return out;
+  }
+  void put(std::uint32_t w) { *extend(1) = w; }
   void put(double d) {
     const auto bits = std::bit_cast<std::uint64_t>(d);
-    words_.push_back(static_cast<std::uint32_t>(bits));
-    words_.push_back(static_cast<std::uint32_t>(bits >> 32));
+    std::uint32_t* out = extend(2);
+    out[0] = static_cast<std::uint32_t>(bits);
+    out[1] = static_cast<std::uint32_t>(bits >> 32);
   }
   void put(const Point& p) {
     put(p.x);
@@ -69,32 +94,59 @@ class EventSink {
   }
   // Reserves a word to be filled in later (a count not known yet); returns its position.
   std::size_t placeholder() {
-    words_.push_back(0);
-    return words_.size() - 1;
+    extend(1);
+    return size() - 1;
   }
   void fill(std::size_t at, std::uint32_t w) { words_[at] = w; }
-  // Appends n words to be written through the returned pointer (valid until the next put).
-  std::uint32_t* extend(std::size_t n) {
-    words_.resize(words_.size() + n);
-    return words_.data() + words_.size() - n;
-  }
-  std::size_t size() const { return words_.size(); }
+  std::size_t size() const { return static_cast<std::size_t>(cursor_ - words_.data()); }
 
   // Called after each complete event: hands the batch over when it is big enough.
   void end_event() {
-    if (words_.size() >= batch_words_) hand_over(words_);
+    if (cursor_ >= batch_end_) [[unlikely]] hand_over_batch();
   }
 
  protected:
-  explicit EventSink(std::size_t batch_words) : batch_words_(batch_words) {
-    words_.reserve(batch_words + batch_words / 4);
+  explicit EventSink(std::size_t batch_words) : batch_words_(batch_words) { reset_buffer(); }
+  // Takes the complete events in `words` and leaves in it an empty buffer to fill next
+  // (with its capacity kept, or a fresh one).
+  virtual void hand_over(EventWords& words) = 0;
+  // Hands over whatever complete events are buffered (the end of a run).
+  void flush() {
+    if (size() != 0) hand_over_batch();
   }
-  // Takes the complete events in `words` and leaves it empty (capacity kept or restored).
-  virtual void hand_over(std::vector<std::uint32_t>& words) = 0;
-  std::vector<std::uint32_t> words_;
   KeyframePolicy keyframes_;
 
  private:
+  // Room for the largest ordinary event past the batch size: events never split a batch.
+  static constexpr std::size_t kSlack = 1 << 12;
+
+  void hand_over_batch() {
+    words_.resize(size());  // shrinking: nothing is written
+    hand_over(words_);
+    reset_buffer();
+  }
+  // Makes the whole capacity (at least a batch and its slack) writable.
+  void reset_buffer() {
+    words_.clear();
+    words_.resize(std::max(words_.capacity(), batch_words_ + kSlack));
+    cursor_ = words_.data();
+    end_ = cursor_ + words_.size();
+    batch_end_ = cursor_ + batch_words_;
+  }
+  // An event bigger than the room left (a keyframe, a huge cavity): a bigger buffer, the
+  // words of the events so far kept.
+  [[gnu::noinline]] void grow(std::size_t n) {
+    const std::size_t used = size();
+    words_.resize(std::max(2 * words_.size(), used + n + kSlack));
+    cursor_ = words_.data() + used;
+    end_ = words_.data() + words_.size();
+    batch_end_ = words_.data() + batch_words_;
+  }
+
+  EventWords words_;
+  std::uint32_t* cursor_ = nullptr;     // where the next word goes
+  std::uint32_t* end_ = nullptr;        // end of the writable buffer
+  std::uint32_t* batch_end_ = nullptr;  // a batch this big is handed over
   std::size_t batch_words_;
 };
 

@@ -65,7 +65,7 @@ class LogWriter final : public EventSink {
   const std::string& path() const;
 
  protected:
-  void hand_over(std::vector<std::uint32_t>& words) override;
+  void hand_over(EventWords& words) override;
 
  private:
   struct Impl;

@@ -29,10 +29,9 @@ template <TriangleMesh Mesh>
 [[gnu::always_inline]] inline FaceRecord face_record(const Mesh& m, FaceId f) {
   FaceRecord r;
   if (!m.is_live(f)) return r;
-  const HalfEdge h = m.half_edge(f), n = m.next(h), p = m.prev(h);
-  r.v = {m.origin(h), m.origin(n), m.origin(p)};
-  r.constrained = static_cast<std::uint8_t>(m.is_constrained(h) | (m.is_constrained(n) << 1) |
-                                            (m.is_constrained(p) << 2));
+  const HalfEdge h = m.half_edge(f), n = m.next(h);
+  r.v = {m.origin(h), m.origin(n), m.origin(m.next(n))};
+  r.constrained = static_cast<std::uint8_t>(m.constraint_mask(f));
   return r;
 }
 
@@ -317,13 +316,13 @@ class Recorder {
     since_keyframe_ = 0;
   }
   // For the face of h = u->v: its rotation (which of u, v and the third vertex the data
-  // structure lists first) and its constraint bits, packed in 5 bits. From half-edge
-  // handles alone, without reading the face's vertices: a flip asks for four of these.
+  // structure lists first: 0, 2 or 1 when h is its first, second or third half-edge) and
+  // its constraint bits, packed in 5 bits. From half-edge handles alone, without reading
+  // the face's vertices: a flip asks for four of these.
   template <TriangleMesh M> static std::uint32_t face_bits(const M& m, HalfEdge h) {
-    const HalfEdge first = m.half_edge(m.face(h)), second = m.next(first), third = m.prev(first);
-    const std::uint32_t rotation = first == h ? 0 : second == h ? 2 : 1;
-    return rotation | std::uint32_t{m.is_constrained(first)} << 2 | std::uint32_t{m.is_constrained(second)} << 3 |
-           std::uint32_t{m.is_constrained(third)} << 4;
+    const std::uint32_t corner = m.corner(h);
+    const std::uint32_t rotation = corner == 0 ? 0 : 3 - corner;
+    return rotation | m.constraint_mask(m.face(h)) << 2;
   }
   // A face (x, y, v) made by splitting `old` at v, with x -> y an edge of `old`: which edge
   // (2 bits), the rotation the data structure lists it in (2 bits), constraint bits (3).
