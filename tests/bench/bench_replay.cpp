@@ -6,6 +6,11 @@
 //                            bytes_per_event (whole file, keyframes included), keyframes.
 //   triangulate_discard/N    recording into a sink that drops everything: the cost on the
 //                            algorithm's thread alone
+//   overhead/N               9 pairs of the two, run back to back in alternating order.
+//                            Counters: off_ms, on_ms (medians), ratio (median of the
+//                            pairs' on/off), ratio_min, ratio_max. The figure to quote:
+//                            each ratio is taken within a pair, so the guest's drift cancels.
+//   Every recorded run writes a fresh file: the previous log is deleted untimed.
 //   seek/N                   open the log of an N-point run, then 200 seeks to random
 //                            events (fixed seed), each timed alone. Counters: open_ms,
 //                            first_ms (a cold seek: nothing decoded yet), median_ms,
@@ -44,6 +49,13 @@ void triangulate_into(meshstep::replay::EventSink& sink, const std::vector<meshs
   benchmark::DoNotOptimize(mesh.triangles.data());
 }
 
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// How long the last run waited at the end for the writer to finish (ms).
+double g_finish_ms = 0;
+
 meshstep::replay::LogStats record(const std::vector<meshstep::Point>& points, const std::string& path) {
   meshstep::replay::LogHeader header;
   header.algorithm = "triangulate";
@@ -52,7 +64,9 @@ meshstep::replay::LogStats record(const std::vector<meshstep::Point>& points, co
   header.insertion = "flip";
   meshstep::replay::LogWriter writer(path, header);
   triangulate_into(writer, points);
+  const auto t0 = std::chrono::steady_clock::now();
   writer.finish();
+  g_finish_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return writer.stats();
 }
 
@@ -84,6 +98,11 @@ void bm_triangulate(benchmark::State& state, bool recording) {
   meshstep::replay::LogStats stats;
   for (auto _ : state) {
     if (recording) {
+      // Replacing the previous iteration's log would time its deletion: rename() over a
+      // 124 MB file costs ext4 about 60 ms, freeing the old file's blocks.
+      state.PauseTiming();
+      std::filesystem::remove(log_path(n));
+      state.ResumeTiming();
       stats = record(points, log_path(n));
     } else {
       meshstep::Pslg input;
@@ -94,6 +113,7 @@ void bm_triangulate(benchmark::State& state, bool recording) {
   }
   if (recording) {
     state.counters["events"] = static_cast<double>(stats.events);
+    state.counters["finish_ms"] = g_finish_ms;
     state.counters["bytes_per_event"] = static_cast<double>(stats.bytes) / static_cast<double>(stats.events);
     state.counters["keyframes"] = static_cast<double>(stats.keyframes);
     state.counters["keyframe_bytes_per_event"] =
@@ -101,8 +121,47 @@ void bm_triangulate(benchmark::State& state, bool recording) {
   }
 }
 
-double ms_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// The recorded / unrecorded ratio from pairs run back to back, alternating which goes
+// first: this guest's speed drifts by tens of percent within minutes, and a ratio taken
+// within a pair cancels the drift that separate benchmarks would each see.
+void bm_overhead(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const std::vector<meshstep::Point> points = meshstep::bench::uniform_points(n);
+  constexpr int kPairs = 9;
+  for (auto _ : state) {
+    std::vector<double> off, on, ratio;
+    for (int pair = 0; pair < kPairs; ++pair) {
+      std::filesystem::remove(log_path(n));  // not timed (see bm_triangulate)
+      double times[2];
+      for (int k = 0; k < 2; ++k) {
+        const bool recording = (pair + k) % 2 == 1;
+        const auto t0 = std::chrono::steady_clock::now();
+        if (recording) {
+          record(points, log_path(n));
+        } else {
+          meshstep::Pslg input;
+          input.points = points;
+          const meshstep::TriMesh mesh = meshstep::triangulate(std::move(input));
+          benchmark::DoNotOptimize(mesh.triangles.data());
+        }
+        times[recording] = ms_since(t0);
+      }
+      off.push_back(times[0]);
+      on.push_back(times[1]);
+      ratio.push_back(times[1] / times[0]);
+    }
+    state.counters["off_ms"] = median(off);
+    state.counters["on_ms"] = median(on);
+    state.counters["ratio"] = median(ratio);
+    state.counters["ratio_min"] = *std::min_element(ratio.begin(), ratio.end());
+    state.counters["ratio_max"] = *std::max_element(ratio.begin(), ratio.end());
+  }
 }
 
 void bm_seek(benchmark::State& state) {
@@ -138,6 +197,7 @@ void bm_seek(benchmark::State& state) {
 BENCHMARK_CAPTURE(bm_triangulate, off, false)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(bm_triangulate, on, true)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(bm_triangulate_discard)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(bm_overhead)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
 BENCHMARK(bm_seek)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
 
 BENCHMARK_MAIN();
