@@ -28,9 +28,14 @@ std::string id_json(IdKind kind, std::uint32_t v) {
 
 std::string face_text(const FaceRecord& r) {
   if (r.dead()) return "-";
-  std::string s = "(" + id_text(IdKind::vertex, r.v[0]) + " " + id_text(IdKind::vertex, r.v[1]) +
-                  " " + id_text(IdKind::vertex, r.v[2]) + ")";
-  if (r.constrained) s += "c" + std::to_string(r.constrained);
+  // Here and below, literals are appended piece by piece: GCC 12 at -O3 warns falsely
+  // (-Wrestrict) on `"(" + std::string`.
+  std::string s = "(";
+  for (int i = 0; i < 3; ++i) {
+    s += id_text(IdKind::vertex, r.v[i]);
+    s += i < 2 ? ' ' : ')';
+  }
+  if (r.constrained) s += 'c' + std::to_string(r.constrained);
   return s;
 }
 
@@ -56,14 +61,20 @@ bool has_code(EventType t) {
 std::string describe(const Event& e) {
   const EventSchema& s = schema(e.type);
   std::string out = s.name;
-  if (has_code(e.type)) out += " " + code_name(e.type, e.code);
+  if (has_code(e.type)) {
+    out += ' ';
+    out += code_name(e.type, e.code);
+  }
   for (int i = 0; i < s.id_count; ++i)
     if (e.ids[i] != kNone) out += std::string(" ") + s.id_names[i] + "=" + id_text(s.id_kinds[i], e.ids[i]);
   if (s.has_point) out += " at (" + number(e.point.x) + ", " + number(e.point.y) + ")";
   if (s.has_value) out += " value=" + number(e.value);
   if (s.has_list && !e.list.empty()) {
     out += " list=[";
-    for (std::size_t i = 0; i < e.list.size(); ++i) out += (i ? " " : "") + id_text(IdKind::vertex, e.list[i]);
+    for (std::size_t i = 0; i < e.list.size(); ++i) {
+      if (i) out += ' ';
+      out += id_text(IdKind::vertex, e.list[i]);
+    }
     out += "]";
   }
   if (s.has_points && !e.points.empty()) {
@@ -92,7 +103,10 @@ std::string to_json(const Event& e, std::uint64_t index, std::uint64_t step, boo
   if (s.has_value) out += ",\"value\":" + number(e.value);
   if (s.has_list) {
     out += ",\"list\":[";
-    for (std::size_t i = 0; i < e.list.size(); ++i) out += (i ? "," : "") + id_json(IdKind::vertex, e.list[i]);
+    for (std::size_t i = 0; i < e.list.size(); ++i) {
+      if (i) out += ',';
+      out += id_json(IdKind::vertex, e.list[i]);
+    }
     out += "]";
   }
   if (s.has_points) {

@@ -29,11 +29,13 @@
 //   kKeyframeWord, slot count, then v0, v1, v2, constraint bits per slot (kNone: dead)
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "meshstep/geometry/point.hpp"
