@@ -53,10 +53,12 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// How long the last run waited at the end for the writer to finish (ms).
-double g_finish_ms = 0;
+struct Recorded {
+  meshstep::replay::LogStats stats;
+  double finish_ms = 0;  // how long the run waited at the end for the writer
+};
 
-meshstep::replay::LogStats record(const std::vector<meshstep::Point>& points, const std::string& path) {
+Recorded record(const std::vector<meshstep::Point>& points, const std::string& path) {
   meshstep::replay::LogHeader header;
   header.algorithm = "triangulate";
   header.parameters = "input_vertices=" + std::to_string(points.size());
@@ -66,8 +68,7 @@ meshstep::replay::LogStats record(const std::vector<meshstep::Point>& points, co
   triangulate_into(writer, points);
   const auto t0 = std::chrono::steady_clock::now();
   writer.finish();
-  g_finish_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  return writer.stats();
+  return {writer.stats(), ms_since(t0)};
 }
 
 // A sink that drops every batch: what recording costs the algorithm's own thread.
@@ -95,7 +96,7 @@ void bm_triangulate_discard(benchmark::State& state) {
 void bm_triangulate(benchmark::State& state, bool recording) {
   const auto n = static_cast<std::size_t>(state.range(0));
   const std::vector<meshstep::Point> points = meshstep::bench::uniform_points(n);
-  meshstep::replay::LogStats stats;
+  Recorded last;
   for (auto _ : state) {
     if (recording) {
       // Replacing the previous iteration's log would time its deletion: rename() over a
@@ -103,7 +104,7 @@ void bm_triangulate(benchmark::State& state, bool recording) {
       state.PauseTiming();
       std::filesystem::remove(log_path(n));
       state.ResumeTiming();
-      stats = record(points, log_path(n));
+      last = record(points, log_path(n));
     } else {
       meshstep::Pslg input;
       input.points = points;
@@ -112,8 +113,9 @@ void bm_triangulate(benchmark::State& state, bool recording) {
     }
   }
   if (recording) {
+    const meshstep::replay::LogStats& stats = last.stats;
     state.counters["events"] = static_cast<double>(stats.events);
-    state.counters["finish_ms"] = g_finish_ms;
+    state.counters["finish_ms"] = last.finish_ms;
     state.counters["bytes_per_event"] = static_cast<double>(stats.bytes) / static_cast<double>(stats.events);
     state.counters["keyframes"] = static_cast<double>(stats.keyframes);
     state.counters["keyframe_bytes_per_event"] =

@@ -131,15 +131,17 @@ class EventSink {
   void reset_buffer() {
     words_.clear();
     words_.resize(std::max(words_.capacity(), batch_words_ + kSlack));
-    cursor_ = words_.data();
-    end_ = cursor_ + words_.size();
-    batch_end_ = cursor_ + batch_words_;
+    point_into_buffer(0);
   }
   // An event bigger than the room left (a keyframe, a huge cavity): a bigger buffer, the
   // words of the events so far kept.
   [[gnu::noinline]] void grow(std::size_t n) {
     const std::size_t used = size();
     words_.resize(std::max(2 * words_.size(), used + n + kSlack));
+    point_into_buffer(used);
+  }
+  // The pointers into words_, after it was (re)sized, with `used` words written.
+  void point_into_buffer(std::size_t used) {
     cursor_ = words_.data() + used;
     end_ = words_.data() + words_.size();
     batch_end_ = words_.data() + batch_words_;
