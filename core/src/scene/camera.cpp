@@ -23,14 +23,16 @@ Point middle(const BBox& b) { return {0.5 * b.lo.x + 0.5 * b.hi.x, 0.5 * b.lo.y 
 
 }  // namespace
 
-Camera Camera::fit(const BBox& box, int width, int height, double margin_px) {
+Camera Camera::fit(const BBox& box, int width, int height, const Margins& m) {
   const BBox b = with_extent(box);
-  const double room_x = std::max(1.0, width - 2.0 * margin_px), room_y = std::max(1.0, height - 2.0 * margin_px);
+  const double room_x = std::max(1.0, width - m.left - m.right), room_y = std::max(1.0, height - m.top - m.bottom);
   const double scale = std::min(room_x / (b.hi.x - b.lo.x), room_y / (b.hi.y - b.lo.y));
-  return Camera(middle(b), scale, width, height);
+  // The box's centre goes to the centre of the free area, which is off the picture's centre
+  // by half the difference of opposite margins.
+  const Point c = middle(b);
+  const Point center{c.x + 0.5 * (m.right - m.left) / scale, c.y + 0.5 * (m.top - m.bottom) / scale};
+  return Camera(center, scale, width, height);
 }
-
-Camera Camera::window(const BBox& world_window, int width, int height) { return fit(world_window, width, height, 0.0); }
 
 void Camera::zoom_at(const Point& screen, double factor) {
   if (!(factor > 0.0) || !std::isfinite(factor)) return;

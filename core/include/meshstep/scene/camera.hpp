@@ -10,6 +10,12 @@
 
 namespace meshstep::scene {
 
+// Room kept free on each side of the picture when fitting, in pixels (a caption band on
+// top, a legend on the right).
+struct Margins {
+  double left = 24.0, top = 24.0, right = 24.0, bottom = 24.0;
+};
+
 class Camera {
  public:
   Camera() = default;
@@ -18,10 +24,16 @@ class Camera {
 
   // The box, centred, as large as fits inside the picture less `margin_px` on every side.
   // An empty or degenerate box gets a unit-sized window around its centre.
-  static Camera fit(const BBox& box, int width, int height, double margin_px = 24.0);
+  static Camera fit(const BBox& box, int width, int height, double margin_px = 24.0) {
+    return fit(box, width, height, Margins{margin_px, margin_px, margin_px, margin_px});
+  }
+  // The box, centred in what the margins leave free.
+  static Camera fit(const BBox& box, int width, int height, const Margins& margins);
   // Shows at least the world window [x0,x1] x [y0,y1]: the window is centred, and the
   // direction with room to spare shows more.
-  static Camera window(const BBox& world_window, int width, int height);
+  static Camera window(const BBox& world_window, int width, int height) {
+    return fit(world_window, width, height, Margins{0.0, 0.0, 0.0, 0.0});
+  }
 
   Point to_screen(const Point& world) const {
     return {(world.x - center_.x) * scale_ + 0.5 * width_, 0.5 * height_ - (world.y - center_.y) * scale_};
