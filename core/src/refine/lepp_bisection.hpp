@@ -62,7 +62,7 @@ class LeppBisector {
       // Bisect along the path until the target itself is cut (or a cap or the precision
       // floor stops it).
       while (still_there(t) && !capped())
-        if (!bisect_terminal_edge(t.face)) break;
+        if (!bisect_terminal_edge(t)) break;
     }
     rec.phase_end(replay::Phase::refine);
     report.stopped_by_cap = capped();
@@ -140,11 +140,11 @@ class LeppBisector {
 
   bool capped() const { return reached_cap(criteria_, tri_.points().size() - input_count_, mesh_); }
 
-  // One step: the terminal edge of f's path, bisected with the triangles on both sides.
-  // False, changing nothing, when the rounded midpoint would not leave every triangle
+  // One step for target t: the terminal edge of its path, bisected with the triangles on both
+  // sides. False, changing nothing, when the rounded midpoint would not leave every triangle
   // counterclockwise (an edge a few ulps long).
-  bool bisect_terminal_edge(FaceId f) {
-    const HalfEdge e = lepp(mesh_, tri_.points(), f, [](HalfEdge) { return false; }, path_);
+  bool bisect_terminal_edge(const Target& t) {
+    const HalfEdge e = lepp(mesh_, tri_.points(), t.face, [](HalfEdge) { return false; }, path_);
     const VertexId a = mesh_.origin(e), b = mesh_.dest(e);
     const Point &pa = point(a), &pb = point(b);
     const Point m{(pa.x + pb.x) / 2.0, (pa.y + pb.y) / 2.0};
@@ -154,7 +154,10 @@ class LeppBisector {
     }
     Rec& rec = tri_.recorder();
     rec.step_begin(mesh_, replay::StepKind::bisect, a, b);
-    if constexpr (Rec::enabled) record_lepp_path(rec, mesh_, path_, e, mesh_.twin(e) == kNone ? 1 : 2, path_vertices_);
+    if constexpr (Rec::enabled) {
+      record_failed_criteria(rec, criteria_, tri_.points(), t.a, t.b, t.c);  // what the step is for
+      record_lepp_path(rec, mesh_, path_, e, mesh_.twin(e) == kNone ? 1 : 2, path_vertices_);
+    }
     const auto segment = markers_.find(edge_tie_key(a, b));
     const HalfEdge out = tri_.bisect(m, e);
     const VertexId v = mesh_.origin(out);

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "meshstep/mesh/concept.hpp"
 #include "meshstep/refine/quality.hpp"
 #include "meshstep/refine/refine.hpp"
+#include "meshstep/replay/event.hpp"
 #include "scaled_criteria.hpp"
 
 namespace meshstep::detail {
@@ -50,21 +52,63 @@ bool splits_cleanly(const Mesh& mesh, const std::vector<Point>& points, HalfEdge
   return orient2d(b, p, d) > 0.0 && orient2d(p, a, d) > 0.0;
 }
 
+// The criteria one by one: does the triangle (a, b, c) of shape s miss the bound? Both
+// refinement loops test through these, and so does the record of what a step fixes
+// (record_failed_criteria), so that the two cannot disagree.
+inline bool misses_min_angle(const ScaledCriteria& criteria, const quality::Shape& s) {
+  return s.sin2_min_angle() < criteria.sin2_min_angle;
+}
+inline bool misses_max_angle(const ScaledCriteria& criteria, const quality::Shape& s) {
+  return s.cos_max_angle() < criteria.cos_max_angle;
+}
+inline bool misses_max_aspect(const ScaledCriteria& criteria, const quality::Shape& s) {
+  return criteria.max_aspect > 0.0 && s.aspect() > criteria.max_aspect;
+}
+inline bool misses_max_area(const ScaledCriteria& criteria, const quality::Shape& s) {
+  return criteria.max_area > 0.0 && s.area > criteria.max_area;
+}
+// The area bound of the triangle's own (its region's, the caller's).
+inline bool misses_local_max_area(const ScaledCriteria& criteria, const quality::Shape& s, const Point& a,
+                                  const Point& b, const Point& c) {
+  if (!criteria.max_area_for) return false;
+  const double bound = criteria.max_area_for(a, b, c);
+  return bound > 0.0 && s.area > bound;
+}
+// The size function at the centroid bounds the longest edge.
+inline bool misses_size(const ScaledCriteria& criteria, const quality::Shape& s, const Point& a, const Point& b,
+                        const Point& c) {
+  if (!criteria.size) return false;
+  const Point centroid{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
+  const double l = criteria.size(centroid);
+  return l > 0.0 && s.longest2 > l * l;
+}
+
 // Does the triangle (a, b, c) of shape s fail a size criterion: the area bound, its own area
 // bound (region, caller), or the size function (longest edge) at its centroid?
 inline bool too_large(const ScaledCriteria& criteria, const quality::Shape& s, const Point& a, const Point& b,
                       const Point& c) {
-  if (criteria.max_area > 0.0 && s.area > criteria.max_area) return true;
-  if (criteria.max_area_for) {
-    const double bound = criteria.max_area_for(a, b, c);
-    if (bound > 0.0 && s.area > bound) return true;
-  }
-  if (criteria.size) {
-    const Point centroid{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
-    const double l = criteria.size(centroid);
-    if (l > 0.0 && s.longest2 > l * l) return true;
-  }
-  return false;
+  return misses_max_area(criteria, s) || misses_local_max_area(criteria, s, a, b, c) ||
+         misses_size(criteria, s, a, b, c);
+}
+
+// Records a failed criterion_test for every bound the triangle (a, b, c) misses, with what
+// was measured (in scaled coordinates: the recorder unscales). Recording only: the loops
+// themselves stop at the first bound missed and measure nothing they do not compare.
+template <class Rec>
+void record_failed_criteria(Rec& rec, const ScaledCriteria& criteria, const std::vector<Point>& points, VertexId a,
+                            VertexId b, VertexId c) {
+  using replay::Criterion;
+  const Point &pa = points[a], &pb = points[b], &pc = points[c];
+  const quality::Shape s = quality::shape(pa, pb, pc);
+  const auto failed = [&](Criterion criterion, double measured) {
+    rec.criterion_test(criterion, false, a, b, c, measured);
+  };
+  if (misses_min_angle(criteria, s)) failed(Criterion::min_angle, s.min_angle_deg());
+  if (misses_max_angle(criteria, s)) failed(Criterion::max_angle, s.max_angle_deg());
+  if (misses_max_aspect(criteria, s)) failed(Criterion::max_aspect, s.aspect());
+  if (misses_max_area(criteria, s)) failed(Criterion::max_area, s.area);
+  if (misses_local_max_area(criteria, s, pa, pb, pc)) failed(Criterion::local_max_area, s.area);
+  if (misses_size(criteria, s, pa, pb, pc)) failed(Criterion::size, std::sqrt(s.longest2));
 }
 
 // Records a Lepp path: its faces as vertex triples (into `scratch`), its terminal edge e and

@@ -206,8 +206,7 @@ class Refiner {
 
   // Does a triangle of shape s miss an angle or aspect bound?
   bool angle_bad(const quality::Shape& s) const {
-    return s.sin2_min_angle() < criteria_.sin2_min_angle || s.cos_max_angle() < criteria_.cos_max_angle ||
-           (criteria_.max_aspect > 0.0 && s.aspect() > criteria_.max_aspect);
+    return misses_min_angle(criteria_, s) || misses_max_angle(criteria_, s) || misses_max_aspect(criteria_, s);
   }
 
   // Is face f bad, and if so with what priority? Skips (and counts) the ones whose smallest
@@ -359,8 +358,14 @@ class Refiner {
     // bound itself, rounding leaves some new triangles a hair below it, and they come back.
     const double h = 0.95 * l * (beta + std::sqrt(beta * beta - 0.25));
     const double dx = center.x - m.x, dy = center.y - m.y, dm = std::sqrt(dx * dx + dy * dy);
-    if (!(dm > h)) return center;
-    return {m.x + dx * h / dm, m.y + dy * h / dm};
+    if (!(dm > 0.0)) return center;
+    const Point offcenter{m.x + dx * h / dm, m.y + dy * h / dm};
+    // The point not taken is the alternative the record shows beside the one taken.
+    if (!(dm > h)) {
+      alternative = offcenter;
+      return center;
+    }
+    return offcenter;
   }
 
   // A terminal point nearer a terminal triangle's vertex than the bad triangle's shortest
@@ -498,6 +503,7 @@ class Refiner {
     Rec& rec = tri_.recorder();
     rec.step_begin(mesh_, replay::StepKind::refine, c.a, c.b);
     if constexpr (Rec::enabled) {
+      record_failed_criteria(rec, criteria_, tri_.points(), c.a, c.b, c.c);
       const Point alternatives[1] = {alternative};
       rec.point_selected(static_cast<std::uint8_t>(options_.selection), c.a, c.b, c.c, p,
                          std::span<const Point>(alternatives, p == alternative ? 0 : 1));

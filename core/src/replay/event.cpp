@@ -14,6 +14,7 @@ constexpr const char* kLocateNames[] = {"in_face", "on_edge", "on_vertex"};
 constexpr const char* kSplitNames[] = {"insert", "crossing", "encroached", "bisection"};
 constexpr const char* kFlipNames[] = {"delaunay", "segment_recovery", "vertex_removal"};
 constexpr const char* kRemoveNames[] = {"ghost", "hole", "outside"};
+constexpr const char* kCriterionNames[] = {"min_angle", "max_angle", "max_aspect", "max_area", "local_max_area", "size"};
 
 static_assert(std::size(kStepNames) == static_cast<std::size_t>(StepKind::count_));
 static_assert(std::size(kPhaseNames) == static_cast<std::size_t>(Phase::count_));
@@ -21,6 +22,7 @@ static_assert(std::size(kLocateNames) == static_cast<std::size_t>(LocateResult::
 static_assert(std::size(kSplitNames) == static_cast<std::size_t>(SplitReason::count_));
 static_assert(std::size(kFlipNames) == static_cast<std::size_t>(FlipReason::count_));
 static_assert(std::size(kRemoveNames) == static_cast<std::size_t>(RemoveReason::count_));
+static_assert(std::size(kCriterionNames) == static_cast<std::size_t>(Criterion::count_));
 
 template <std::size_t N>
 std::string pick(const char* const (&names)[N], std::uint8_t code) {
@@ -38,6 +40,10 @@ const char* name(Phase phase) {
   const auto i = static_cast<std::size_t>(phase);
   return i < std::size(kPhaseNames) ? kPhaseNames[i] : "unknown";
 }
+const char* name(Criterion criterion) {
+  const auto i = static_cast<std::size_t>(criterion);
+  return i < std::size(kCriterionNames) ? kCriterionNames[i] : "unknown";
+}
 
 std::string code_name(EventType type, std::uint8_t code) {
   switch (type) {
@@ -49,8 +55,10 @@ std::string code_name(EventType type, std::uint8_t code) {
     case EventType::flip: return pick(kFlipNames, code);
     case EventType::remove_face: return pick(kRemoveNames, code);
     case EventType::constrain: return code ? "set" : "cleared";
-    case EventType::criterion_test:
-      return std::to_string(code & 0x7F) + ((code & 0x80) ? " passed" : " failed");
+    case EventType::criterion_test: {
+      const auto criterion = static_cast<std::uint8_t>(code & ~kCriterionPassed);
+      return pick(kCriterionNames, criterion) + ((code & kCriterionPassed) ? " passed" : " failed");
+    }
     default: return std::to_string(code);
   }
 }

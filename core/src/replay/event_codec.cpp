@@ -3,6 +3,7 @@
 
 #include <bit>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 
 #include "format.hpp"
@@ -22,6 +23,9 @@ constexpr std::uint64_t kFullVertex = 2 + CoderState::kCache;
 constexpr std::uint8_t kDead = 0x08;
 constexpr std::uint8_t kTableRecord = 0x80;
 constexpr std::uint8_t kTableFlags = 0x40;
+// A walk's step codes (Encoder::walk): 3 * edge + rotation for a face across an edge of the
+// one before, kWholeFace for one stored whole.
+constexpr std::uint8_t kWholeFace = 0xF;
 
 std::uint8_t* put_varint(std::uint8_t* out, std::uint64_t v) {
   while (v >= 0x80) {
@@ -90,8 +94,10 @@ std::size_t split_face_writes(VertexId v, const std::array<std::uint32_t, 3>& ab
   return n;
 }
 
+// A list element takes up to 10 bytes, and a walk's face up to half a byte more (its step
+// code), so 11 per element.
 std::size_t Encoder::max_bytes(const Event& e) {
-  return 2 + 4 * 10 + 16 + 8 + 10 + 10 * e.list.size() + 10 + 16 * e.points.size() + 10 +
+  return 2 + 4 * 10 + 16 + 8 + 10 + 11 * e.list.size() + 10 + 16 * e.points.size() + 10 +
          e.writes.size() * (10 + 2 * kMaxRecordBytes + 2);
 }
 
@@ -164,6 +170,58 @@ std::uint8_t* Encoder::table_record(const FaceRecord& r, std::uint8_t* out) {
   return out;
 }
 
+namespace {
+
+// The step code of face g after face f (see Encoder::walk), and the position in g of its
+// vertex opposite the edge it shares with f (-1 with kWholeFace).
+std::uint8_t walk_step(const std::uint32_t* f, const std::uint32_t* g, int& fresh) {
+  constexpr int kNext[3] = {1, 2, 0};
+  for (int at = 0; at < 3; ++at) {
+    // Is g[at] -> g[at + 1] the edge f[i + 1] -> f[i] of f, for some i?
+    const std::uint32_t y = g[kNext[at]];
+    const int i = f[0] == y ? 0 : f[1] == y ? 1 : f[2] == y ? 2 : -1;
+    if (i >= 0 && f[kNext[i]] == g[at]) {
+      fresh = kNext[kNext[at]];
+      // g is listed from g[at] = f[i + 1], the first of (f[i + 1], f[i], w) when at is 0,
+      // the third when at is 1 (g[0] is w), the second when at is 2.
+      return static_cast<std::uint8_t>(3 * i + (3 - at) % 3);
+    }
+  }
+  fresh = -1;
+  return kWholeFace;
+}
+
+}  // namespace
+
+// A locate event's walk: faces as vertex triples, each (as the recorder writes them) across
+// an edge of the one before. Stored as the number of faces, the first face's vertices, then
+// a step code per further face, two to a byte (low nibble first), and then per further face
+// its vertex opposite the shared edge. Step code 3 * i + r: the face is across edge i of the
+// face before, f[i] -> f[i + 1], so it holds f[i + 1], f[i] and its new vertex w in that
+// order, listed from the r-th of them. A face that shares no edge with the one before (none
+// does in a walk) has code kWholeFace and its three vertices in place of w.
+std::uint8_t* Encoder::walk(std::span<const std::uint32_t> list, std::uint8_t* out) {
+  if (list.size() % 3 != 0) throw std::logic_error("a locate event's walk is not a list of faces");
+  const std::size_t faces = list.size() / 3;
+  out = put_varint(out, faces);
+  if (faces == 0) return out;
+  for (int k = 0; k < 3; ++k) out = vertex(list[k], out);
+  std::uint8_t* codes = out;
+  out += faces / 2;  // (faces - 1) codes, two to a byte, rounded up
+  for (std::size_t j = 0; j + 1 < faces; ++j) {
+    const std::uint32_t* g = &list[3 * (j + 1)];
+    int fresh;
+    const std::uint8_t code = walk_step(&list[3 * j], g, fresh);
+    codes[j / 2] = j % 2 ? static_cast<std::uint8_t>(codes[j / 2] | code << 4) : code;
+    if (fresh >= 0) {
+      out = vertex(g[fresh], out);
+    } else {
+      for (int k = 0; k < 3; ++k) out = vertex(g[k], out);
+    }
+  }
+  return out;
+}
+
 // Flattened: the per-vertex helpers run a dozen times per event and GCC keeps them out of
 // line otherwise.
 [[gnu::flatten]] std::uint8_t* Encoder::event(const Event& e, std::uint8_t* out) {
@@ -177,7 +235,9 @@ std::uint8_t* Encoder::table_record(const FaceRecord& r, std::uint8_t* out) {
     out = put_f64(out, e.point.y);
   }
   if (s.has_value) out = put_f64(out, e.value);
-  if (s.has_list) {
+  if (e.type == EventType::locate && stores_list(s, e.type, version_)) {
+    out = walk(e.list, out);
+  } else if (stores_list(s, e.type, version_)) {
     out = put_varint(out, e.list.size());
     for (const std::uint32_t x : e.list) out = vertex(x, out);
   }
@@ -353,7 +413,9 @@ void Decoder::event(DecodedEvents& out) {
     if (n > static_cast<std::uint64_t>(end_ - p_)) throw FormatError(std::string(what) + " count too large");
     return static_cast<std::size_t>(n);
   };
-  if (s.has_list) {
+  if (h.type == EventType::locate && stores_list(s, h.type, version_)) {
+    walk(out);
+  } else if (stores_list(s, h.type, version_)) {
     const std::size_t n = count("list");
     for (std::size_t i = 0; i < n; ++i) out.lists.push_back(vertex());
   }
@@ -376,6 +438,36 @@ void Decoder::event(DecodedEvents& out) {
     }
   }
   push(h, out);
+}
+
+// See Encoder::walk.
+void Decoder::walk(DecodedEvents& out) {
+  const std::uint64_t faces = varint();
+  // A face past the first takes a nibble and a byte at least: the count is bounded by the
+  // bytes left, so a corrupted one cannot make us allocate without bound.
+  if (faces > 1 + static_cast<std::uint64_t>(end_ - p_)) throw FormatError("walk face count too large");
+  if (faces == 0) return;
+  const std::size_t code_bytes = static_cast<std::size_t>(faces / 2);
+  std::array<std::uint32_t, 3> f;
+  for (std::uint32_t& v : f) v = vertex();
+  out.lists.insert(out.lists.end(), f.begin(), f.end());
+  if (static_cast<std::size_t>(end_ - p_) < code_bytes) throw FormatError("event data ends in the middle of a walk");
+  const std::uint8_t* codes = p_;
+  p_ += code_bytes;
+  for (std::size_t j = 0; j + 1 < faces; ++j) {
+    const std::uint8_t code = (codes[j / 2] >> (4 * (j % 2))) & 0xF;
+    std::array<std::uint32_t, 3> g;
+    if (code == kWholeFace) {
+      for (std::uint32_t& v : g) v = vertex();
+    } else {
+      if (code >= 9) throw FormatError("bad walk step");
+      const int i = code / 3, r = code % 3;
+      const std::array<std::uint32_t, 3> across{f[(i + 1) % 3], f[i], vertex()};
+      g = {across[r], across[(r + 1) % 3], across[(r + 2) % 3]};
+    }
+    out.lists.insert(out.lists.end(), g.begin(), g.end());
+    f = g;
+  }
 }
 
 void Decoder::push(EventHead& h, DecodedEvents& out) {

@@ -7,8 +7,10 @@
 // face records name their vertices through a table of the event's first four vertices
 // (its ids, then the vertices of its records as they come): a record whose three vertices
 // are in the table is one byte. Slots and input indices are differences from the previous
-// one. zstd compresses the result further. A block starts from a reset coder so that it
-// decodes on its own.
+// one. A locate event's walk is a chain of faces each sharing an edge with the one before,
+// so past its first face a face is stored as the edge it shares, its rotation and its one
+// other vertex (Encoder::walk). zstd compresses the result further. A block starts from a
+// reset coder so that it decodes on its own.
 #pragma once
 
 #include <array>
@@ -17,6 +19,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "format.hpp"
 #include "meshstep/replay/decoded_events.hpp"
 #include "meshstep/replay/event.hpp"
 
@@ -46,6 +49,12 @@ struct CoderState {
   }
 };
 
+// Whether events of this type store their list in a file of format `version` (locate events
+// carry their walk from version 3 on).
+inline bool stores_list(const EventSchema& s, EventType type, std::uint32_t version) {
+  return s.has_list && (type != EventType::locate || version >= format::kLocateWalkVersion);
+}
+
 // The face writes of a flip, from its packed form (event_sink.hpp): the four faces before
 // and after, paired by slot. Returns the number of writes (2 when the data structure reuses
 // both slots, as Tds and Dcel do; up to 4).
@@ -61,6 +70,8 @@ std::size_t split_face_writes(VertexId v, const std::array<std::uint32_t, 3>& ab
 // buffer grows once in a while instead of checking capacity at every byte).
 class Encoder {
  public:
+  // Writes events as files of format `version` store them (format.hpp).
+  explicit Encoder(std::uint32_t version = format::kFormatVersion) : version_(version) {}
   void reset() { state_ = CoderState{}; }
   static std::size_t max_bytes(const Event& e);
   static constexpr std::size_t kMaxRecordBytes = 1 + 3 * 10;
@@ -81,13 +92,17 @@ class Encoder {
  private:
   std::uint8_t* vertex(std::uint32_t v, std::uint8_t* out);
   std::uint8_t* table_record(const FaceRecord& r, std::uint8_t* out);
+  std::uint8_t* walk(std::span<const std::uint32_t> list, std::uint8_t* out);
   std::uint8_t* id(IdKind kind, std::uint32_t value, std::uint8_t* out);
   CoderState state_;
+  std::uint32_t version_;
 };
 
 class Decoder {
  public:
-  Decoder(const std::uint8_t* begin, const std::uint8_t* end) : p_(begin), begin_(begin), end_(end) {}
+  // Reads events of a file of format `version`.
+  Decoder(const std::uint8_t* begin, const std::uint8_t* end, std::uint32_t version)
+      : p_(begin), begin_(begin), end_(end), version_(version) {}
   bool done() const { return p_ == end_; }
   std::size_t offset() const { return static_cast<std::size_t>(p_ - begin_); }
   // Appends the next event to `out`. Throws FormatError.
@@ -96,6 +111,7 @@ class Decoder {
 
  private:
   FaceRecord table_record();
+  void walk(DecodedEvents& out);
   void flip(EventHead& h, DecodedEvents& out);
   void split_face(EventHead& h, DecodedEvents& out);
   void push(EventHead& h, DecodedEvents& out);
@@ -108,6 +124,7 @@ class Decoder {
   const std::uint8_t* p_;
   const std::uint8_t* begin_;
   const std::uint8_t* end_;
+  std::uint32_t version_;
   CoderState state_;
 };
 

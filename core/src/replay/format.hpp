@@ -40,7 +40,11 @@ static_assert(std::endian::native == std::endian::little,
 
 inline constexpr char kFileMagic[8] = {'M', 'S', 'T', 'E', 'P', 'L', 'O', 'G'};
 // 2: split_face events packed like flips; keyframes in a layout of their own.
-inline constexpr std::uint32_t kFormatVersion = 2;
+// 3: locate events carry the faces of their walk (a list).
+inline constexpr std::uint32_t kFormatVersion = 3;
+// The oldest version read: a version-2 log reads as one whose locate events have no list.
+inline constexpr std::uint32_t kOldestReadableVersion = 2;
+inline constexpr std::uint32_t kLocateWalkVersion = 3;  // the first whose locate events have one
 inline constexpr std::uint32_t kBlockMagic = 0x4B42534Du;  // "MSBK"
 inline constexpr std::size_t kBlockHeaderSize = 56;
 inline constexpr std::size_t kMaxBlockPayload = std::size_t{1} << 30;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <stdexcept>
+#include <string>
 
 #include "meshstep/replay/mesh_hash.hpp"
 
@@ -15,10 +16,21 @@ double take_double(std::span<const std::uint32_t>::iterator& it) {
   return std::bit_cast<double>(lo | (hi << 32));
 }
 
+// The version a writer asked for (0: the current one); throws for one it cannot write.
+std::uint32_t version_to_write(std::uint32_t asked) {
+  if (asked == 0) return format::kFormatVersion;
+  if (asked < format::kOldestReadableVersion || asked > format::kFormatVersion)
+    throw std::invalid_argument("replay log format version " + std::to_string(asked) + " cannot be written (" +
+                                std::to_string(format::kOldestReadableVersion) + " to " +
+                                std::to_string(format::kFormatVersion) + " can)");
+  return asked;
+}
+
 }  // namespace
 
 LogEncoder::LogEncoder(const LogWriterOptions& options, BlockOut out)
-    : options_(options), out_(std::move(out)), compressor_(options.zstd_level) {
+    : options_(options), version_(version_to_write(options.format_version)), out_(std::move(out)),
+      compressor_(options.zstd_level), encoder_(version_) {
   block_.resize(options_.block_bytes + 65536);
 }
 
@@ -73,10 +85,9 @@ void LogEncoder::consume(std::span<const std::uint32_t> words) {
     e.point = {x, take_double(it)};
   }
   if (s.has_value) e.value = take_double(it);
-  if (s.has_list) {
-    list_.assign(it + 1, it + 1 + *it);
-    it += 1 + list_.size();
-    e.list = list_;
+  if (s.has_list) {  // read in place: the batch outlives the event's encoding
+    e.list = std::span<const std::uint32_t>(it + 1, *it);
+    it += 1 + e.list.size();
   }
   if (s.has_points) {
     const std::uint32_t n = *it++;

@@ -23,6 +23,7 @@ class LogEncoder {
   // Flushes the last events block and writes the end block.
   void finish();
   const LogStats& stats() const { return stats_; }
+  std::uint32_t format_version() const { return version_; }
 
  private:
   std::span<const std::uint32_t>::iterator parse(std::span<const std::uint32_t>::iterator it,
@@ -38,6 +39,7 @@ class LogEncoder {
   void emit(format::BlockHeader header, std::span<const std::uint8_t> raw, Compression compression = Compression::zstd);
 
   LogWriterOptions options_;
+  std::uint32_t version_;
   BlockOut out_;
   format::Compressor compressor_;
   codec::Encoder encoder_;
@@ -50,7 +52,6 @@ class LogEncoder {
   std::uint64_t hash_ = 0;  // of the last keyframe: at the end, of the final mesh
 
   // Scratch for the event being parsed.
-  std::vector<std::uint32_t> list_;
   std::vector<Point> points_;
   std::vector<SlotWrite> writes_;
   LogStats stats_;

@@ -55,9 +55,10 @@ void LogReader::read_header() {
     fail("not a meshstep replay log (it does not begin with \"MSTEPLOG\")");
   if (file_.size() < 16) fail("truncated in its header");
   format_version_ = format::get_le<std::uint32_t>(file_.data() + 8);
-  if (format_version_ != format::kFormatVersion)
+  if (format_version_ < format::kOldestReadableVersion || format_version_ > format::kFormatVersion)
     fail("replay log format version " + std::to_string(format_version_) +
-         " is not one this meshstep reads (it reads version " + std::to_string(format::kFormatVersion) +
+         " is not one this meshstep reads (it reads versions " + std::to_string(format::kOldestReadableVersion) +
+         " to " + std::to_string(format::kFormatVersion) +
          (format_version_ > format::kFormatVersion ? "; the log may come from a newer meshstep)"
                                                    : "; record the run again with this meshstep)"));
   const std::uint32_t length = format::get_le<std::uint32_t>(file_.data() + 12);
@@ -132,7 +133,7 @@ void LogReader::scan_blocks() {
                     std::to_string(event_count_) + " events come before it");
           cache_->decompressor.decompress({payload, h.stored_size}, h.raw_size, cache_->raw);
           events.clear();
-          codec::Decoder decoder(cache_->raw.data(), cache_->raw.data() + cache_->raw.size());
+          codec::Decoder decoder(cache_->raw.data(), cache_->raw.data() + cache_->raw.size(), format_version_);
           while (!decoder.done()) {
             try {
               decoder.event(events);
@@ -254,7 +255,7 @@ const DecodedEvents& LogReader::block_events(std::size_t block) const {
   const BlockInfo& b = blocks_[block];
   const std::uint8_t* payload = file_.data() + b.offset + format::kBlockHeaderSize;
   cache_->decompressor.decompress({payload, b.stored_size}, b.raw_size, cache_->raw);
-  codec::Decoder decoder(cache_->raw.data(), cache_->raw.data() + cache_->raw.size());
+  codec::Decoder decoder(cache_->raw.data(), cache_->raw.data() + cache_->raw.size(), format_version_);
   while (!decoder.done()) decoder.event(events);  // checked when the file was opened
   cached.emplace_front(block, std::move(events));
   return cached.front().second;

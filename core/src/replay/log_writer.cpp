@@ -98,7 +98,7 @@ struct LogWriter::Impl {
     put_field(fields, "data_structure", header.data_structure);
     put_field(fields, "insertion", header.insertion);
     std::vector<std::uint8_t> bytes(format::kFileMagic, format::kFileMagic + 8);
-    format::put_le(bytes, format::kFormatVersion);
+    format::put_le(bytes, encoder.format_version());
     format::put_le(bytes, static_cast<std::uint32_t>(fields.size()));
     bytes.insert(bytes.end(), fields.begin(), fields.end());
     format::put_le(bytes, format::checksum(bytes));

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "meshstep/delaunay/triangulate.hpp"
@@ -84,7 +85,7 @@ class Triangulation {
   HalfEdge insert_in_step(VertexId v, HalfEdge hint) {
     const Location loc = locate(points_[v], hint);
     if constexpr (Rec::enabled)
-      rec_.locate(v, walk_length_, mesh_.face(loc.half_edge), static_cast<replay::LocateResult>(loc.kind));
+      rec_.locate(v, walk_, mesh_.face(loc.half_edge), static_cast<replay::LocateResult>(loc.kind));
     if (loc.kind == Location::Kind::on_vertex) {
       merged_into_[v] = mesh_.origin(loc.half_edge);
       ++duplicates_;
@@ -177,11 +178,11 @@ class Triangulation {
   [[gnu::flatten]] Location locate(const Point& p, HalfEdge start) const {
     HalfEdge h = start;
     bool entered = false;  // true when we came in through h, so p is strictly left of h
-    if constexpr (Rec::enabled) walk_length_ = 0;
+    if constexpr (Rec::enabled) walk_.start();
     for (;;) {
-      if constexpr (Rec::enabled) ++walk_length_;
       VertexId a = mesh_.origin(h), b = mesh_.dest(h);
       const VertexId c = mesh_.apex(h);
+      if constexpr (Rec::enabled) walk_.enter(mesh_.corner(h), a, b, c);
       if (a == kInfiniteVertex || b == kInfiniteVertex || c == kInfiniteVertex) {
         if (a == kInfiniteVertex) h = mesh_.next(h);
         if (b == kInfiniteVertex) h = mesh_.prev(h);
@@ -428,7 +429,8 @@ class Triangulation {
   std::array<VertexId, 3> first_{kNone, kNone, kNone};
   mutable std::uint32_t random_ = 0x9E3779B9u;
   [[no_unique_address]] Rec rec_;
-  mutable std::uint32_t walk_length_ = 0;  // faces visited by the last walk (when recording)
+  // The faces the last walk went through, for the locate event: nothing unless recording.
+  [[no_unique_address]] mutable std::conditional_t<Rec::enabled, replay::WalkTrace, replay::NoWalkTrace> walk_;
   // Scratch, kept across insertions so that inserting allocates nothing in steady state.
   std::vector<HalfEdge> stack_;
   std::vector<FaceId> cavity_;

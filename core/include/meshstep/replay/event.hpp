@@ -31,7 +31,8 @@ enum class EventType : std::uint8_t {
   step_begin,      // code: StepKind; ids: subject vertices (or kNone)
   phase_begin,     // code: Phase
   phase_end,       // code: Phase
-  locate,          // code: LocateResult; ids: vertex located, faces visited, face slot found
+  locate,          // code: LocateResult; ids: vertex located, faces visited, face slot found;
+                   // list: the walk's faces, 3 ids each (format 3; see Recorder::locate)
   vertex,          // a vertex enters the run; ids: vertex, its index in the input; point
   duplicate,       // a vertex at the same place as an earlier one; ids: vertex, earlier, input index
   init,            // the first triangle (and its ghost faces); ids: its three vertices
@@ -45,7 +46,7 @@ enum class EventType : std::uint8_t {
   point_selected,  // code: strategy; ids: the bad triangle; point: chosen; list/points: alternatives
   lepp_path,       // ids: terminal edge, number of terminal triangles; list: triangles (3 ids each)
   encroached,      // ids: segment endpoints, encroaching vertex (or kNone); point: encroaching point
-  criterion_test,  // code: criterion | 0x80 when passed; ids: triangle; value: the measured quality
+  criterion_test,  // code: Criterion | kCriterionPassed; ids: triangle; value: what was measured
   count_
 };
 inline constexpr std::size_t kEventTypeCount = static_cast<std::size_t>(EventType::count_);
@@ -68,6 +69,31 @@ enum class SplitReason : std::uint8_t { insert, crossing, encroached, bisection,
 // vertex_removal: a flip that lowers a vertex's degree on the way to removing it.
 enum class FlipReason : std::uint8_t { delaunay, segment_recovery, vertex_removal, count_ };
 enum class RemoveReason : std::uint8_t { ghost, hole, outside, count_ };
+
+// The bound a criterion_test weighed a triangle against, and what its value measured, in
+// the units of the bound as the log's header gives it (coordinates as the log stores them).
+enum class Criterion : std::uint8_t {
+  min_angle,       // the smallest angle, in degrees (min_angle)
+  max_angle,       // the largest angle, in degrees (max_angle)
+  max_aspect,      // longest edge over shortest altitude (max_aspect)
+  max_area,        // the area (max_area)
+  local_max_area,  // the area, against the bound where the triangle lies: its region's
+                   // (regional attributes) or the old mesh's triangle's (re-refinement)
+  size,            // the longest edge, against the size function at the centroid (size)
+  count_
+};
+// Set in a criterion_test's code when the triangle met the bound.
+inline constexpr std::uint8_t kCriterionPassed = 0x80;
+// How a criterion's measured value scales with lengths: 0 for angles and ratios, 1 for
+// lengths, 2 for areas (the recorder unscales values with the coordinates).
+constexpr int length_power(Criterion c) {
+  switch (c) {
+    case Criterion::max_area:
+    case Criterion::local_max_area: return 2;
+    case Criterion::size: return 1;
+    default: return 0;
+  }
+}
 
 // What one face slot holds: the triangle (counterclockwise, as the data structure stores
 // it) and a constraint flag per edge (bit i: the edge from v[i] to v[(i+1)%3]). A dead slot
@@ -126,7 +152,7 @@ inline constexpr EventSchema kSchemas[kEventTypeCount] = {
     {"step_begin", 2, {V, V}, {"subject", "subject2"}, false, false, false, false, false},
     {"phase_begin", 0, {}, {}, false, false, false, false, false},
     {"phase_end", 0, {}, {}, false, false, false, false, false},
-    {"locate", 3, {V, K::count, K::slot}, {"vertex", "visited", "face"}, false, false, false, false, false},
+    {"locate", 3, {V, K::count, K::slot}, {"vertex", "visited", "face"}, false, false, true, false, false},
     {"vertex", 2, {V, K::input}, {"vertex", "input"}, true, false, false, false, false},
     {"duplicate", 3, {V, V, K::input}, {"vertex", "same_as", "input"}, true, false, false, false, false},
     {"init", 3, {V, V, V}, {"a", "b", "c"}, false, false, false, false, true},
@@ -151,6 +177,7 @@ inline const EventSchema& schema(EventType type) { return detail::kSchemas[stati
 const char* name(EventType type);
 const char* name(StepKind kind);
 const char* name(Phase phase);
+const char* name(Criterion criterion);
 // The name of an event's code for its type (a step kind, a phase, a reason...), or its number.
 std::string code_name(EventType type, std::uint8_t code);
 

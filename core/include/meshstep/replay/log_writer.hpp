@@ -38,6 +38,10 @@ struct LogWriterOptions {
   int zstd_level = -20;
   std::size_t block_bytes = 256 * 1024;  // encoded events per block, before compression
   KeyframePolicy keyframes;
+  // The file format version to write; 0: the current one. 2 writes what meshstep wrote
+  // before version 3 (locate events without their walk), for tests that such logs still
+  // read. Any other: std::invalid_argument.
+  std::uint32_t format_version = 0;
 };
 
 struct LogStats {

@@ -9,6 +9,8 @@
 // Both expose the same members; the concept RecordingPolicy names them.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -43,6 +45,41 @@ std::vector<FaceRecord> face_records(const Mesh& m) {
   return out;
 }
 
+// The faces a point location walked through, for its locate event: the walk notes each face
+// it enters with the vertices it read there anyway, put in the order the data structure
+// lists them, into a ring of the last kMaxFaces (a few stores per face however long the
+// walk). The triangulation keeps one only when recording (NoWalkTrace otherwise).
+class WalkTrace {
+ public:
+  // A longer walk (a bad hint, a pathological input) keeps its last 512 faces: where it
+  // arrived is what a picture shows, and a log must not grow with the walk.
+  static constexpr std::uint32_t kMaxFaces = 512;
+
+  void start() { visited_ = 0; }
+  // The walk entered the face of half-edge h, whose vertices from h on are a, b, c; corner:
+  // where h stands in its face (TriangleMesh::corner).
+  void enter(std::uint32_t corner, VertexId a, VertexId b, VertexId c) {
+    VertexId* v = &ring_[3 * (visited_++ % kMaxFaces)];
+    v[corner] = a;
+    v[corner == 2 ? 0 : corner + 1] = b;
+    v[corner == 0 ? 2 : corner - 1] = c;
+  }
+  std::uint32_t visited() const { return visited_; }
+  std::uint32_t kept() const { return std::min(visited_, kMaxFaces); }
+  // The vertices of the faces kept, three each, in the order the walk entered them: the
+  // first span, then the second (empty unless the ring wrapped).
+  std::array<std::span<const VertexId>, 2> kept_faces() const {
+    const std::size_t oldest = visited_ > kMaxFaces ? 3 * (visited_ % kMaxFaces) : 0;
+    const std::span<const VertexId> ring(ring_.data(), 3 * kept());
+    return {ring.subspan(oldest), ring.first(oldest)};
+  }
+
+ private:
+  std::array<VertexId, 3 * kMaxFaces> ring_;
+  std::uint32_t visited_ = 0;
+};
+struct NoWalkTrace {};
+
 struct NullRecorder {
   static constexpr bool enabled = false;
 
@@ -73,7 +110,8 @@ struct NullRecorder {
   void phase_end(Phase) {}
   void vertex(VertexId, const Point&) {}
   void duplicate(VertexId, VertexId, const Point&) {}
-  void locate(VertexId, std::uint32_t, FaceId, LocateResult) {}
+  void locate(VertexId, const WalkTrace&, FaceId, LocateResult) {}
+  void criterion_test(Criterion, bool, VertexId, VertexId, VertexId, double) {}
   void point_selected(std::uint8_t, VertexId, VertexId, VertexId, const Point&, std::span<const Point>) {}
   void encroached(VertexId, VertexId, VertexId, const Point&) {}
   void lepp_path(VertexId, VertexId, std::uint32_t, std::span<const VertexId>) {}
@@ -244,8 +282,26 @@ class Recorder {
   void duplicate(VertexId v, VertexId same_as, const Point& p) {
     event_with_point(EventType::duplicate, p, v, same_as, input_index(v));
   }
-  void locate(VertexId v, std::uint32_t visited, FaceId found, LocateResult result) {
-    event(EventType::locate, static_cast<std::uint8_t>(result), v, visited, found);
+  // Vertex v was located in slot `found` by `walk`. Its list: the faces the walk kept, three
+  // vertex ids each as the data structure lists them, the last one the record of `found`.
+  void locate(VertexId v, const WalkTrace& walk, FaceId found, LocateResult result) {
+    std::uint32_t* w = sink_->extend(5 + 3 * walk.kept());
+    *w++ = static_cast<std::uint32_t>(EventType::locate) | std::uint32_t{static_cast<std::uint8_t>(result)} << 8;
+    *w++ = v;
+    *w++ = walk.visited();
+    *w++ = found;
+    *w++ = 3 * walk.kept();
+    for (const std::span<const VertexId> run : walk.kept_faces()) w = std::copy(run.begin(), run.end(), w);
+    end_event();
+  }
+  // Refinement: the triangle (a, b, c) met the criterion's bound or not, by the measure
+  // `value` (in the triangulation's scaled coordinates: stored unscaled, like points).
+  void criterion_test(Criterion criterion, bool passed, VertexId a, VertexId b, VertexId c, double value) {
+    const auto code = static_cast<std::uint8_t>(static_cast<std::uint8_t>(criterion) | (passed ? kCriterionPassed : 0));
+    begin(EventType::criterion_test, code);
+    ids(a, b, c);
+    sink_->put(std::ldexp(value, -length_power(criterion) * exponent_));
+    end_event();
   }
   // Refinement: the point chosen for the bad triangle (a, b, c) by a strategy, with the
   // other candidates it weighed (a circumcenter beside an off-center, say).
