@@ -35,4 +35,11 @@ const Shape* Scene::find(std::string_view role) const {
   return nullptr;
 }
 
+std::vector<const Shape*> Scene::find_all(std::string_view role) const {
+  std::vector<const Shape*> out;
+  for (const Shape& s : shapes)
+    if (s.role == role) out.push_back(&s);
+  return out;
+}
+
 }  // namespace meshstep::scene

@@ -38,6 +38,10 @@ class FaceAges {
   void update(const replay::Replay& cursor);
   // Step index of the face in slot s at the last update (0 for slots never written).
   std::uint64_t age(std::size_t slot) const { return slot < age_.size() ? age_[slot] : 0; }
+  // Was the last update to this cursor's log and position?
+  bool current(const replay::Replay& cursor) const {
+    return log_ == &cursor.log() && position_ == cursor.position();
+  }
 
  private:
   std::vector<std::uint64_t> age_;
@@ -53,7 +57,14 @@ Scene build_scene(const TriMesh& mesh, const SceneOptions& options);
 Scene build_scene(const Pslg& input, const SceneOptions& options);
 
 // The moment of a run at the cursor. `ages` (updated to the cursor) is needed for
-// ColorBy::age; without it age colours are those of a mesh alone.
+// ColorBy::age; without it age colours are those of a mesh alone. Throws std::logic_error
+// for ages not updated to the cursor.
+//
+// mesh.triangles lists the live faces that are not ghost faces in slot order, as
+// Replay::mesh() does (Scene::highlighted indexes both); mesh.points is indexed by the log's
+// vertex ids (the numbering of the caption and of `meshstep log dump`), every vertex of the
+// run, those not in the mesh at this moment referenced by no triangle. With ColorBy::age the
+// values are the step that made each triangle counted from 1, as the caption counts steps.
 Scene build_scene(const replay::Replay& cursor, const SceneOptions& options, const FaceAges* ages = nullptr);
 
 }  // namespace meshstep::scene

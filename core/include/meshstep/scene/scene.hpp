@@ -81,6 +81,7 @@ struct Legend {
   struct Tick {
     double at = 0.0;                 // 0..1 along the bar (categorical: the swatch's centre)
     std::string text;
+    bool emphasized = false;         // drawn stronger: the bound on the quality scale
   };
   std::vector<Tick> ticks;
 };
@@ -135,7 +136,10 @@ struct Label {
 struct Scene {
   Theme theme = Theme::light;
   Rgba background;
-  BBox bounds;  // of the mesh and every shape: what a camera fits
+  // Of the mesh and every shape: what a camera fits. Circles count only as far as the box of
+  // everything else grown by a tenth of its larger side on each side, so that the circle of
+  // a nearly flat triangle (radius a thousand times the mesh) cannot shrink the mesh to a dot.
+  BBox bounds;
   MeshLayer mesh;
   std::vector<Shape> shapes;  // drawn in order within their layer, layers in Layer order
   std::vector<Label> labels;
@@ -147,8 +151,11 @@ struct Scene {
   // Indices in mesh.triangles of the faces the current step made or changed.
   std::vector<std::uint32_t> highlighted;
 
-  // The first shape with this role, or nullptr.
+  // The first shape with this role, or nullptr. A role may have several shapes: its
+  // translucent faces first, then their outline; faded earlier flips, then the latest.
   const Shape* find(std::string_view role) const;
+  // Every shape with this role, in drawing order.
+  std::vector<const Shape*> find_all(std::string_view role) const;
 };
 
 }  // namespace meshstep::scene

@@ -1,0 +1,66 @@
+#include "meshstep/scene/layout.hpp"
+
+#include <algorithm>
+
+namespace meshstep::scene {
+namespace {
+
+constexpr double kCaptionBand = 30.0;     // px: a 16 px line with room above and below
+constexpr double kCaptionFont = 16.0;
+constexpr double kLegendFont = 13.0;
+constexpr double kLegendWidth = 150.0;    // px kept free on the right for the legend
+constexpr double kEdge = 12.0;            // px between the legend and the picture's border
+
+LegendLayout legend_layout(const Legend& legend, int width, int height, double top) {
+  LegendLayout out;
+  const double avail = height - top - 2 * kEdge;
+  const double bar_h = std::clamp(0.45 * height, 80.0, std::max(80.0, avail - 40.0));
+  const double bar_x = width - kLegendWidth + kEdge;
+  const double bar_y = top + kEdge + 28.0 + std::max(0.0, 0.5 * (avail - 28.0 - bar_h) * 0.25);
+  out.panel = {width - kLegendWidth + 2.0, bar_y - 30.0, kLegendWidth - 2.0 - 4.0, bar_h + 40.0};
+  out.title = {{static_cast<double>(width) - kEdge, bar_y - 12.0}, kLegendFont, true};
+  if (legend.categorical) {
+    const std::size_t n = std::max<std::size_t>(1, legend.colors.size());
+    const double box = std::min(22.0, bar_h / static_cast<double>(n));
+    for (std::size_t i = 0; i < legend.colors.size(); ++i)
+      out.swatches.push_back({bar_x, bar_y + i * box, 16.0, box - 3.0});
+    for (const Legend::Tick& t : legend.ticks) {
+      // A categorical tick's `at` is the swatch's centre along the column, 0 at the top.
+      const double y = bar_y + t.at * n * box;
+      out.ticks.push_back({{bar_x + 16.0 + 8.0, y + 0.35 * kLegendFont}, kLegendFont, false});
+      out.tick_y.push_back(y);
+    }
+    out.bar = {bar_x, bar_y, 16.0, n * box};
+    return out;
+  }
+  out.bar = {bar_x, bar_y, 16.0, bar_h};
+  for (const Legend::Tick& t : legend.ticks) {
+    const double y = bar_y + (1.0 - t.at) * bar_h;  // the scale runs upward
+    out.tick_y.push_back(y);
+    out.ticks.push_back({{bar_x + 16.0 + out.tick_length + 4.0, y + 0.35 * kLegendFont}, kLegendFont, false});
+  }
+  return out;
+}
+
+}  // namespace
+
+Layout layout(const Scene& scene, int width, int height) {
+  Layout out;
+  if (scene.visible.has(Layer::caption) && !scene.caption.empty()) {
+    out.caption_band = Rect{0.0, 0.0, static_cast<double>(width), kCaptionBand};
+    out.caption = {{10.0, 0.5 * kCaptionBand + 0.35 * kCaptionFont}, kCaptionFont, false};
+    out.margins.top = kCaptionBand + 16.0;
+  }
+  if (scene.visible.has(Layer::legend) && scene.legend)
+    if (width > 3 * kLegendWidth) {  // a small picture has no room for a legend
+      out.legend = legend_layout(*scene.legend, width, height, out.caption_band ? kCaptionBand : 0.0);
+      out.margins.right = kLegendWidth + 8.0;
+    }
+  return out;
+}
+
+Camera fit_scene(const Scene& scene, int width, int height) {
+  return Camera::fit(scene.bounds, width, height, layout(scene, width, height).margins);
+}
+
+}  // namespace meshstep::scene
