@@ -1,0 +1,19 @@
+// The words of a picture in pixels, into a UiBatch: the caption on its translucent band, the
+// labels at their world points, the legend (a colour bar with ticks and a title, or
+// swatches) on its panel. The caption and the legend are placed by scene::layout, which the
+// SVG writer uses too, so that both pictures agree.
+#pragma once
+
+#include "font_atlas.hpp"
+#include "meshstep/scene/camera.hpp"
+#include "meshstep/scene/layout.hpp"
+#include "meshstep/scene/scene.hpp"
+#include "ui_batch.hpp"
+
+namespace meshstep::render {
+
+void add_caption(const scene::Scene& scene, const scene::Layout& layout, FontCache& fonts, UiBatch& batch);
+void add_legend(const scene::Scene& scene, const scene::Layout& layout, FontCache& fonts, UiBatch& batch);
+void add_labels(const scene::Scene& scene, const scene::Camera& camera, FontCache& fonts, UiBatch& batch);
+
+}  // namespace meshstep::render

@@ -1,0 +1,79 @@
+// The OpenGL renderer of a scene (meshstep/scene/scene.hpp): draws it for a camera into its
+// own framebuffer, from which the picture is read back or copied to a window.
+//
+//   auto context = make_offscreen_context();        // gl_context.hpp
+//   Renderer renderer;                               // with the context current
+//   renderer.render(scene, camera, default_samples(scene.mesh.triangles.size()));
+//   scene::Image image = renderer.read_pixels();
+//
+// The layers draw in their order (scene.hpp), those switched off in scene.visible not at all.
+// Everything is antialiased (thick lines, circles, markers and mesh edges by their distance
+// fields, without glLineWidth); with samples > 1 the framebuffer is multisampled as well.
+//
+// Uploads follow changes: the mesh's buffers are filled again only when its points,
+// triangles or colours change (a fingerprint of their contents tells), the shapes' only when
+// the shapes change, and both when the camera moves so far that the float coordinates must
+// be re-centred (world_frame.hpp). A camera change alone only changes uniforms.
+//
+// Shapes of the fill layer are drawn after the mesh's edges (fill and edges are one pass).
+//
+// A GL context must be current for every call, the destructor's included; it must be the
+// same context for the life of the renderer.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+
+#include "meshstep/scene/camera.hpp"
+#include "meshstep/scene/image.hpp"
+#include "meshstep/scene/scene.hpp"
+
+namespace meshstep::render {
+
+// Samples per pixel that keep a frame fast: 4 (multisampling) below 200,000 triangles, 1
+// above (on llvmpipe 4x multisampling doubles the time of a million triangles).
+int default_samples(std::size_t triangle_count);
+
+class Renderer {
+ public:
+  // Compiles the shaders; throws std::runtime_error if they do not compile, std::logic_error
+  // when no GL context was ever made current.
+  Renderer();
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Draws the scene as the camera sees it, at the camera's size, with `samples` samples per
+  // pixel (1: none; clamped to what GL allows). Throws std::invalid_argument for a size GL
+  // cannot have, std::runtime_error for a GL error.
+  void render(const scene::Scene& scene, const scene::Camera& camera, int samples = 1);
+
+  // The last picture drawn, rows top to bottom.
+  scene::Image read_pixels() const;
+  // The same into an image whose memory is reused from frame to frame.
+  void read_pixels(scene::Image& image) const;
+  // Copies the last picture into framebuffer 0 (the current window's back buffer), scaled
+  // to width x height pixels.
+  void blit_to_default_framebuffer(int width, int height) const;
+
+  // Forgets what was uploaded: the next render uploads everything again.
+  void invalidate();
+
+  // What the renderer did so far, for tests and benchmarks.
+  struct Counters {
+    std::size_t frames = 0;
+    std::size_t mesh_uploads = 0;     // mesh buffers filled
+    std::size_t overlay_uploads = 0;  // shape buffers filled
+  };
+  const Counters& counters() const;
+  // The last picture's size and samples per pixel.
+  int width() const;
+  int height() const;
+  int samples() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace meshstep::render
