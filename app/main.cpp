@@ -21,14 +21,16 @@ int main(int argc, char** argv) {
   using namespace meshstep::app;
   CLI::App app{"meshstep " MESHSTEP_VERSION
                ": 2D Delaunay and constrained Delaunay triangulation, Delaunay\n"
-               "refinement algorithms, mesh checking, and replay logs to step through them.",
+               "refinement algorithms, mesh checking, replay logs to step through them, and\n"
+               "pictures and animations of any moment of a run.",
                "meshstep"};
   app.footer(kFooter);
   app.set_version_flag("--version", "meshstep " MESHSTEP_VERSION);
   app.require_subcommand(0, 1);
   std::vector<Command> commands = {add_triangulate_command(app), add_refine_command(app),
                                   add_check_command(app), add_list_command(app),
-                                  add_log_command(app)};
+                                  add_log_command(app), add_render_command(app),
+                                  add_export_command(app)};
 
   try {
     app.parse(argc, argv);

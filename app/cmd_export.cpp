@@ -1,0 +1,174 @@
+// meshstep export: a run's animation, as numbered PNG frames or as a video through ffmpeg.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "command.hpp"
+#include "console.hpp"
+#include "draw_options.hpp"
+#include "frame_moments.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/scene/layout.hpp"
+#include "moment_scene.hpp"
+#include "painter.hpp"
+#include "png_frame_writer.hpp"
+#include "scene_source.hpp"
+#include "video_pipe.hpp"
+
+namespace meshstep::app {
+namespace {
+
+struct ExportArgs {
+  std::string log;
+  std::string frames;
+  std::string video;
+  std::string every = "step";
+  std::int64_t from = 0;
+  std::int64_t to = -1;
+  double fps = 10.0;
+  double duration = 0.0;
+  DrawArgs draw;
+  bool quiet = false;
+};
+
+// Progress on a terminal, about twice a second; nothing when standard error is a file.
+class Progress {
+ public:
+  Progress(bool show, std::size_t total) : show_(show && ::isatty(2)), total_(total) {}
+  void frame(std::size_t done) {
+    if (!show_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (done < total_ && now - last_ < std::chrono::milliseconds(500)) return;
+    last_ = now;
+    const double seconds = std::chrono::duration<double>(now - start_).count();
+    std::fprintf(stderr, "\rmeshstep: export: frame %zu of %zu (%.0f frames/s)   ", done, total_,
+                 seconds > 0 ? done / seconds : 0.0);
+    if (done == total_) std::fputc('\n', stderr);
+    std::fflush(stderr);
+  }
+
+ private:
+  bool show_;
+  std::size_t total_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_{};
+};
+
+void check_args(const ExportArgs& args) {
+  if (args.frames.empty() == args.video.empty())
+    throw UsageError("give --frames DIR or --video OUT.mp4|OUT.webm|OUT.gif (one of them)");
+  if (!(args.fps > 0.0) || args.fps > 240.0) throw UsageError("--fps: expected a rate above 0 and at most 240");
+  if (args.duration < 0.0 || !std::isfinite(args.duration) || args.duration > 3600.0)
+    throw UsageError("--duration: expected seconds from 0 (one frame per moment) to 3600");
+  if (args.duration > 0.0 && args.video.empty()) throw UsageError("--duration applies to --video only");
+}
+
+int run_export(const ExportArgs& args) {
+  const Verbosity verbosity = args.quiet ? Verbosity::quiet : Verbosity::normal;
+  try {
+    check_args(args);
+    const DrawSettings draw = parse_draw_args(args.draw);
+    const MomentSpec spec = parse_every(args.every, args.from, args.to);
+    if (!std::filesystem::is_regular_file(args.log) || !is_replay_log(args.log)) {
+      if (!std::filesystem::exists(args.log)) throw InputError(args.log, 0, "no such file");
+      throw InputError(args.log, 0, "not a replay log (write one with triangulate or refine --record LOG)");
+    }
+    const replay::LogReader log(args.log);
+    if (!log.complete()) print_warning(verbosity, args.log + ": " + log.incomplete_reason());
+    std::vector<std::uint64_t> moments = frame_moments(log, spec);
+    if (args.duration > 0.0)
+      moments = resample(moments, std::max<std::size_t>(1, std::llround(args.duration * args.fps)));
+
+    // One camera for every frame: the animation holds still while the mesh grows.
+    LogScenes scenes(log, draw.scene);
+    scene::Scene first = scenes.at(moments.front());
+    first.bounds = run_bounds(log);
+    const scene::Camera camera =
+        draw.view ? draw.camera(first.bounds) : scene::fit_scene(first, draw.width, draw.height);
+
+    Painter painter(draw.gl);
+    std::optional<PngFrameWriter> frames;
+    std::optional<VideoPipe> video;
+    if (!args.frames.empty()) {
+      std::error_code ec;
+      std::filesystem::create_directories(args.frames, ec);
+      if (ec || !std::filesystem::is_directory(args.frames))
+        throw InputError(args.frames, 0, "cannot make the frames folder (" + ec.message() + ")");
+      frames.emplace(args.frames);
+    } else {
+      video.emplace(args.video, draw.width, draw.height, args.fps);
+    }
+    Progress progress(verbosity != Verbosity::quiet, moments.size());
+    const int samples = draw.samples;
+    std::uint64_t last_position = UINT64_MAX;
+    scene::Image image;
+    for (std::size_t i = 0; i < moments.size(); ++i) {
+      // A repeated moment (a video stretched to its duration) reuses the picture.
+      if (moments[i] != last_position) {
+        image = painter.paint(i == 0 ? first : scenes.at(moments[i]), camera, samples);
+        last_position = moments[i];
+      }
+      if (frames) frames->add(i, image);
+      else video->add(image);
+      progress.frame(i + 1);
+    }
+    if (frames) frames->finish();
+    else video->finish();
+    if (verbosity != Verbosity::quiet) {
+      const std::string where = frames ? args.frames + "/frame_000000.png .. " + PngFrameWriter::frame_name(moments.size() - 1)
+                                       : args.video;
+      std::printf("%s: %zu frames of %dx%d (%s) from %s, %llu steps\n", where.c_str(), moments.size(), draw.width,
+                  draw.height, painter.description().c_str(), args.log.c_str(),
+                  static_cast<unsigned long long>(log.step_count()));
+    }
+    return kExitOk;
+  } catch (const UsageError& e) {
+    print_error(e.what());
+    return kExitUsage;
+  } catch (const InputError& e) {
+    print_error(e.what());
+    return kExitBadInput;
+  } catch (const GlUnavailable& e) {
+    print_error(e.what());
+    return kExitBadInput;
+  }
+}
+
+}  // namespace
+
+Command add_export_command(CLI::App& parent) {
+  auto args = std::make_shared<ExportArgs>();
+  CLI::App* cmd = parent.add_subcommand(
+      "export",
+      "Export a recorded run's animation: numbered PNG frames (--frames DIR: frame_000000.png,\n"
+      "...) or a video through ffmpeg (--video OUT.mp4|OUT.webm|OUT.gif). Each frame is the mesh\n"
+      "at one moment with the overlays that explain the step just taken, drawn off screen.");
+  cmd->add_option("LOG", args->log, "Replay log (written with --record)")->required();
+  cmd->add_option("--frames", args->frames, "Folder for the PNG frames (made if missing)");
+  cmd->add_option("--video", args->video, "Video file: .mp4 (H.264), .webm (VP9) or .gif (needs ffmpeg)");
+  cmd->add_option("--every", args->every,
+                  "One frame per event, per step, per phase, or every N steps")
+      ->default_str("step");
+  cmd->add_option("--from", args->from, "First step (event with --every event, phase with --every phase)");
+  cmd->add_option("--to", args->to, "Last step, included (-1: the last)");
+  cmd->add_option("--fps", args->fps, "Video frames per second (a frame's time is its index over this)")
+      ->default_str("10");
+  cmd->add_option("--duration", args->duration,
+                  "Video length in seconds: the moments are spread over fps x duration frames");
+  add_draw_options(cmd, args->draw);
+  cmd->add_flag("-q,--quiet", args->quiet, "Print only errors");
+  cmd->footer(
+      "Examples:\n"
+      "  meshstep refine assets/examples/lesson.poly --algorithm offcenter --min-angle 30 --record l.mslog\n"
+      "  meshstep export l.mslog --frames frames/ --every event --to 400\n"
+      "  meshstep export l.mslog --video lesson.mp4 --fps 4\n"
+      "  meshstep export l.mslog --video lesson.gif --duration 10 --size 640x360 --color-by quality");
+  return {cmd, [args] { return run_export(*args); }};
+}
+
+}  // namespace meshstep::app

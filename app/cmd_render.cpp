@@ -1,0 +1,150 @@
+// meshstep render: one picture (PNG or SVG) of a moment of a run, a mesh or an input.
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "command.hpp"
+#include "console.hpp"
+#include "draw_options.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/io/atomic_file.hpp"
+#include "meshstep/scene/layout.hpp"
+#include "meshstep/scene/svg.hpp"
+#include "moment_scene.hpp"
+#include "output_prefix.hpp"
+#include "painter.hpp"
+#include "scene_source.hpp"
+
+namespace meshstep::app {
+namespace {
+
+struct RenderArgs {
+  std::string input;
+  std::string output;
+  std::int64_t step = -2;   // -2: not given
+  std::int64_t event = -2;
+  DrawArgs draw;
+  bool quiet = false;
+};
+
+enum class Format { png, svg };
+
+Format format_of(const std::string& path) {
+  if (path.ends_with(".png")) return Format::png;
+  if (path.ends_with(".svg")) return Format::svg;
+  throw UsageError("-o " + path + ": the picture's name must end in .png or .svg");
+}
+
+std::string default_output(const SceneSource& source) {
+  return (source.kind == SourceKind::mesh ? source.path : strip_extension(source.path)) + ".png";
+}
+
+// The replay position the options ask for, checked against the run.
+std::uint64_t position_of(const RenderArgs& args, const replay::LogReader& log) {
+  if (args.step != -2 && args.event != -2) throw UsageError("give --step or --event, not both");
+  if (args.event != -2) {
+    if (args.event < -1 || (args.event >= 0 && static_cast<std::uint64_t>(args.event) > log.event_count()))
+      throw UsageError(log.path() + ": --event " + std::to_string(args.event) + " is out of range: the run has " +
+                       std::to_string(log.event_count()) + " events (use 0.." + std::to_string(log.event_count()) +
+                       ", or -1 for the end)");
+    return args.event < 0 ? log.event_count() : static_cast<std::uint64_t>(args.event);
+  }
+  if (args.step != -2) {
+    if (args.step < -1 || (args.step >= 0 && static_cast<std::uint64_t>(args.step) > log.step_count()))
+      throw UsageError(log.path() + ": --step " + std::to_string(args.step) + " is out of range: the run has " +
+                       std::to_string(log.step_count()) + " steps (use 0.." + std::to_string(log.step_count()) +
+                       ", or -1 for the end)");
+    return args.step < 0 ? log.event_count() : log.step_start(static_cast<std::uint64_t>(args.step));
+  }
+  return log.event_count();
+}
+
+int run_render(const RenderArgs& args) {
+  const Verbosity verbosity = args.quiet ? Verbosity::quiet : Verbosity::normal;
+  DrawSettings draw;
+  try {
+    draw = parse_draw_args(args.draw);
+    if (!args.output.empty()) format_of(args.output);
+  } catch (const UsageError& e) {
+    print_error(e.what());
+    return kExitUsage;
+  }
+  try {
+    std::vector<std::string> warnings;
+    SceneSource source = open_scene_source(args.input, &warnings);
+    for (const std::string& w : warnings) print_warning(verbosity, w);
+    if (source.kind != SourceKind::log && (args.step != -2 || args.event != -2))
+      throw UsageError("--step and --event need a replay log; " + args.input + " is " +
+                       (source.kind == SourceKind::mesh ? "a mesh" : "an input"));
+    const std::string output = args.output.empty() ? default_output(source) : args.output;
+    const Format format = format_of(output);
+
+    scene::Scene picture;
+    std::string moment;
+    if (source.kind == SourceKind::log) {
+      const std::uint64_t position = position_of(args, *source.log);
+      LogScenes scenes(*source.log, draw.scene);
+      picture = scenes.at(position);
+      moment = " at step " + std::to_string(scenes.cursor().completed_steps()) + " of " +
+               std::to_string(source.log->step_count()) + " (event " + std::to_string(position) + ")";
+    } else if (source.kind == SourceKind::mesh) {
+      picture = scene::build_scene(*source.mesh, draw.scene);
+    } else {
+      picture = scene::build_scene(*source.input, draw.scene);
+    }
+    const scene::Camera camera =
+        draw.view ? draw.camera(picture.bounds) : scene::fit_scene(picture, draw.width, draw.height);
+
+    std::string how;
+    if (format == Format::svg) {
+      io::write_file_atomically(output, scene::to_svg(picture, camera));
+      how = "SVG";
+    } else {
+      Painter painter(draw.gl);
+      scene::write_png(output, painter.paint(picture, camera, draw.samples));
+      how = "PNG, " + painter.description();
+    }
+    if (verbosity != Verbosity::quiet)
+      std::printf("%s: %dx%d picture of %s%s (%zu triangles; %s)\n", output.c_str(), draw.width, draw.height,
+                  args.input.c_str(), moment.c_str(), picture.mesh.triangles.size(), how.c_str());
+    return kExitOk;
+  } catch (const UsageError& e) {
+    print_error(e.what());
+    return kExitUsage;
+  } catch (const InputError& e) {
+    print_error(e.what());
+    return kExitBadInput;
+  } catch (const GlUnavailable& e) {
+    print_error(std::string(e.what()) + " (an .svg picture needs no OpenGL)");
+    return kExitBadInput;
+  }
+}
+
+}  // namespace
+
+Command add_render_command(CLI::App& parent) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* cmd = parent.add_subcommand(
+      "render",
+      "Draw one picture, PNG (off screen, through OpenGL) or SVG (no OpenGL needed), of:\n"
+      "  a replay log (--record): the mesh at any moment of the run, with overlays that explain\n"
+      "    the step just taken (default: the end of the run);\n"
+      "  a mesh PREFIX (PREFIX.node + PREFIX.ele);\n"
+      "  an input .poly or .node, before triangulation.");
+  cmd->add_option("INPUT", args->input, "Replay log, mesh prefix, or .poly/.node input")->required();
+  cmd->add_option("-o,--output", args->output,
+                  "OUT.png or OUT.svg (default: INPUT without its extension, plus .png)");
+  cmd->add_option("--step", args->step, "The moment after K steps (0: before the first; -1: the end)");
+  cmd->add_option("--event", args->event, "The moment after N events (-1: the end)");
+  add_draw_options(cmd, args->draw);
+  cmd->add_flag("-q,--quiet", args->quiet, "Print only errors");
+  cmd->footer(
+      "Examples:\n"
+      "  meshstep refine assets/examples/lesson.poly --algorithm offcenter --min-angle 30 --record l.mslog\n"
+      "  meshstep render l.mslog --step 40 -o step40.png\n"
+      "  meshstep render l.mslog --color-by quality --theme dark -o end.png\n"
+      "  meshstep render l.mslog --step 40 --layers -caption,-legend -o figure.svg");
+  return {cmd, [args] { return run_render(*args); }};
+}
+
+}  // namespace meshstep::app

@@ -1,0 +1,71 @@
+#include "frame_moments.hpp"
+
+#include <charconv>
+
+#include "draw_options.hpp"
+
+namespace meshstep::app {
+
+MomentSpec parse_every(const std::string& every, std::int64_t from, std::int64_t to) {
+  MomentSpec spec;
+  spec.from = from;
+  spec.to = to;
+  if (every == "event") spec.unit = MomentSpec::Unit::event;
+  else if (every == "step") spec.unit = MomentSpec::Unit::step;
+  else if (every == "phase") spec.unit = MomentSpec::Unit::phase;
+  else {
+    std::uint64_t n = 0;
+    const auto [ptr, ec] = std::from_chars(every.data(), every.data() + every.size(), n);
+    if (ec != std::errc() || ptr != every.data() + every.size() || n == 0)
+      throw UsageError("--every " + every + ": expected event, step, phase or a number of steps N >= 1");
+    spec.unit = MomentSpec::Unit::step;
+    spec.stride = n;
+  }
+  if (from < 0) throw UsageError("--from " + std::to_string(from) + ": expected a number >= 0");
+  if (to < -1) throw UsageError("--to " + std::to_string(to) + ": expected a number >= 0 (or -1: the end)");
+  return spec;
+}
+
+std::vector<std::uint64_t> frame_moments(const replay::LogReader& log, const MomentSpec& spec) {
+  using Unit = MomentSpec::Unit;
+  // Positions at which each unit is complete.
+  std::vector<std::uint64_t> ends;
+  const char* unit_name = "step";
+  if (spec.unit == Unit::event) {
+    unit_name = "event";
+    ends.resize(log.event_count());
+    for (std::uint64_t e = 0; e < ends.size(); ++e) ends[e] = e + 1;
+  } else if (spec.unit == Unit::step) {
+    for (std::uint64_t k = 0; k < log.step_count(); ++k) ends.push_back(log.step_start(k + 1));
+  } else {
+    unit_name = "phase";
+    for (std::uint64_t e = 0; e < log.event_count(); ++e)
+      if (log.event(e).type == replay::EventType::phase_end) ends.push_back(e + 1);
+  }
+  if (ends.empty()) throw UsageError(log.path() + ": the run has no " + std::string(unit_name) + " to draw");
+  const std::uint64_t last = ends.size() - 1;
+  const std::uint64_t from = static_cast<std::uint64_t>(spec.from);
+  const std::uint64_t to = spec.to < 0 ? last : static_cast<std::uint64_t>(spec.to);
+  if (from > last || to > last || from > to)
+    throw UsageError(log.path() + ": --from " + std::to_string(spec.from) + " --to " + std::to_string(spec.to) +
+                     " is outside the run: its " + unit_name + "s are numbered 0.." + std::to_string(last));
+  std::vector<std::uint64_t> moments;
+  for (std::uint64_t u = from; u <= to; u += spec.stride) moments.push_back(ends[u]);
+  // A stride that skips the last unit still ends on it: the animation shows the result.
+  if (moments.back() != ends[to]) moments.push_back(ends[to]);
+  return moments;
+}
+
+std::vector<std::uint64_t> resample(const std::vector<std::uint64_t>& moments, std::size_t count) {
+  std::vector<std::uint64_t> out;
+  if (moments.empty()) return out;
+  out.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    // Frame i shows moment floor(i * M / count); the last frame the last moment.
+    const std::size_t m = count == 1 ? moments.size() - 1 : i * (moments.size() - 1) / (count - 1);
+    out.push_back(moments[m]);
+  }
+  return out;
+}
+
+}  // namespace meshstep::app

@@ -1,0 +1,48 @@
+#include "scene_source.hpp"
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "meshstep/error.hpp"
+#include "meshstep/io/triangle_io.hpp"
+#include "output_prefix.hpp"
+
+namespace meshstep::app {
+
+bool is_replay_log(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[8] = {};
+  return in.read(magic, sizeof magic) && std::memcmp(magic, "MSTEPLOG", sizeof magic) == 0;
+}
+
+SceneSource open_scene_source(const std::string& path, std::vector<std::string>* warnings) {
+  namespace fs = std::filesystem;
+  SceneSource source;
+  source.path = path;
+  if (fs::is_regular_file(path) && is_replay_log(path)) {
+    source.kind = SourceKind::log;
+    source.log = std::make_unique<replay::LogReader>(path);
+    if (!source.log->complete() && warnings) warnings->push_back(path + ": " + source.log->incomplete_reason());
+    return source;
+  }
+  if (path.ends_with(".poly") || path.ends_with(".node")) {
+    source.kind = SourceKind::input;
+    source.input = io::read_pslg(path, warnings);
+    return source;
+  }
+  std::string prefix = path;
+  if (prefix.ends_with(".ele")) prefix = strip_extension(prefix);
+  if (fs::exists(prefix + ".node") && fs::exists(prefix + ".ele")) {
+    source.kind = SourceKind::mesh;
+    source.path = prefix;
+    source.mesh = io::read_mesh(prefix, warnings);
+    return source;
+  }
+  if (!fs::exists(path))
+    throw InputError(path, 0, "no such file, and no mesh " + prefix + ".node + " + prefix + ".ele");
+  throw InputError(path, 0,
+                   "not a replay log, a .poly/.node input or a mesh prefix (PREFIX.node + PREFIX.ele)");
+}
+
+}  // namespace meshstep::app

@@ -1,0 +1,64 @@
+#include "golden_runs.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+namespace meshstep::golden {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path& run_folder() {
+  static const fs::path dir = [] {
+    fs::path d = fs::temp_directory_path() / ("meshstep_golden_" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+// Removes the folder when the test process ends.
+struct FolderCleanup {
+  ~FolderCleanup() {
+    std::error_code ec;
+    fs::remove_all(run_folder(), ec);
+  }
+};
+
+}  // namespace
+
+std::string asset(const std::string& name) { return std::string(MESHSTEP_ASSETS) + "/examples/" + name; }
+
+const replay::LogReader* lesson_run(const std::string& arguments) {
+  static std::map<std::string, std::unique_ptr<replay::LogReader>> runs;
+  static FolderCleanup cleanup;
+  if (auto found = runs.find(arguments); found != runs.end()) return found->second.get();
+  const std::string log = (run_folder() / ("run" + std::to_string(runs.size()) + ".mslog")).string();
+  const std::string command = std::string(MESHSTEP_BINARY) + " refine " + asset("lesson.poly") + " " + arguments +
+                              " --record " + log + " --no-output -q";
+  const int status = std::system(command.c_str());
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    ADD_FAILURE() << "recording failed: " << command;
+    return nullptr;
+  }
+  return runs.emplace(arguments, std::make_unique<replay::LogReader>(log)).first->second.get();
+}
+
+std::optional<std::uint64_t> after_first_step_with(const replay::LogReader& log,
+                                                   const std::function<bool(const replay::Event&)>& wanted) {
+  for (std::uint64_t e = 0; e < log.event_count(); ++e) {
+    if (!wanted(log.event(e))) continue;
+    const std::uint64_t step = log.step_of_event(e);
+    if (step >= log.step_count()) return e + 1;  // in the preamble: the moment after it
+    return log.step_start(step + 1);
+  }
+  return std::nullopt;
+}
+
+}  // namespace meshstep::golden
