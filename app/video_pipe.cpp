@@ -38,7 +38,7 @@ std::vector<std::string> encoder_arguments(const std::string& ext, double fps) {
   // yuv420p needs even sizes: pad by a pixel where the picture is odd.
   const std::string even = "pad=ceil(iw/2)*2:ceil(ih/2)*2";
   if (ext == "mp4")
-    return {"-vf", even, "-c:v", "libx264", "-preset", "veryfast", "-crf", "20", "-pix_fmt", "yuv420p",
+    return {"-vf", even, "-c:v", "libx264", "-preset", "superfast", "-crf", "20", "-pix_fmt", "yuv420p",
             "-movflags", "+faststart", "-f", "mp4"};
   if (ext == "webm")
     return {"-vf", even, "-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "34", "-deadline", "realtime", "-cpu-used", "8",
