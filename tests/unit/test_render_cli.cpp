@@ -1,0 +1,180 @@
+// meshstep render and meshstep export as a user runs them: pictures of a log, a mesh and an
+// input; frames and videos of a run; every bad option or file refused with a message, and
+// nothing half-written left behind. PNG cases skip, saying why, where no OpenGL can be had.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "meshstep/scene/image.hpp"
+#include "run_cli.hpp"
+#include "temp_dir.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using meshstep::testing::CommandResult;
+using meshstep::testing::run_meshstep;
+using meshstep::testing::slurp;
+using meshstep::testing::TempDir;
+
+std::string lesson() { return std::string(MESHSTEP_ASSETS) + "/examples/lesson.poly"; }
+
+class RenderCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    log_ = (dir_.path() / "lesson.mslog").string();
+    const CommandResult r =
+        run_meshstep("refine " + lesson() + " --algorithm offcenter --min-angle 30 --record " + log_ + " -o " +
+                         (dir_.path() / "lesson").string() + " -q",
+                     dir_.path());
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  // Skips the test when this machine has no OpenGL (render says so and exits 1).
+  bool gl_available() {
+    const CommandResult r = run_meshstep("render " + log_ + " -o " + (dir_.path() / "probe.png").string() + " -q",
+                                         dir_.path());
+    if (r.status == 0) return true;
+    EXPECT_NE(r.err.find("OpenGL"), std::string::npos) << r.err;
+    return false;
+  }
+  fs::path file(const std::string& name) const { return dir_.path() / name; }
+
+  TempDir dir_;
+  std::string log_;
+};
+
+TEST_F(RenderCli, PngOfAStepHasTheAskedSizeAndSaysWhatItShows) {
+  if (!gl_available()) GTEST_SKIP() << "no OpenGL on this machine";
+  const CommandResult r =
+      run_meshstep("render " + log_ + " --step 40 --size 320x200 -o " + file("s.png").string(), dir_.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("at step 40 of"), std::string::npos) << r.out;
+  const meshstep::scene::Image image = meshstep::scene::read_png(file("s.png").string());
+  EXPECT_EQ(image.width, 320);
+  EXPECT_EQ(image.height, 200);
+}
+
+TEST_F(RenderCli, SvgNeedsNoOpenGLAndDrawsTheMesh) {
+  // A context that cannot exist: SVG must not care.
+  const std::string command = "render " + log_ + " -o " + file("end.svg").string() + " --gl osmesa";
+  const CommandResult r = run_meshstep(command, dir_.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string svg = slurp(file("end.svg"));
+  ASSERT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_EQ(svg.find("<svg", svg.find("<svg") + 1), std::string::npos) << "one document";
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  EXPECT_NE(svg.find("width=\"1280\""), std::string::npos) << "the default size";
+  EXPECT_NE(svg.find("segments"), std::string::npos) << "the segments' group";
+}
+
+TEST_F(RenderCli, MeshPrefixAndInputRenderToo) {
+  for (const std::string& input : {(dir_.path() / "lesson").string(), lesson()}) {
+    const CommandResult r = run_meshstep("render " + input + " -o " + file("x.svg").string(), dir_.path());
+    EXPECT_EQ(r.status, 0) << input << ": " << r.err;
+    EXPECT_TRUE(fs::exists(file("x.svg")));
+    fs::remove(file("x.svg"));
+  }
+}
+
+TEST_F(RenderCli, BadOptionsAreUsageErrorsNamingTheOption) {
+  const struct {
+    const char* options;
+    const char* says;
+  } cases[] = {
+      {"--size 12x9000000", "--size"},          {"--size big", "--size"},
+      {"--view 1,2,3", "--view"},               {"--view 3,0,1,1", "X1 > X0"},
+      {"--color-by beauty", "--color-by"},      {"--layers fill,sparkles", "sparkles"},
+      {"--theme sepia", "--theme"},             {"--gl vulkan", "--gl"},
+      {"--step 9999", "out of range"},          {"--step 3 --event 4", "not both"},
+      {"--samples 3", "--samples"},
+  };
+  for (const auto& c : cases) {
+    const CommandResult r =
+        run_meshstep("render " + log_ + " " + c.options + " -o " + file("bad.svg").string(), dir_.path());
+    EXPECT_EQ(r.status, 2) << c.options << ": " << r.err;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << c.options << ": " << r.err;
+    EXPECT_FALSE(fs::exists(file("bad.svg"))) << c.options;
+  }
+  const CommandResult wrong = run_meshstep("render " + log_ + " -o " + file("x.jpg").string(), dir_.path());
+  EXPECT_EQ(wrong.status, 2);
+  EXPECT_NE(wrong.err.find(".png or .svg"), std::string::npos) << wrong.err;
+}
+
+TEST_F(RenderCli, MissingAndForeignInputsAreBadInput) {
+  const CommandResult missing = run_meshstep("render " + file("nothing").string(), dir_.path());
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.err.find("nothing"), std::string::npos) << missing.err;
+  std::FILE* f = std::fopen(file("junk.mslog").c_str(), "w");
+  std::fputs("MSTEPLOG but not really a log", f);
+  std::fclose(f);
+  const CommandResult junk = run_meshstep("render " + file("junk.mslog").string() + " -o " + file("j.svg").string(),
+                                          dir_.path());
+  EXPECT_EQ(junk.status, 1) << junk.err;
+  EXPECT_FALSE(fs::exists(file("j.svg")));
+  const CommandResult not_log =
+      run_meshstep("export " + lesson() + " --frames " + file("f").string(), dir_.path());
+  EXPECT_EQ(not_log.status, 1);
+  EXPECT_NE(not_log.err.find("not a replay log"), std::string::npos) << not_log.err;
+}
+
+TEST_F(RenderCli, FramesOnePerStepEventOrPhase) {
+  if (!gl_available()) GTEST_SKIP() << "no OpenGL on this machine";
+  const CommandResult steps =
+      run_meshstep("export " + log_ + " --frames " + file("steps").string() + " --size 160x100 --from 30 --to 39 -q",
+                   dir_.path());
+  ASSERT_EQ(steps.status, 0) << steps.err;
+  std::size_t count = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(file("steps"))) ++count;
+  EXPECT_EQ(count, 10u);
+  EXPECT_TRUE(fs::exists(file("steps/frame_000000.png")));
+  EXPECT_TRUE(fs::exists(file("steps/frame_000009.png")));
+  // A run of a .poly has four phases: insertion, recovery, carving, refinement.
+  const CommandResult phases =
+      run_meshstep("export " + log_ + " --frames " + file("phases").string() + " --every phase --size 160x100 -q",
+                   dir_.path());
+  ASSERT_EQ(phases.status, 0) << phases.err;
+  count = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(file("phases"))) ++count;
+  EXPECT_EQ(count, 4u);
+  const CommandResult outside =
+      run_meshstep("export " + log_ + " --frames " + file("out").string() + " --from 5 --to 2", dir_.path());
+  EXPECT_EQ(outside.status, 2);
+  EXPECT_NE(outside.err.find("outside the run"), std::string::npos) << outside.err;
+}
+
+TEST_F(RenderCli, VideoHasTheFramesItWasAskedFor) {
+  if (!gl_available()) GTEST_SKIP() << "no OpenGL on this machine";
+  if (std::system("command -v ffprobe >/dev/null 2>&1") != 0) GTEST_SKIP() << "ffprobe (Debian package ffmpeg) missing";
+  const CommandResult r = run_meshstep(
+      "export " + log_ + " --video " + file("v.mp4").string() + " --size 161x101 --fps 12 --duration 2.5 -q",
+      dir_.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string probe = "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
+                            "-of csv=p=0 " + file("v.mp4").string() + " > " + file("frames.txt").string();
+  ASSERT_EQ(std::system(probe.c_str()), 0);
+  EXPECT_EQ(std::stoi(slurp(file("frames.txt"))), 30) << "12 fps x 2.5 s";
+  // Nothing but the video is left beside it.
+  for (const auto& entry : fs::directory_iterator(dir_.path()))
+    EXPECT_EQ(entry.path().string().find(".partial"), std::string::npos) << entry.path();
+}
+
+TEST_F(RenderCli, FailedVideoLeavesNothingAndNamesThePackage) {
+  const CommandResult unknown = run_meshstep("export " + log_ + " --video " + file("v.avi").string(), dir_.path());
+  EXPECT_NE(unknown.status, 0);
+  EXPECT_NE(unknown.err.find(".mp4, .webm or .gif"), std::string::npos) << unknown.err;
+  if (!gl_available()) GTEST_SKIP() << "no OpenGL on this machine";
+  const CommandResult none = run_meshstep(
+      "export " + log_ + " --video " + file("v.mp4").string() + " --size 160x100", dir_.path());
+  ASSERT_EQ(none.status, 0) << none.err;  // with ffmpeg, as installed
+  fs::remove(file("v.mp4"));
+  const std::string without = "env PATH=/nonexistent " + std::string(MESHSTEP_BINARY) + " export " + log_ +
+                              " --video " + file("w.mp4").string() + " 2> " + file("err.txt").string();
+  EXPECT_NE(std::system(without.c_str()), 0);
+  EXPECT_NE(slurp(file("err.txt")).find("apt-get install ffmpeg"), std::string::npos) << slurp(file("err.txt"));
+  for (const auto& entry : fs::directory_iterator(dir_.path()))
+    EXPECT_EQ(entry.path().filename().string().find("w.mp4"), std::string::npos) << entry.path();
+}
+
+}  // namespace
