@@ -70,7 +70,7 @@ void check_args(const ExportArgs& args) {
 
 int run_export(const ExportArgs& args) {
   const Verbosity verbosity = args.quiet ? Verbosity::quiet : Verbosity::normal;
-  try {
+  return with_picture_errors("", [&] {
     check_args(args);
     const DrawSettings draw = parse_draw_args(args.draw);
     const MomentSpec spec = parse_every(args.every, args.from, args.to);
@@ -127,16 +127,7 @@ int run_export(const ExportArgs& args) {
                   static_cast<unsigned long long>(log.step_count()));
     }
     return kExitOk;
-  } catch (const UsageError& e) {
-    print_error(e.what());
-    return kExitUsage;
-  } catch (const InputError& e) {
-    print_error(e.what());
-    return kExitBadInput;
-  } catch (const GlUnavailable& e) {
-    print_error(e.what());
-    return kExitBadInput;
-  }
+  });
 }
 
 }  // namespace

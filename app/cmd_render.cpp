@@ -61,15 +61,9 @@ std::uint64_t position_of(const RenderArgs& args, const replay::LogReader& log) 
 
 int run_render(const RenderArgs& args) {
   const Verbosity verbosity = args.quiet ? Verbosity::quiet : Verbosity::normal;
-  DrawSettings draw;
-  try {
-    draw = parse_draw_args(args.draw);
+  return with_picture_errors(" (an .svg picture needs no OpenGL)", [&] {
+    const DrawSettings draw = parse_draw_args(args.draw);
     if (!args.output.empty()) format_of(args.output);
-  } catch (const UsageError& e) {
-    print_error(e.what());
-    return kExitUsage;
-  }
-  try {
     std::vector<std::string> warnings;
     SceneSource source = open_scene_source(args.input, &warnings);
     for (const std::string& w : warnings) print_warning(verbosity, w);
@@ -108,16 +102,7 @@ int run_render(const RenderArgs& args) {
       std::printf("%s: %dx%d picture of %s%s (%zu triangles; %s)\n", output.c_str(), draw.width, draw.height,
                   args.input.c_str(), moment.c_str(), picture.mesh.triangles.size(), how.c_str());
     return kExitOk;
-  } catch (const UsageError& e) {
-    print_error(e.what());
-    return kExitUsage;
-  } catch (const InputError& e) {
-    print_error(e.what());
-    return kExitBadInput;
-  } catch (const GlUnavailable& e) {
-    print_error(std::string(e.what()) + " (an .svg picture needs no OpenGL)");
-    return kExitBadInput;
-  }
+  });
 }
 
 }  // namespace

@@ -6,11 +6,20 @@
 #include <optional>
 #include <string>
 
+#include "command.hpp"
+#include "console.hpp"
+#include "meshstep/error.hpp"
 #include "meshstep/geometry/point.hpp"
 #include "meshstep/scene/build.hpp"
 #include "meshstep/scene/camera.hpp"
+#include "render/gl_context.hpp"
 
 namespace meshstep::app {
+
+// A bad option: the message names it.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 struct DrawArgs {
   std::string size = "1280x720";
@@ -36,10 +45,24 @@ struct DrawSettings {
 
 void add_draw_options(CLI::App* cmd, DrawArgs& args);
 
-// Throws CLI::ValidationError-like UsageError with a message naming the option.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 DrawSettings parse_draw_args(const DrawArgs& args);
+
+// Runs a picture command, turning its failures into a message and an exit status: usage
+// errors 2; bad input, or no OpenGL to be had (with `gl_hint` appended), 1.
+template <class F>
+int with_picture_errors(const char* gl_hint, F&& f) {
+  try {
+    return f();
+  } catch (const UsageError& e) {
+    print_error(e.what());
+    return kExitUsage;
+  } catch (const InputError& e) {
+    print_error(e.what());
+    return kExitBadInput;
+  } catch (const render::GlUnavailable& e) {
+    print_error(std::string(e.what()) + gl_hint);
+    return kExitBadInput;
+  }
+}
 
 }  // namespace meshstep::app
