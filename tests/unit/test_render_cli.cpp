@@ -69,6 +69,17 @@ TEST_F(RenderCli, SvgNeedsNoOpenGLAndDrawsTheMesh) {
   EXPECT_NE(svg.find("segments"), std::string::npos) << "the segments' group";
 }
 
+TEST_F(RenderCli, VertexMarkersOnlyWhereThePictureHasRoomForThem) {
+  // The refined lesson has 54 vertices: marked at 1280x720 (room for 1,024), left out at
+  // 160x100 (room for 17), where they would hide the mesh.
+  for (const auto& [size, marked] : {std::pair{"1280x720", true}, std::pair{"160x100", false}}) {
+    const CommandResult r =
+        run_meshstep("render " + log_ + " --size " + size + " -o " + file("v.svg").string(), dir_.path());
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(slurp(file("v.svg")).find("steiner_vertices") != std::string::npos, marked) << size;
+  }
+}
+
 TEST_F(RenderCli, MeshPrefixAndInputRenderToo) {
   for (const std::string& input : {(dir_.path() / "lesson").string(), lesson()}) {
     const CommandResult r = run_meshstep("render " + input + " -o " + file("x.svg").string(), dir_.path());
