@@ -50,15 +50,4 @@ const replay::LogReader* lesson_run(const std::string& arguments) {
   return runs.emplace(arguments, std::make_unique<replay::LogReader>(log)).first->second.get();
 }
 
-std::optional<std::uint64_t> after_first_step_with(const replay::LogReader& log,
-                                                   const std::function<bool(const replay::Event&)>& wanted) {
-  for (std::uint64_t e = 0; e < log.event_count(); ++e) {
-    if (!wanted(log.event(e))) continue;
-    const std::uint64_t step = log.step_of_event(e);
-    if (step >= log.step_count()) return e + 1;  // in the preamble: the moment after it
-    return log.step_start(step + 1);
-  }
-  return std::nullopt;
-}
-
 }  // namespace meshstep::golden

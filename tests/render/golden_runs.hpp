@@ -3,9 +3,6 @@
 // whose overlays the tests need, recorded once per test process into a temporary folder.
 #pragma once
 
-#include <cstdint>
-#include <functional>
-#include <optional>
 #include <string>
 
 #include "meshstep/replay/log_reader.hpp"
@@ -15,11 +12,6 @@ namespace meshstep::golden {
 // The log of `meshstep refine lesson.poly ARGUMENTS --record LOG` (recorded on first use).
 // Fails the test (and returns nullptr) when the run fails.
 const replay::LogReader* lesson_run(const std::string& arguments);
-
-// The moment just after the first step that has an event for which `wanted` holds (the
-// position where that step's last event has been applied), if any.
-std::optional<std::uint64_t> after_first_step_with(const replay::LogReader& log,
-                                                   const std::function<bool(const replay::Event&)>& wanted);
 
 std::string asset(const std::string& name);
 
