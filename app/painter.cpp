@@ -21,8 +21,7 @@ Painter::~Painter() {
 }
 
 void Painter::paint(const scene::Scene& scene, const scene::Camera& camera, int samples, scene::Image& image) {
-  const int chosen = samples > 0 ? samples : render::default_samples(scene.mesh.triangles.size());
-  impl_->renderer->render(scene, camera, chosen);
+  impl_->renderer->render(scene, camera, samples > 0 ? samples : render::kDefaultSamples);
   impl_->renderer->read_pixels(image);
 }
 

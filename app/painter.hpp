@@ -24,7 +24,7 @@ class Painter {
   Painter(const Painter&) = delete;
   Painter& operator=(const Painter&) = delete;
 
-  // samples 0: chosen by the mesh's size. The image's memory is reused from call to call
+  // samples 0: render::kDefaultSamples. The image's memory is reused from call to call
   // when the caller hands the same one back.
   void paint(const scene::Scene& scene, const scene::Camera& camera, int samples, scene::Image& image);
   scene::Image paint(const scene::Scene& scene, const scene::Camera& camera, int samples) {

@@ -23,8 +23,6 @@
 
 namespace meshstep::render {
 
-int default_samples(std::size_t triangle_count) { return triangle_count < 200000 ? 4 : 1; }
-
 struct Renderer::State {
   MeshPass mesh;
   TrianglePass triangles;
