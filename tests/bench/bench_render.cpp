@@ -1,7 +1,8 @@
 // bench_render: what pictures cost. Medians of repeated runs, printed as a table
 // (docs/rendering.md):
 //   frame   an off-screen frame of a Delaunay mesh of about 1M triangles at 1920x1080,
-//           render plus read-back, on each off-screen backend (EGL, OSMesa);
+//           render plus read-back, on each off-screen backend (EGL, OSMesa), beside the
+//           floor: the same triangles in flat colours by the plainest shader (plain_frame.hpp);
 //   scene   building that mesh's scene (colour by smallest angle);
 //   svg     the SVG of a 100k-triangle mesh, made and written to a file;
 //   export  whole `meshstep export` processes on a recorded refinement (A.poly at 30
@@ -27,6 +28,7 @@
 #include "meshstep/scene/build.hpp"
 #include "meshstep/scene/layout.hpp"
 #include "meshstep/scene/svg.hpp"
+#include "plain_frame.hpp"
 #include "random_points.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
@@ -89,15 +91,29 @@ void bench_frames(const TriMesh& mesh, int repeat) {
     {
       render::Renderer renderer;
       scene::Image image;
-      const int samples = render::default_samples(mesh.triangles.size());
+      const int samples = render::kDefaultSamples;
       renderer.render(picture, camera, samples);  // first frame: uploads
       renderer.read_pixels(image);
+      // The renderer's frame and the plain floor alternate, so that the machine's drift
+      // (tens of percent within minutes) falls on both alike.
+      bench::PlainFrame plain(mesh, 1920, 1080);
+      plain.draw_and_read();
+      std::vector<double> ours, floor;
+      for (int i = 0; i < repeat; ++i) {
+        auto t0 = Clock::now();
+        renderer.render(picture, camera, samples);
+        renderer.read_pixels(image);
+        ours.push_back(ms_since(t0));
+        t0 = Clock::now();
+        plain.draw_and_read();
+        floor.push_back(ms_since(t0));
+      }
+      const Stats ours_stats = stats_of(ours), floor_stats = stats_of(floor);
       row(std::string(backend) + ": 1920x1080 frame, render + read-back (samples " + std::to_string(samples) + ")",
-          time_ms(repeat, [&] {
-            renderer.render(picture, camera, samples);
-            renderer.read_pixels(image);
-          }),
-          "ms");
+          ours_stats, "ms");
+      row(std::string(backend) + ": floor: same triangles, flat colour only, no edges", floor_stats, "ms");
+      std::printf("| %-58s | %9.2f | %9.2f | %9s | %s |\n", (std::string(backend) + ": frame over floor").c_str(),
+                  ours_stats.min / floor_stats.min, ours_stats.median / floor_stats.median, "", "ratio");
       row(std::string(backend) + ": same, with the mesh uploaded again", time_ms(repeat, [&] {
             renderer.invalidate();
             renderer.render(picture, camera, samples);
