@@ -185,7 +185,19 @@ void LogReader::index_events(std::size_t block, const DecodedEvents& events) {
     const auto w = events.writes_of(i);
     writes_.insert(writes_.end(), w.begin(), w.end());
     write_end_.push_back(writes_.size());
-    if (h.type == EventType::step_begin) step_starts_.push_back(e);
+    if (h.type == EventType::step_begin) {
+      step_starts_.push_back(e);
+      step_kinds_.push_back(static_cast<StepKind>(h.code));
+    }
+    if (h.type == EventType::phase_begin) phases_.push_back({static_cast<Phase>(h.code), e, kNoEnd});
+    if (h.type == EventType::phase_end) {
+      // The innermost phase of that kind still open: phases nest, never interleave.
+      for (auto p = phases_.rbegin(); p != phases_.rend(); ++p)
+        if (p->phase == static_cast<Phase>(h.code) && p->end == kNoEnd) {
+          p->end = e + 1;
+          break;
+        }
+    }
     if (h.type == EventType::vertex || h.type == EventType::duplicate) {
       const VertexId v = h.ids[0];
       if (v >= kInfiniteVertex) throw InputError(path_, 0, where(block) + ": event " + std::to_string(e) + " introduces an invalid vertex id");

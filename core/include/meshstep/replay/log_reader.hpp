@@ -33,6 +33,14 @@ struct KeyframeInfo {
   std::uint32_t stored_size = 0, raw_size = 0;
 };
 
+// A phase of the run: the events [begin, end), from its phase_begin to its phase_end
+// included (end is kNoEnd for a phase the log does not close: a run that died).
+struct PhaseSpan {
+  Phase phase = Phase::insert_vertices;
+  std::uint64_t begin = 0, end = 0;
+};
+inline constexpr std::uint64_t kNoEnd = UINT64_MAX;
+
 struct VertexInfo {
   Point point;
   std::uint32_t input_index = kNone;  // in the input's numbering (Steiner: its own id)
@@ -65,6 +73,10 @@ class LogReader {
   // The step an event belongs to, or step_count() for events of the preamble (before the
   // first step).
   std::uint64_t step_of_event(std::uint64_t e) const;
+  // What step k does (its step_begin's kind).
+  StepKind step_kind(std::uint64_t k) const { return step_kinds_[k]; }
+  // The phases in the order they begin (a timeline's bands).
+  const std::vector<PhaseSpan>& phases() const { return phases_; }
 
   const std::vector<BlockInfo>& blocks() const { return blocks_; }
   const std::vector<KeyframeInfo>& keyframes() const { return keyframes_; }
@@ -108,6 +120,8 @@ class LogReader {
   std::uint64_t final_hash_ = 0;
   std::array<std::uint64_t, kEventTypeCount> counts_{};
   std::vector<std::uint64_t> step_starts_;
+  std::vector<StepKind> step_kinds_;
+  std::vector<PhaseSpan> phases_;
   std::vector<BlockInfo> blocks_;
   std::vector<KeyframeInfo> keyframes_;
   std::vector<VertexInfo> vertices_;
