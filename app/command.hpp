@@ -25,5 +25,6 @@ Command add_refine_command(CLI::App& parent);
 Command add_list_command(CLI::App& parent);
 Command add_render_command(CLI::App& parent);
 Command add_export_command(CLI::App& parent);
+Command add_view_command(CLI::App& parent);
 
 }  // namespace meshstep::app

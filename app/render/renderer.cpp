@@ -159,6 +159,7 @@ void Renderer::invalidate() {
 }
 
 const Renderer::Counters& Renderer::counters() const { return state_->counters; }
+unsigned Renderer::texture() const { return state_->target.texture(); }
 int Renderer::width() const { return state_->target.width(); }
 int Renderer::height() const { return state_->target.height(); }
 int Renderer::samples() const { return state_->target.samples(); }

@@ -59,6 +59,10 @@ class Renderer {
   // to width x height pixels.
   void blit_to_default_framebuffer(int width, int height) const;
 
+  // The GL texture holding the last picture (rows top to bottom), for a UI that shows it
+  // as an image (the viewer's canvas). Valid until the next render.
+  unsigned texture() const;
+
   // Forgets what was uploaded: the next render uploads everything again.
   void invalidate();
 

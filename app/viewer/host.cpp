@@ -1,0 +1,157 @@
+#include "host.hpp"
+
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <imgui.h>
+
+#include "imgui_gl.hpp"
+#include "render/embedded_files.hpp"
+#include "render/framebuffer.hpp"
+#include "render/gl_context.hpp"
+#include "render/glfw_context.hpp"
+
+namespace meshstep::viewer {
+
+void setup_imgui_style() {
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // the viewer keeps its own settings
+  io.ConfigInputTextCursorBlink = false;
+  const std::string_view font = render::embedded_file("DejaVuSans.ttf");
+  ImFontConfig config;
+  config.FontDataOwnedByAtlas = false;  // the bytes live in the program
+  static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x2190, 0x2193, 0x00B0, 0x00B7, 0};
+  io.Fonts->AddFontFromMemoryTTF(const_cast<char*>(font.data()), static_cast<int>(font.size()), 16.0f, &config,
+                                 kRanges);
+  ImGui::StyleColorsDark();
+  ImGuiStyle& style = ImGui::GetStyle();
+  style.WindowRounding = 0.0f;
+  style.FrameRounding = 3.0f;
+  style.ItemSpacing = ImVec2(8, 5);
+}
+
+namespace {
+
+class WindowHost final : public Host {
+ public:
+  WindowHost(int width, int height, const std::string& title)
+      : context_(render::make_window_context(width, height, title, true)) {
+    ImGui_ImplGlfw_InitForOpenGL(context_->window(), true);
+    gl_ = std::make_unique<ImGuiGl>();
+  }
+  ~WindowHost() override {
+    context_->make_current();
+    gl_.reset();
+    ImGui_ImplGlfw_Shutdown();
+  }
+
+  bool begin_frame(double) override {
+    glfwPollEvents();
+    if (glfwWindowShouldClose(context_->window())) return false;
+    glfwGetFramebufferSize(context_->window(), &width_, &height_);
+    ImGui_ImplGlfw_NewFrame();
+    return true;
+  }
+
+  void end_frame(scene::Image* capture) override {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width_, height_);
+    glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    if (ImDrawData* data = ImGui::GetDrawData()) gl_->draw(*data, width_, height_, false);
+    if (capture) read_back(*capture);
+    context_->swap_buffers();
+  }
+
+  int width() const override { return width_; }
+  int height() const override { return height_; }
+  std::string describe() const override { return "GLFW window: " + context_->describe(); }
+  bool interactive() const override { return true; }
+
+ private:
+  // The back buffer, bottom row first: flipped into an image's order.
+  void read_back(scene::Image& image) const {
+    image.width = width_;
+    image.height = height_;
+    image.rgba.resize(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    const std::size_t row = static_cast<std::size_t>(width_) * 4;
+    for (int y = 0; y < height_ / 2; ++y)
+      std::swap_ranges(image.rgba.begin() + static_cast<std::ptrdiff_t>(y * row),
+                       image.rgba.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
+                       image.rgba.begin() + static_cast<std::ptrdiff_t>((height_ - 1 - y) * row));
+    for (std::size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 255;
+  }
+
+  std::unique_ptr<render::GlfwContext> context_;
+  std::unique_ptr<ImGuiGl> gl_;
+  int width_ = 0, height_ = 0;
+};
+
+class OffscreenHost final : public Host {
+ public:
+  OffscreenHost(int width, int height, const std::string& backend)
+      : context_(render::make_offscreen_context(backend)), width_(width), height_(height) {
+    target_.resize(width, height, 1);
+    gl_ = std::make_unique<ImGuiGl>();
+    // The keys ImGui's own widgets read (text fields, navigation), in GLFW's codes as in a
+    // window, so scripts press the same keys everywhere.
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyMap[ImGuiKey_Tab] = GLFW_KEY_TAB;
+    io.KeyMap[ImGuiKey_LeftArrow] = GLFW_KEY_LEFT;
+    io.KeyMap[ImGuiKey_RightArrow] = GLFW_KEY_RIGHT;
+    io.KeyMap[ImGuiKey_UpArrow] = GLFW_KEY_UP;
+    io.KeyMap[ImGuiKey_DownArrow] = GLFW_KEY_DOWN;
+    io.KeyMap[ImGuiKey_PageUp] = GLFW_KEY_PAGE_UP;
+    io.KeyMap[ImGuiKey_PageDown] = GLFW_KEY_PAGE_DOWN;
+    io.KeyMap[ImGuiKey_Home] = GLFW_KEY_HOME;
+    io.KeyMap[ImGuiKey_End] = GLFW_KEY_END;
+    io.KeyMap[ImGuiKey_Backspace] = GLFW_KEY_BACKSPACE;
+    io.KeyMap[ImGuiKey_Enter] = GLFW_KEY_ENTER;
+    io.KeyMap[ImGuiKey_Escape] = GLFW_KEY_ESCAPE;
+  }
+  ~OffscreenHost() override {
+    context_->make_current();
+    gl_.reset();
+  }
+
+  bool begin_frame(double seconds) override {
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(static_cast<float>(width_), static_cast<float>(height_));
+    io.DeltaTime = static_cast<float>(seconds > 0.0 ? seconds : 1.0 / 30.0);
+    return true;
+  }
+
+  void end_frame(scene::Image* capture) override {
+    target_.bind_for_drawing();
+    glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    if (ImDrawData* data = ImGui::GetDrawData()) gl_->draw(*data, width_, height_, true);
+    if (capture) target_.read(*capture, true);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+
+  int width() const override { return width_; }
+  int height() const override { return height_; }
+  std::string describe() const override { return std::string(context_->name()) + " (off screen): " + context_->describe(); }
+  bool interactive() const override { return false; }
+
+ private:
+  std::unique_ptr<render::GlContext> context_;
+  render::Framebuffer target_;
+  std::unique_ptr<ImGuiGl> gl_;
+  int width_, height_;
+};
+
+}  // namespace
+
+std::unique_ptr<Host> make_window_host(int width, int height, const std::string& title) {
+  return std::make_unique<WindowHost>(width, height, title);
+}
+
+std::unique_ptr<Host> make_offscreen_host(int width, int height, const std::string& backend) {
+  return std::make_unique<OffscreenHost>(width, height, backend);
+}
+
+}  // namespace meshstep::viewer

@@ -1,0 +1,39 @@
+// Where the viewer's frames go: a GLFW window (people), or an off-screen framebuffer of
+// EGL or OSMesa (scripts and tests on a machine with no display). Either way ImGui's draw
+// data is drawn by ImGuiGl through meshstep's own GL loader, so both show the same pixels.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "meshstep/scene/image.hpp"
+
+struct GLFWwindow;
+
+namespace meshstep::viewer {
+
+class Host {
+ public:
+  virtual ~Host() = default;
+  // Starts a frame: reads the window's events (a window) and sets ImGui's display size and
+  // frame time. False when the window was closed.
+  virtual bool begin_frame(double seconds) = 0;
+  // Draws ImGui's draw data and shows it; with `capture`, reads the frame into it first.
+  virtual void end_frame(scene::Image* capture) = 0;
+  virtual int width() const = 0;
+  virtual int height() const = 0;
+  // "GLFW window", "EGL (off screen)"...
+  virtual std::string describe() const = 0;
+  // True when ImGui's input comes from the window's events.
+  virtual bool interactive() const = 0;
+};
+
+// Throws render::GlUnavailable when there is no display or no GL. The ImGui context must
+// exist; the host loads the fonts' texture and (a window) the GLFW backend.
+std::unique_ptr<Host> make_window_host(int width, int height, const std::string& title);
+std::unique_ptr<Host> make_offscreen_host(int width, int height, const std::string& backend);
+
+// The fonts and style every host uses: DejaVu Sans (embedded) at a size that reads at 720p.
+void setup_imgui_style();
+
+}  // namespace meshstep::viewer

@@ -1,0 +1,144 @@
+#include "keys.hpp"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <string>
+#include <vector>
+
+#include "viewer.hpp"
+
+namespace meshstep::viewer {
+
+namespace {
+
+using replay::StepKind;
+using scene::Layer;
+
+std::vector<KeyAction> make_actions() {
+  std::vector<KeyAction> a;
+  const auto add = [&](Chord chord, const char* keys, const char* what, std::function<void(Viewer&)> run) {
+    a.push_back({chord, keys, what, std::move(run)});
+  };
+  add({GLFW_KEY_SPACE}, "Space", "play / pause", [](Viewer& v) { v.session().toggle_play(); });
+  add({GLFW_KEY_RIGHT}, "Right", "next step", [](Viewer& v) { v.session().move(Unit::step, +1); });
+  add({GLFW_KEY_LEFT}, "Left", "previous step", [](Viewer& v) { v.session().move(Unit::step, -1); });
+  add({GLFW_KEY_RIGHT, true}, "Shift+Right", "next event", [](Viewer& v) { v.session().move(Unit::event, +1); });
+  add({GLFW_KEY_LEFT, true}, "Shift+Left", "previous event", [](Viewer& v) { v.session().move(Unit::event, -1); });
+  add({GLFW_KEY_PAGE_DOWN}, "Page Down", "next phase boundary", [](Viewer& v) { v.session().move(Unit::phase, +1); });
+  add({GLFW_KEY_PAGE_UP}, "Page Up", "previous phase boundary", [](Viewer& v) { v.session().move(Unit::phase, -1); });
+  add({GLFW_KEY_HOME}, "Home", "start of the run", [](Viewer& v) { v.session().to_start(); });
+  add({GLFW_KEY_END}, "End", "end of the run", [](Viewer& v) { v.session().to_end(); });
+  add({GLFW_KEY_S}, "S", "next segment split", [](Viewer& v) { v.session().find_step(StepKind::split_segment, +1); });
+  add({GLFW_KEY_S, true}, "Shift+S", "previous segment split",
+      [](Viewer& v) { v.session().find_step(StepKind::split_segment, -1); });
+  add({GLFW_KEY_R}, "R", "next refinement step", [](Viewer& v) { v.session().find_step(StepKind::refine, +1); });
+  add({GLFW_KEY_R, true}, "Shift+R", "previous refinement step",
+      [](Viewer& v) { v.session().find_step(StepKind::refine, -1); });
+  add({GLFW_KEY_EQUAL}, "+", "play twice as fast", [](Viewer& v) { v.session().scale_speed(2.0); });
+  add({GLFW_KEY_MINUS}, "-", "play half as fast", [](Viewer& v) { v.session().scale_speed(0.5); });
+  add({GLFW_KEY_U}, "U", "play by events / steps / phases", [](Viewer& v) {
+    Playback& p = v.session().playback();
+    p.unit = p.unit == Unit::event ? Unit::step : p.unit == Unit::step ? Unit::phase : Unit::event;
+  });
+  add({GLFW_KEY_F}, "F", "fit the run in view", [](Viewer& v) { v.request_fit(); });
+  add({GLFW_KEY_L}, "L", "follow the current step while playing", [](Viewer& v) { v.follow = !v.follow; });
+  add({GLFW_KEY_C}, "C", "next colouring", [](Viewer& v) { v.cycle_color_by(+1); });
+  add({GLFW_KEY_C, true}, "Shift+C", "previous colouring", [](Viewer& v) { v.cycle_color_by(-1); });
+  add({GLFW_KEY_T}, "T", "light / dark theme", [](Viewer& v) {
+    Session& s = v.session();
+    s.set_theme(s.options().theme == scene::Theme::light ? scene::Theme::dark : scene::Theme::light);
+  });
+  // Layers on F2..F11, in the scene's layer order.
+  static constexpr std::array<const char*, scene::kLayerCount> kLayerKeys = {"F2", "F3", "F4", "F5", "F6",
+                                                                              "F7", "F8", "F9", "F10", "F11"};
+  static const std::array<std::string, scene::kLayerCount> kLayerTexts = [] {
+    std::array<std::string, scene::kLayerCount> t;
+    for (std::size_t i = 0; i < scene::kLayerCount; ++i) t[i] = std::string("layer: ") + scene::name(Layer(i));
+    return t;
+  }();
+  for (std::size_t i = 0; i < scene::kLayerCount; ++i) {
+    const auto layer = static_cast<Layer>(i);
+    add({GLFW_KEY_F2 + static_cast<int>(i)}, kLayerKeys[i], kLayerTexts[i].c_str(),
+        [layer](Viewer& v) { v.toggle_layer(layer); });
+  }
+  static constexpr std::array<const char*, 9> kDigits = {"1", "2", "3", "4", "5", "6", "7", "8", "9"};
+  static constexpr std::array<const char*, 9> kCtrlDigits = {"Ctrl+1", "Ctrl+2", "Ctrl+3", "Ctrl+4", "Ctrl+5",
+                                                             "Ctrl+6", "Ctrl+7", "Ctrl+8", "Ctrl+9"};
+  for (int slot = 1; slot <= 9; ++slot) {
+    add({GLFW_KEY_0 + slot}, kDigits[slot - 1], slot == 1 ? "go to bookmark 1-9" : nullptr,
+        [slot](Viewer& v) { v.session().go_to_bookmark(slot); });
+    add({GLFW_KEY_0 + slot, false, true}, kCtrlDigits[slot - 1], slot == 1 ? "set bookmark 1-9 here" : nullptr,
+        [slot](Viewer& v) { v.session().set_bookmark(slot); });
+  }
+  add({GLFW_KEY_SLASH, true}, "?", "this list of keys", [](Viewer& v) { v.help_open = !v.help_open; });
+  add({GLFW_KEY_F1}, "F1", "this list of keys", [](Viewer& v) { v.help_open = !v.help_open; });
+  add({GLFW_KEY_ESCAPE}, "Esc", "close this list", [](Viewer& v) { v.help_open = false; });
+  add({GLFW_KEY_Q, false, true}, "Ctrl+Q", "quit", [](Viewer& v) { v.quit_requested = true; });
+  return a;
+}
+
+struct Named {
+  const char* name;
+  int key;
+};
+
+constexpr Named kNamedKeys[] = {
+    {"space", GLFW_KEY_SPACE},   {"right", GLFW_KEY_RIGHT},       {"left", GLFW_KEY_LEFT},
+    {"up", GLFW_KEY_UP},         {"down", GLFW_KEY_DOWN},         {"pagedown", GLFW_KEY_PAGE_DOWN},
+    {"pageup", GLFW_KEY_PAGE_UP}, {"home", GLFW_KEY_HOME},        {"end", GLFW_KEY_END},
+    {"escape", GLFW_KEY_ESCAPE}, {"esc", GLFW_KEY_ESCAPE},        {"enter", GLFW_KEY_ENTER},
+    {"tab", GLFW_KEY_TAB},       {"+", GLFW_KEY_EQUAL},           {"=", GLFW_KEY_EQUAL},
+    {"-", GLFW_KEY_MINUS},       {"/", GLFW_KEY_SLASH},           {"backspace", GLFW_KEY_BACKSPACE},
+};
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+}  // namespace
+
+std::span<const KeyAction> key_actions() {
+  static const std::vector<KeyAction> actions = make_actions();
+  return actions;
+}
+
+std::optional<Chord> parse_chord(std::string_view text) {
+  Chord chord;
+  std::string rest = lower(text);
+  // Modifiers first: "shift+", "ctrl+" (a lone "+" is the key itself).
+  for (bool more = true; more && rest.size() > 1;) {
+    more = false;
+    if (rest.starts_with("shift+")) chord.shift = more = true, rest.erase(0, 6);
+    else if (rest.starts_with("ctrl+")) chord.ctrl = more = true, rest.erase(0, 5);
+  }
+  if (rest == "?") return Chord{GLFW_KEY_SLASH, true, chord.ctrl};
+  for (const Named& n : kNamedKeys)
+    if (rest == n.name) {
+      chord.key = n.key;
+      return chord;
+    }
+  if (rest.size() == 1 && std::isalnum(static_cast<unsigned char>(rest[0]))) {
+    chord.key = std::isdigit(static_cast<unsigned char>(rest[0])) ? GLFW_KEY_0 + (rest[0] - '0')
+                                                                   : GLFW_KEY_A + (rest[0] - 'a');
+    return chord;
+  }
+  if (rest.size() >= 2 && rest[0] == 'f') {
+    int n = 0;
+    for (std::size_t i = 1; i < rest.size(); ++i) {
+      if (!std::isdigit(static_cast<unsigned char>(rest[i]))) return std::nullopt;
+      n = n * 10 + (rest[i] - '0');
+    }
+    if (n >= 1 && n <= 12) {
+      chord.key = GLFW_KEY_F1 + n - 1;
+      return chord;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace meshstep::viewer

@@ -1,0 +1,250 @@
+#include "run.hpp"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+
+#include "host.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/io/atomic_file.hpp"
+#include "meshstep/scene/svg.hpp"
+#include "state_json.hpp"
+#include "viewer.hpp"
+#include "keys.hpp"
+
+namespace meshstep::viewer {
+
+namespace {
+
+constexpr double kScriptFrameSeconds = 1.0 / 30.0;
+
+bool ends_with(const std::string& s, const char* tail) {
+  const std::string t(tail);
+  return s.size() >= t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
+}
+
+// Feeds a script's actions to the viewer, frame by frame: actions that change state take no
+// frame; a key, a click, a drag, `frames` and `play` take the frames they need.
+class ScriptPlayer {
+ public:
+  ScriptPlayer(const std::vector<ScriptAction>& actions, const std::string& path) : actions_(actions), path_(path) {}
+
+  bool done() const { return next_ >= actions_.size() && frames_left_ == 0 && pending_.empty(); }
+  bool quit() const { return quit_; }
+
+  // Before ImGui::NewFrame: sets this frame's input. Returns true when the frame must be
+  // captured for a screenshot.
+  bool before_frame(Viewer& viewer) {
+    ImGuiIO& io = ImGui::GetIO();
+    release(io);
+    while (frames_left_ == 0 && pending_.empty() && next_ < actions_.size() && !quit_) {
+      if (run(actions_[next_++], viewer, io)) break;
+    }
+    if (!pending_.empty()) {
+      const Input in = pending_.front();
+      pending_.erase(pending_.begin());
+      apply(in, io);
+    } else if (frames_left_ > 0) {
+      --frames_left_;
+      if (frames_left_ == 0 && stop_playing_) {
+        viewer.session().playback().playing = false;
+        stop_playing_ = false;
+      }
+    }
+    return capture_ != nullptr;
+  }
+
+  void after_frame(const scene::Image& captured) {
+    if (!capture_) return;
+    scene::write_png(capture_->args[0], captured, 6);
+    capture_ = nullptr;
+  }
+
+ private:
+  struct Input {
+    int key = -1;
+    bool shift = false, ctrl = false;
+    bool button = false;  // left button held this frame
+    float dx = 0, dy = 0, wheel = 0;
+  };
+
+  void release(ImGuiIO& io) {
+    if (held_key_ >= 0) io.KeysDown[held_key_] = false;
+    held_key_ = -1;
+    io.KeyShift = io.KeyCtrl = false;
+    io.MouseWheel = 0.0f;
+    io.MouseDown[0] = false;
+  }
+
+  void apply(const Input& in, ImGuiIO& io) {
+    if (in.key >= 0) {
+      io.KeysDown[in.key] = true;
+      held_key_ = in.key;
+      io.KeyShift = in.shift;
+      io.KeyCtrl = in.ctrl;
+    }
+    mouse_x_ += in.dx;
+    mouse_y_ += in.dy;
+    io.MousePos = ImVec2(mouse_x_, mouse_y_);
+    io.MouseDown[0] = in.button;
+    io.MouseWheel = in.wheel;
+  }
+
+  // Runs one action; true when it takes frames (the loop then draws them).
+  bool run(const ScriptAction& a, Viewer& viewer, ImGuiIO& io) {
+    Session& s = viewer.session();
+    const auto& v = a.verb;
+    if (v == "seek") {
+      if (a.args[0] == "start") s.to_start();
+      else if (a.args[0] == "end") s.to_end();
+      else if (a.args[0] == "step") s.seek_step(std::strtoull(a.args[1].c_str(), nullptr, 10));
+      else s.seek(std::strtoull(a.args[1].c_str(), nullptr, 10));
+      return false;
+    }
+    if (v == "frames") {
+      frames_left_ = std::strtoull(a.args[0].c_str(), nullptr, 10);
+      return frames_left_ > 0;
+    }
+    if (v == "play") {
+      frames_left_ = std::strtoull(a.args[0].c_str(), nullptr, 10);
+      if (!s.playback().playing) s.toggle_play();
+      stop_playing_ = true;
+      return frames_left_ > 0;
+    }
+    if (v == "key") {
+      const Chord c = *parse_chord(a.args[0]);
+      pending_.push_back({c.key, c.shift, c.ctrl});
+      pending_.push_back({});  // released on the next frame
+      return true;
+    }
+    if (v == "toggle") {
+      viewer.toggle_layer(*scene::parse_layer(a.args[0]));
+      return false;
+    }
+    if (v == "color-by") {
+      s.set_color_by(*scene::parse_color_by(a.args[0]));
+      return false;
+    }
+    if (v == "speed") {
+      s.playback().speed = std::clamp(std::strtod(a.args[0].c_str(), nullptr), Playback::kMinSpeed, Playback::kMaxSpeed);
+      return false;
+    }
+    if (v == "unit") {
+      s.playback().unit = a.args[0] == "event" ? Unit::event : a.args[0] == "step" ? Unit::step : Unit::phase;
+      return false;
+    }
+    if (v == "mouse") {
+      mouse_x_ = std::strtof(a.args[0].c_str(), nullptr);
+      mouse_y_ = std::strtof(a.args[1].c_str(), nullptr);
+      pending_.push_back({});
+      return true;
+    }
+    if (v == "click") {
+      Input down;
+      down.button = true;
+      pending_.push_back(down);
+      pending_.push_back({});
+      return true;
+    }
+    if (v == "drag") {
+      const float dx = std::strtof(a.args[0].c_str(), nullptr), dy = std::strtof(a.args[1].c_str(), nullptr);
+      Input press;
+      press.button = true;
+      pending_.push_back(press);
+      for (int i = 0; i < 4; ++i) {
+        Input move = press;
+        move.dx = dx / 4.0f;
+        move.dy = dy / 4.0f;
+        pending_.push_back(move);
+      }
+      pending_.push_back({});
+      return true;
+    }
+    if (v == "wheel") {
+      Input turn;
+      turn.wheel = std::strtof(a.args[0].c_str(), nullptr);
+      pending_.push_back(turn);
+      return true;
+    }
+    if (v == "screenshot") {
+      capture_ = &a;
+      frames_left_ = 1;
+      return true;
+    }
+    if (v == "canvas") {
+      const std::string& file = a.args[0];
+      if (ends_with(file, ".svg")) io::write_file_atomically(file, scene::to_svg(s.scene(), viewer.camera()));
+      else scene::write_png(file, viewer.canvas_picture(), 6);
+      return false;
+    }
+    if (v == "state") {
+      io::write_file_atomically(a.args[0], state_json(viewer));
+      return false;
+    }
+    if (v == "quit") {
+      quit_ = true;
+      return true;
+    }
+    (void)io;
+    throw InputError(path_, static_cast<std::size_t>(a.line), "cannot run '" + v + "'");
+  }
+
+  const std::vector<ScriptAction>& actions_;
+  std::string path_;
+  std::size_t next_ = 0;
+  std::uint64_t frames_left_ = 0;
+  bool stop_playing_ = false;
+  bool quit_ = false;
+  std::vector<Input> pending_;
+  const ScriptAction* capture_ = nullptr;
+  int held_key_ = -1;
+  float mouse_x_ = 0, mouse_y_ = 0;
+};
+
+}  // namespace
+
+int run_viewer(std::unique_ptr<Session> session, const RunOptions& options) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  struct ContextGuard {
+    ~ContextGuard() { ImGui::DestroyContext(); }
+  } guard;
+  setup_imgui_style();
+
+  std::unique_ptr<Host> host = options.offscreen
+                                   ? make_offscreen_host(options.width, options.height, options.gl)
+                                   : make_window_host(options.width, options.height, "meshstep view: " + session->title());
+  if (!options.quiet) std::fprintf(stderr, "meshstep view: %s\n", host->describe().c_str());
+  Viewer viewer(std::move(session));
+  ScriptPlayer script(options.script, options.script_path);
+  const bool scripted = !options.script.empty();
+
+  scene::Image capture;
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point last = Clock::now();
+  while (!viewer.quit_requested) {
+    // Scripts run on a fixed frame time, so that what they see does not depend on the
+    // machine's speed; people get the wall clock.
+    const Clock::time_point now = Clock::now();
+    const double wall = std::chrono::duration<double>(now - last).count();
+    const double seconds = scripted || !host->interactive() ? kScriptFrameSeconds : std::max(1e-4, wall);
+    last = now;
+    if (!host->begin_frame(seconds)) break;
+    const bool wants_capture = scripted && !script.done() && script.before_frame(viewer);
+    if (script.quit()) break;
+    ImGui::NewFrame();
+    viewer.frame(host->width(), host->height(), seconds);
+    ImGui::Render();
+    host->end_frame(wants_capture ? &capture : nullptr);
+    if (wants_capture) script.after_frame(capture);
+    if (!host->interactive() && (!scripted || script.done())) break;
+    if (host->interactive() && !scripted && !viewer.session().playback().playing) glfwWaitEventsTimeout(0.1);
+  }
+  return 0;
+}
+
+}  // namespace meshstep::viewer

@@ -1,0 +1,94 @@
+#include "script.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "keys.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/scene/scene.hpp"
+
+namespace meshstep::viewer {
+
+namespace {
+
+bool is_number(const std::string& s, bool allow_sign, bool allow_point) {
+  if (s.empty()) return false;
+  std::size_t digits = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (c >= '0' && c <= '9') ++digits;
+    else if (!((c == '-' || c == '+') && i == 0 && allow_sign) && !(c == '.' && allow_point)) return false;
+  }
+  return digits > 0;
+}
+
+// What is wrong with an action, or "" when nothing is.
+std::string check(const ScriptAction& a) {
+  const auto& v = a.verb;
+  const auto n = a.args.size();
+  const auto count = [&](std::size_t want, const char* usage) -> std::string {
+    return n == want ? "" : std::string("expected: ") + usage;
+  };
+  if (v == "seek") {
+    if (n == 1 && (a.args[0] == "start" || a.args[0] == "end")) return "";
+    if (n == 2 && (a.args[0] == "step" || a.args[0] == "event") && is_number(a.args[1], false, false)) return "";
+    return "expected: seek step N | seek event N | seek start | seek end";
+  }
+  if (v == "frames" || v == "play") {
+    if (n == 1 && is_number(a.args[0], false, false)) return "";
+    return "expected: " + v + " N (a count of frames)";
+  }
+  if (v == "key") {
+    if (n != 1) return "expected: key CHORD (Space, Shift+Right, Ctrl+3, F2, ?)";
+    return parse_chord(a.args[0]) ? "" : "unknown key '" + a.args[0] + "'";
+  }
+  if (v == "toggle") {
+    if (n != 1) return "expected: toggle LAYER";
+    return scene::parse_layer(a.args[0]) ? "" : "unknown layer '" + a.args[0] + "'";
+  }
+  if (v == "color-by") {
+    if (n != 1) return "expected: color-by NAME";
+    return scene::parse_color_by(a.args[0]) ? "" : "unknown colouring '" + a.args[0] + "'";
+  }
+  if (v == "speed") {
+    if (n == 1 && is_number(a.args[0], false, true)) return "";
+    return "expected: speed X (0.25 to 1000)";
+  }
+  if (v == "unit") {
+    if (n == 1 && (a.args[0] == "event" || a.args[0] == "step" || a.args[0] == "phase")) return "";
+    return "expected: unit event|step|phase";
+  }
+  if (v == "mouse" || v == "drag") {
+    if (n == 2 && is_number(a.args[0], true, true) && is_number(a.args[1], true, true)) return "";
+    return "expected: " + v + " X Y (pixels)";
+  }
+  if (v == "wheel") {
+    if (n == 1 && is_number(a.args[0], true, true)) return "";
+    return "expected: wheel N";
+  }
+  if (v == "click" || v == "quit") return count(0, v.c_str());
+  if (v == "screenshot" || v == "canvas" || v == "state") return count(1, (v + " FILE").c_str());
+  return "unknown action '" + v + "'";
+}
+
+}  // namespace
+
+std::vector<ScriptAction> read_script(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "cannot read the script");
+  std::vector<ScriptAction> actions;
+  std::string text;
+  for (int line = 1; std::getline(in, text); ++line) {
+    if (const auto hash = text.find('#'); hash != std::string::npos) text.erase(hash);
+    std::istringstream words(text);
+    ScriptAction a;
+    a.line = line;
+    if (!(words >> a.verb)) continue;
+    for (std::string w; words >> w;) a.args.push_back(w);
+    if (const std::string why = check(a); !why.empty()) throw InputError(path, line, why);
+    actions.push_back(std::move(a));
+  }
+  return actions;
+}
+
+}  // namespace meshstep::viewer

@@ -1,0 +1,37 @@
+// Scripted mode: a list of actions run with a fixed frame time, for tests and for
+// reproducible teaching material. One action per line; `#` starts a comment.
+//
+//   seek step 45 | seek event 300 | seek start | seek end
+//   frames N            draw N frames, touching nothing
+//   play N              play for N frames, then pause
+//   key CHORD           press a key for one frame: Space, Shift+Right, Ctrl+3, F2, ?
+//   toggle LAYER        switch a layer (fill, edges, highlight, overlay, segments, ...)
+//   color-by NAME       none, angle, quality, area, region, age
+//   speed X             steps (or events, phases) per second, 0.25 to 1000
+//   unit event|step|phase
+//   mouse X Y           move the pointer to pixel X, Y of the window
+//   click               press and release the left button where the pointer is
+//   drag DX DY          drag with the left button by DX, DY pixels (over 4 frames)
+//   wheel N             turn the wheel N notches (positive: zoom in)
+//   screenshot FILE     the window with its UI, as PNG
+//   canvas FILE         the canvas alone (the renderer's picture), PNG or SVG
+//   state FILE          the viewer's state as JSON (cursor, playback, options, panel text)
+//   quit
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace meshstep::viewer {
+
+struct ScriptAction {
+  std::string verb;
+  std::vector<std::string> args;
+  int line = 0;
+};
+
+// Reads and checks a script; throws InputError("FILE:LINE: what is wrong").
+std::vector<ScriptAction> read_script(const std::string& path);
+
+}  // namespace meshstep::viewer

@@ -1,0 +1,221 @@
+#include "session.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace meshstep::viewer {
+
+const char* name(Unit unit) {
+  switch (unit) {
+    case Unit::event: return "events";
+    case Unit::step: return "steps";
+    case Unit::phase: return "phases";
+  }
+  return "?";
+}
+
+std::unique_ptr<Session> Session::open_log(const std::string& path) {
+  std::unique_ptr<Session> s(new Session);
+  s->title_ = path;
+  s->log_ = std::make_unique<replay::LogReader>(path);
+  s->cursor_ = std::make_unique<replay::Replay>(*s->log_);
+  s->cursor_->seek_event(s->log_->event_count());
+  return s;
+}
+
+std::unique_ptr<Session> Session::still(TriMesh mesh, std::string title) {
+  std::unique_ptr<Session> s(new Session);
+  s->title_ = std::move(title);
+  s->mesh_ = std::move(mesh);
+  return s;
+}
+
+std::unique_ptr<Session> Session::still(Pslg input, std::string title) {
+  std::unique_ptr<Session> s(new Session);
+  s->title_ = std::move(title);
+  s->input_ = std::move(input);
+  return s;
+}
+
+Session::~Session() = default;
+
+CursorInfo Session::cursor_info() const {
+  CursorInfo info;
+  if (!log_) return info;
+  info.position = cursor_->position();
+  info.event_count = log_->event_count();
+  info.step = cursor_->completed_steps();
+  info.step_count = log_->step_count();
+  // Phases nest: the last one begun before the cursor that has not ended is the innermost.
+  for (const replay::PhaseSpan& p : log_->phases())
+    if (p.begin < info.position && info.position <= p.end) info.phase = p.phase;
+  return info;
+}
+
+void Session::moved() {
+  scene_stale_ = explanation_stale_ = true;
+}
+
+void Session::seek(std::uint64_t position) {
+  if (!log_) return;
+  position = std::min(position, log_->event_count());
+  if (position == cursor_->position()) return;
+  cursor_->seek_event(position);
+  moved();
+}
+
+void Session::seek_step(std::uint64_t steps) {
+  if (!log_) return;
+  const std::uint64_t before = cursor_->position();
+  cursor_->seek_step(steps);
+  if (cursor_->position() != before) moved();
+}
+
+void Session::to_end() {
+  if (log_) seek(log_->event_count());
+}
+
+void Session::move(Unit unit, int direction) {
+  if (!log_ || direction == 0) return;
+  const std::uint64_t at = cursor_->position();
+  switch (unit) {
+    case Unit::event:
+      if (direction > 0) seek(at + 1);
+      else if (at > 0) seek(at - 1);
+      return;
+    case Unit::step: {
+      const std::uint64_t before = at;
+      if (direction > 0) cursor_->next_step();
+      else cursor_->prev_step();
+      if (cursor_->position() != before) moved();
+      return;
+    }
+    case Unit::phase: {
+      // To the next phase boundary (a begin or an end) past the cursor, or the one before it.
+      std::uint64_t target = direction > 0 ? log_->event_count() : 0;
+      for (const replay::PhaseSpan& p : log_->phases())
+        for (const std::uint64_t b : {p.begin, std::min(p.end, log_->event_count())}) {
+          if (direction > 0 && b > at) target = std::min(target, b);
+          if (direction < 0 && b < at) target = std::max(target, b);
+        }
+      seek(target);
+      return;
+    }
+  }
+}
+
+bool Session::find_step(replay::StepKind kind, int direction) {
+  if (!log_) return false;
+  const std::uint64_t steps = log_->step_count();
+  const std::uint64_t done = cursor_->completed_steps();
+  // The cursor stands at the end of step done - 1 (or inside step done).
+  if (direction > 0) {
+    for (std::uint64_t k = done; k < steps; ++k)
+      if (log_->step_kind(k) == kind && log_->step_start(k + 1) > cursor_->position()) {
+        seek(log_->step_start(k + 1));
+        return true;
+      }
+  } else {
+    for (std::uint64_t k = std::min(done, steps); k-- > 0;)
+      if (log_->step_kind(k) == kind && log_->step_start(k + 1) < cursor_->position()) {
+        seek(log_->step_start(k + 1));
+        return true;
+      }
+  }
+  return false;
+}
+
+void Session::toggle_play() {
+  if (!log_) return;
+  // Play at the end starts again from the beginning, as a video player does.
+  if (!playback_.playing && cursor_->position() == log_->event_count()) seek(0);
+  playback_.playing = !playback_.playing;
+  playback_.owed = 0.0;
+}
+
+void Session::advance(double seconds) {
+  if (!log_ || !playback_.playing) return;
+  playback_.owed += playback_.speed * seconds;
+  const double whole = std::floor(playback_.owed);
+  playback_.owed -= whole;
+  const auto units = static_cast<std::uint64_t>(whole);
+  if (units == 0) return;
+  if (playback_.unit == Unit::event) {
+    seek(cursor_->position() + units);
+  } else if (playback_.unit == Unit::step) {
+    seek_step(cursor_->completed_steps() + units);
+  } else {
+    for (std::uint64_t i = 0; i < units; ++i) move(Unit::phase, +1);
+  }
+  if (cursor_->position() == log_->event_count()) playback_.playing = false;
+}
+
+void Session::scale_speed(double factor) {
+  playback_.speed = std::clamp(playback_.speed * factor, Playback::kMinSpeed, Playback::kMaxSpeed);
+}
+
+void Session::set_bookmark(int slot) {
+  if (log_ && slot >= 1 && slot <= 9) bookmarks_[static_cast<std::size_t>(slot)] = cursor_->position();
+}
+
+bool Session::go_to_bookmark(int slot) {
+  const auto at = bookmark(slot);
+  if (!at) return false;
+  seek(*at);
+  return true;
+}
+
+std::optional<std::uint64_t> Session::bookmark(int slot) const {
+  if (slot < 1 || slot > 9) return std::nullopt;
+  return bookmarks_[static_cast<std::size_t>(slot)];
+}
+
+void Session::set_color_by(scene::ColorBy color_by) {
+  if (options_.color_by == color_by) return;
+  options_.color_by = color_by;
+  scene_stale_ = true;
+}
+
+void Session::set_theme(scene::Theme theme) {
+  if (options_.theme == theme) return;
+  options_.theme = theme;
+  scene_stale_ = true;
+}
+
+void Session::set_layer(scene::Layer layer, bool on) {
+  options_.layers.set(layer, on);
+  scene_.visible = options_.layers;  // a layer switched needs no new scene
+}
+
+const scene::Scene& Session::scene() {
+  if (!scene_stale_) return scene_;
+  if (log_) {
+    if (options_.color_by == scene::ColorBy::age) {
+      ages_.update(*cursor_);
+      scene_ = scene::build_scene(*cursor_, options_, &ages_);
+    } else {
+      scene_ = scene::build_scene(*cursor_, options_);
+    }
+  } else if (mesh_) {
+    scene_ = scene::build_scene(*mesh_, options_);
+  } else if (input_) {
+    scene_ = scene::build_scene(*input_, options_);
+  }
+  scene_stale_ = false;
+  ++scene_builds_;
+  return scene_;
+}
+
+const scene::Explanation& Session::explanation() {
+  if (!explanation_stale_) return explanation_;
+  if (log_) {
+    explanation_ = scene::explain_step(*cursor_);
+  } else {
+    explanation_ = {title_, {mesh_ ? "a mesh: " + std::to_string(mesh_->triangles.size()) + " triangles"
+                                   : "an input: " + std::to_string(input_ ? input_->points.size() : 0) + " vertices"}};
+  }
+  explanation_stale_ = false;
+  return explanation_;
+}
+
+}  // namespace meshstep::viewer

@@ -1,0 +1,113 @@
+// What the viewer shows and where it stands: a recorded run (a replay log and its cursor), or
+// a still mesh or input; playback, bookmarks and the drawing options. No GL and no ImGui:
+// the UI reads and drives it, and the tests drive it directly.
+//
+// The canvas always shows the exact mesh at the cursor: scene() is rebuilt from the replay
+// cursor whenever the position or the options change, never approximated.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "meshstep/pslg/pslg.hpp"
+#include "meshstep/replay/log_reader.hpp"
+#include "meshstep/replay/replay.hpp"
+#include "meshstep/scene/build.hpp"
+#include "meshstep/scene/explain.hpp"
+
+namespace meshstep::viewer {
+
+// What one move or one played tick advances by.
+enum class Unit { event, step, phase };
+const char* name(Unit unit);
+
+struct Playback {
+  static constexpr double kMinSpeed = 0.25, kMaxSpeed = 1000.0;
+  bool playing = false;
+  double speed = 4.0;  // units per second
+  Unit unit = Unit::step;
+  double owed = 0.0;   // the part of a unit played but not yet moved
+};
+
+// Where the run is, in the numbers people read: steps count from 1 as the caption does.
+struct CursorInfo {
+  std::uint64_t position = 0, event_count = 0;
+  std::uint64_t step = 0, step_count = 0;  // steps completed at the cursor
+  std::optional<replay::Phase> phase;      // the innermost phase the cursor is in
+};
+
+class Session {
+ public:
+  // A recorded run; throws InputError for a file that is not a valid log.
+  static std::unique_ptr<Session> open_log(const std::string& path);
+  // A mesh or an input, to look at (no timeline).
+  static std::unique_ptr<Session> still(TriMesh mesh, std::string title);
+  static std::unique_ptr<Session> still(Pslg input, std::string title);
+  ~Session();
+
+  const std::string& title() const { return title_; }
+  const replay::LogReader* log() const { return log_.get(); }
+  bool has_timeline() const { return log_ != nullptr; }
+  CursorInfo cursor_info() const;
+  const replay::Replay* cursor() const { return cursor_.get(); }
+
+  // Moving. All clamp to the run and mark the scene stale when the position changes.
+  void seek(std::uint64_t position);
+  void seek_step(std::uint64_t steps);  // the mesh after `steps` steps
+  void move(Unit unit, int direction);  // by one unit, forward (+1) or backward (-1)
+  void to_start() { seek(0); }
+  void to_end();
+  // To the end of the next (previous) step of this kind; false when there is none.
+  bool find_step(replay::StepKind kind, int direction);
+
+  Playback& playback() { return playback_; }
+  const Playback& playback() const { return playback_; }
+  void toggle_play();
+  // Plays `seconds` of time: moves by speed x seconds units (whole ones; the rest is owed
+  // to the next call). Stops at the end.
+  void advance(double seconds);
+  // Doubles (factor 2) or halves the speed, within the limits.
+  void scale_speed(double factor);
+
+  // Bookmarks 1-9: a position each.
+  void set_bookmark(int slot);
+  bool go_to_bookmark(int slot);
+  std::optional<std::uint64_t> bookmark(int slot) const;
+
+  const scene::SceneOptions& options() const { return options_; }
+  void set_color_by(scene::ColorBy color_by);
+  void set_theme(scene::Theme theme);
+  void set_layer(scene::Layer layer, bool on);
+  bool layer(scene::Layer layer) const { return options_.layers.has(layer); }
+
+  // The picture at the cursor (rebuilt if stale), and the words for it.
+  const scene::Scene& scene();
+  const scene::Explanation& explanation();
+  // Times the scene was built: stays put while nothing changes (an idle viewer).
+  std::size_t scene_builds() const { return scene_builds_; }
+
+ private:
+  Session() = default;
+  void moved();
+
+  std::string title_;
+  std::unique_ptr<replay::LogReader> log_;
+  std::unique_ptr<replay::Replay> cursor_;
+  std::optional<TriMesh> mesh_;
+  std::optional<Pslg> input_;
+
+  Playback playback_;
+  std::array<std::optional<std::uint64_t>, 10> bookmarks_{};
+  scene::SceneOptions options_;
+  scene::FaceAges ages_;
+
+  scene::Scene scene_;
+  scene::Explanation explanation_;
+  bool scene_stale_ = true, explanation_stale_ = true;
+  std::size_t scene_builds_ = 0;
+};
+
+}  // namespace meshstep::viewer

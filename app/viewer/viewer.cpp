@@ -1,0 +1,303 @@
+#include "viewer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "imgui_gl.hpp"
+#include "keys.hpp"
+#include "meshstep/refine/quality.hpp"
+#include "meshstep/scene/layout.hpp"
+#include "timeline.hpp"
+
+namespace meshstep::viewer {
+
+namespace {
+
+constexpr float kSidePanelWidth = 380.0f;
+constexpr float kTimelineHeight = 122.0f;
+constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                         ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                         ImGuiWindowFlags_NoBringToFrontOnFocus;
+
+void place(float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+}
+
+// The box every vertex of the run lies in: a camera fitted to it holds still while the
+// mesh grows, as an exported animation does.
+BBox run_box(Session& session) {
+  BBox box;
+  if (const replay::LogReader* log = session.log()) {
+    for (const replay::VertexInfo& v : log->vertices())
+      if (v.event != kNone) box.add(v.point);
+    if (!box.empty()) return box;
+  }
+  return session.scene().bounds;
+}
+
+}  // namespace
+
+Viewer::Viewer(std::unique_ptr<Session> session) : session_(std::move(session)) {}
+Viewer::~Viewer() = default;
+
+void Viewer::cycle_color_by(int direction) {
+  const int n = static_cast<int>(scene::ColorBy::count_);
+  const int now = static_cast<int>(session_->options().color_by);
+  session_->set_color_by(static_cast<scene::ColorBy>(((now + direction) % n + n) % n));
+}
+
+void Viewer::toggle_layer(scene::Layer layer) { session_->set_layer(layer, !session_->layer(layer)); }
+
+void Viewer::fit_camera(int width, int height) {
+  const scene::Scene& s = session_->scene();
+  camera_ = scene::Camera::fit(run_box(*session_), width, height, scene::layout(s, width, height).margins);
+  fit_pending_ = false;
+}
+
+// Keeps the faces the current step changed in view: pans when they leave the middle 80% of
+// the canvas, and zooms out when they do not fit.
+void Viewer::follow_step() {
+  const scene::Scene& s = session_->scene();
+  BBox box;
+  for (const std::uint32_t t : s.highlighted)
+    if (t < s.mesh.triangles.size())
+      for (const std::uint32_t v : s.mesh.triangles[t])
+        if (v < s.mesh.points.size()) box.add(s.mesh.points[v]);
+  if (box.empty()) return;
+  const BBox view = camera_.visible();
+  const double mx = 0.1 * (view.hi.x - view.lo.x), my = 0.1 * (view.hi.y - view.lo.y);
+  const bool inside = box.lo.x >= view.lo.x + mx && box.hi.x <= view.hi.x - mx && box.lo.y >= view.lo.y + my &&
+                      box.hi.y <= view.hi.y - my;
+  if (inside) return;
+  const double need = std::max((box.hi.x - box.lo.x) / (0.8 * (view.hi.x - view.lo.x)),
+                               (box.hi.y - box.lo.y) / (0.8 * (view.hi.y - view.lo.y)));
+  const double scale = need > 1.0 ? camera_.pixels_per_unit() / need : camera_.pixels_per_unit();
+  camera_ = scene::Camera({0.5 * (box.lo.x + box.hi.x), 0.5 * (box.lo.y + box.hi.y)}, scale, camera_.width(),
+                          camera_.height());
+}
+
+void Viewer::handle_keys() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantCaptureKeyboard) return;
+  for (const KeyAction& action : key_actions()) {
+    if (!ImGui::IsKeyPressed(action.chord.key, true)) continue;
+    if (action.chord.shift != io.KeyShift || action.chord.ctrl != io.KeyCtrl) continue;
+    action.run(*this);
+  }
+}
+
+void Viewer::frame(int width, int height, double seconds) {
+  handle_keys();
+  session_->advance(seconds);
+
+  const float side = std::min(kSidePanelWidth, 0.4f * static_cast<float>(width));
+  const float timeline = session_->has_timeline() ? kTimelineHeight : 0.0f;
+  const float canvas_w = std::max(1.0f, static_cast<float>(width) - side);
+  const float canvas_h = std::max(1.0f, static_cast<float>(height) - timeline);
+  draw_canvas(0, 0, canvas_w, canvas_h);
+  draw_side_panel(canvas_w, 0, side, static_cast<float>(height));
+  if (session_->has_timeline()) draw_timeline(0, canvas_h, canvas_w, timeline);
+  if (help_open) draw_help();
+}
+
+void Viewer::draw_canvas(float x, float y, float w, float h) {
+  place(x, y, w, h);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+  ImGui::Begin("canvas", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
+                                      ImGuiWindowFlags_NoScrollWithMouse);
+  const int width = static_cast<int>(w), height = static_cast<int>(h);
+  canvas_rect_ = ImVec4(x, y, w, h);
+  if (fit_pending_ || camera_.width() != width || camera_.height() != height) {
+    if (fit_pending_ || camera_.width() <= 1) fit_camera(width, height);
+    else camera_.resize(width, height);
+  }
+  if (follow && session_->playback().playing) follow_step();
+
+  const scene::Scene& s = session_->scene();
+  const Drawn now{session_->scene_builds(), s.visible.bits(), camera_.center().x, camera_.center().y,
+                  camera_.pixels_per_unit(), width, height};
+  if (!(now == drawn_)) {
+    renderer_.render(s, camera_);
+    drawn_ = now;
+    ++canvas_renders_;
+  }
+  ImGui::Image(texture_id(renderer_.texture()), ImVec2(w, h));
+
+  // Pan by dragging, zoom at the pointer with the wheel.
+  const ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::IsItemHovered()) {
+    const ImVec2 mouse = io.MousePos;
+    if (io.MouseWheel != 0.0f)
+      camera_.zoom_at({mouse.x - x, mouse.y - y}, std::pow(1.2, static_cast<double>(io.MouseWheel)));
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
+      camera_.pan(io.MouseDelta.x, io.MouseDelta.y);
+  }
+  ImGui::End();
+  ImGui::PopStyleVar(2);
+}
+
+const Stats& Viewer::stats() {
+  const scene::Scene& s = session_->scene();
+  if (stats_of_build_ == session_->scene_builds()) return stats_;
+  stats_ = Stats{};
+  std::vector<bool> used(s.mesh.points.size(), false);
+  stats_.min_angle = 180.0;
+  for (const auto& t : s.mesh.triangles) {
+    if (t[0] >= used.size() || t[1] >= used.size() || t[2] >= used.size()) continue;
+    const auto q = quality::shape(s.mesh.points[t[0]], s.mesh.points[t[1]], s.mesh.points[t[2]]);
+    const double smallest = q.min_angle_deg();
+    stats_.min_angle = std::min(stats_.min_angle, smallest);
+    stats_.max_angle = std::max(stats_.max_angle, q.max_angle_deg());
+    const auto bin = static_cast<std::size_t>(std::clamp(smallest / 60.0 * 18.0, 0.0, 17.0));
+    stats_.histogram[bin] += 1.0f;
+    for (const std::uint32_t v : t) used[v] = true;
+  }
+  stats_.triangles = s.mesh.triangles.size();
+  // A log numbers the input's vertices first (its input_vertices parameter counts them);
+  // a mesh file lists them first too (input_vertex_count is not known here: all count).
+  const replay::LogReader* log = session_->log();
+  const std::uint64_t inputs =
+      log ? std::strtoull(log->parameter("input_vertices", "0").c_str(), nullptr, 10) : used.size();
+  for (std::size_t v = 0; v < used.size(); ++v) {
+    if (!used[v]) continue;
+    ++stats_.vertices;
+    if (log && v < log->vertices().size()) stats_.steiner += log->vertices()[v].input_index >= inputs;
+  }
+  if (stats_.triangles == 0) stats_.min_angle = 0.0;
+  stats_of_build_ = session_->scene_builds();
+  return stats_;
+}
+
+void Viewer::draw_side_panel(float x, float y, float w, float h) {
+  place(x, y, w, h);
+  ImGui::Begin("meshstep", nullptr, kPanelFlags);
+  ImGui::TextWrapped("%s", session_->title().c_str());
+  ImGui::Separator();
+
+  if (ImGui::CollapsingHeader("Why this step?", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const scene::Explanation& e = session_->explanation();
+    ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", e.heading.c_str());
+    for (const std::string& line : e.lines) ImGui::TextWrapped("%s", line.c_str());
+  }
+
+  if (ImGui::CollapsingHeader("Layers and colours", ImGuiTreeNodeFlags_DefaultOpen)) {
+    int color = static_cast<int>(session_->options().color_by);
+    static const char* const kColorNames[] = {"none", "smallest angle", "quality (vs bound)", "area", "region", "age"};
+    if (ImGui::Combo("colour by (C)", &color, kColorNames, IM_ARRAYSIZE(kColorNames)))
+      session_->set_color_by(static_cast<scene::ColorBy>(color));
+    bool dark = session_->options().theme == scene::Theme::dark;
+    if (ImGui::Checkbox("dark theme (T)", &dark)) session_->set_theme(dark ? scene::Theme::dark : scene::Theme::light);
+    ImGui::SameLine();
+    ImGui::Checkbox("follow (L)", &follow);
+    for (std::size_t i = 0; i < scene::kLayerCount; ++i) {
+      const auto layer = static_cast<scene::Layer>(i);
+      bool on = session_->layer(layer);
+      if (i % 3 != 0) ImGui::SameLine(static_cast<float>(i % 3) * (w - 16.0f) / 3.0f + 8.0f);
+      if (ImGui::Checkbox(scene::name(layer), &on)) session_->set_layer(layer, on);
+    }
+  }
+
+  if (ImGui::CollapsingHeader("Statistics at the cursor", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const Stats& st = stats();
+    ImGui::Text("%zu vertices (%zu Steiner), %zu triangles", st.vertices, st.steiner, st.triangles);
+    ImGui::Text("angles from %.2f%s to %.2f%s", st.min_angle, "\u00B0", st.max_angle, "\u00B0");
+    ImGui::PlotHistogram("##angles", st.histogram.data(), static_cast<int>(st.histogram.size()), 0,
+                         "smallest angle per triangle, 0-60\u00B0", 0.0f, FLT_MAX, ImVec2(w - 24.0f, 70.0f));
+  }
+  ImGui::End();
+}
+
+void Viewer::draw_transport() {
+  Session& s = *session_;
+  const CursorInfo c = s.cursor_info();
+  if (ImGui::Button("|<")) s.to_start();
+  ImGui::SameLine();
+  if (ImGui::Button("<<")) s.move(Unit::phase, -1);
+  ImGui::SameLine();
+  if (ImGui::Button("<")) s.move(Unit::step, -1);
+  ImGui::SameLine();
+  if (ImGui::Button(s.playback().playing ? "pause" : "play", ImVec2(56, 0))) s.toggle_play();
+  ImGui::SameLine();
+  if (ImGui::Button(">")) s.move(Unit::step, +1);
+  ImGui::SameLine();
+  if (ImGui::Button(">>")) s.move(Unit::phase, +1);
+  ImGui::SameLine();
+  if (ImGui::Button(">|")) s.to_end();
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(150);
+  float speed = static_cast<float>(s.playback().speed);
+  if (ImGui::SliderFloat("##speed", &speed, static_cast<float>(Playback::kMinSpeed),
+                         static_cast<float>(Playback::kMaxSpeed), "%.2f /s", ImGuiSliderFlags_Logarithmic))
+    s.playback().speed = speed;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90);
+  int unit = static_cast<int>(s.playback().unit);
+  static const char* const kUnits[] = {"events", "steps", "phases"};
+  if (ImGui::Combo("##unit", &unit, kUnits, 3)) s.playback().unit = static_cast<Unit>(unit);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(80);
+  if (ImGui::InputTextWithHint("##goto", "go to step", goto_text_, sizeof goto_text_,
+                               ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsDecimal)) {
+    s.seek_step(std::strtoull(goto_text_, nullptr, 10));
+    goto_text_[0] = '\0';
+  }
+  ImGui::SameLine();
+  ImGui::Text("step %llu/%llu \u00B7 event %llu/%llu", static_cast<unsigned long long>(c.step),
+              static_cast<unsigned long long>(c.step_count), static_cast<unsigned long long>(c.position),
+              static_cast<unsigned long long>(c.event_count));
+}
+
+void Viewer::draw_timeline(float x, float y, float w, float h) {
+  place(x, y, w, h);
+  ImGui::Begin("timeline", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
+  draw_transport();
+  draw_timeline_bar(ImGui::GetContentRegionAvail().y - 4.0f);
+  ImGui::End();
+}
+
+void Viewer::draw_timeline_bar(float height) {
+  const replay::LogReader& log = *session_->log();
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const float width = ImGui::GetContentRegionAvail().x;
+  if (width < 8.0f || height < 8.0f) return;
+  ImGui::InvisibleButton("##timeline", ImVec2(width, height));
+  const std::uint64_t events = std::max<std::uint64_t>(1, log.event_count());
+  if (ImGui::IsItemActive()) {
+    const double t = std::clamp((ImGui::GetIO().MousePos.x - origin.x) / width, 0.0f, 1.0f);
+    session_->seek(static_cast<std::uint64_t>(std::llround(t * static_cast<double>(events))));
+  }
+  draw_timeline_picture(*ImGui::GetWindowDrawList(), log, timeline_cache_, *session_, origin, ImVec2(width, height));
+}
+
+void Viewer::draw_help() {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowBgAlpha(0.94f);
+  ImGui::Begin("Keys (? or F1 to close)", &help_open,
+               ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+  // Two pairs of columns (key, what it does), filled row by row.
+  if (ImGui::BeginTable("keys", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+    for (const KeyAction& a : key_actions()) {
+      if (!a.what) continue;  // one line stands for a family (bookmarks 1-9)
+      ImGui::TableNextColumn();
+      const bool digit = a.chord.key >= '1' && a.chord.key <= '9';
+      ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", digit ? (a.chord.ctrl ? "Ctrl+1..9" : "1..9") : a.keys);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(a.what);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::TextUnformatted("Drag the canvas to pan, turn the wheel to zoom at the pointer; drag the timeline to scrub.");
+  ImGui::End();
+}
+
+scene::Image Viewer::canvas_picture() {
+  renderer_.render(session_->scene(), camera_);
+  drawn_ = Drawn{};
+  return renderer_.read_pixels();
+}
+
+}  // namespace meshstep::viewer

@@ -1,0 +1,87 @@
+// The viewer's frame: the canvas (the renderer's picture of the scene at the cursor), the
+// timeline, the explain panel, layers and colours, statistics, and the `?` overlay of keys,
+// all immediate-mode Dear ImGui. It needs a current GL context and ImGui context; who made
+// them (a GLFW window, or EGL/OSMesa off screen for scripts) is the host's business.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+
+#include "meshstep/scene/camera.hpp"
+#include "render/renderer.hpp"
+#include "session.hpp"
+#include "timeline.hpp"
+
+namespace meshstep::viewer {
+
+struct Stats {
+  std::size_t vertices = 0, triangles = 0, steiner = 0;
+  double min_angle = 0.0, max_angle = 0.0;
+  std::array<float, 18> histogram{};  // smallest angles, 0-60 degrees in 18 bins
+};
+
+class Viewer {
+ public:
+  explicit Viewer(std::unique_ptr<Session> session);
+  ~Viewer();
+
+  // One frame of UI for a window of width x height pixels; `seconds` since the last one.
+  // Call between ImGui::NewFrame and ImGui::Render.
+  void frame(int width, int height, double seconds);
+
+  Session& session() { return *session_; }
+  scene::Camera& camera() { return camera_; }
+  const Stats& stats();
+
+  // UI state that keys and scripts change.
+  bool help_open = false;
+  bool follow = false;
+  bool quit_requested = false;
+  void request_fit() { fit_pending_ = true; }
+  void cycle_color_by(int direction);
+  void toggle_layer(scene::Layer layer);
+
+  // The canvas's rectangle in the window (pixels), as the last frame laid it out.
+  ImVec4 canvas_rect() const { return canvas_rect_; }
+  // Renders the canvas alone (no UI) into an image, as `meshstep render` would.
+  scene::Image canvas_picture();
+  std::size_t canvas_renders() const { return canvas_renders_; }
+
+ private:
+  void handle_keys();
+  void draw_canvas(float x, float y, float w, float h);
+  void draw_side_panel(float x, float y, float w, float h);
+  void draw_timeline(float x, float y, float w, float h);
+  void draw_transport();
+  void draw_timeline_bar(float height);
+  void draw_help();
+  void fit_camera(int width, int height);
+  void follow_step();
+
+  std::unique_ptr<Session> session_;
+  render::Renderer renderer_;
+  scene::Camera camera_;
+  bool fit_pending_ = true;
+  ImVec4 canvas_rect_{0, 0, 0, 0};
+
+  // What the canvas texture shows, to draw it again only when something changed.
+  struct Drawn {
+    std::size_t scene_builds = SIZE_MAX;
+    std::uint32_t layers = 0;
+    double cx = 0, cy = 0, scale = 0;
+    int width = 0, height = 0;
+    friend bool operator==(const Drawn&, const Drawn&) = default;
+  } drawn_;
+  std::size_t canvas_renders_ = 0;
+
+  Stats stats_;
+  std::size_t stats_of_build_ = SIZE_MAX;
+  char goto_text_[32] = "";
+  TimelineCache timeline_cache_;
+};
+
+}  // namespace meshstep::viewer
