@@ -88,7 +88,8 @@ struct Named {
 constexpr Named kNamedKeys[] = {
     {"space", GLFW_KEY_SPACE},   {"right", GLFW_KEY_RIGHT},       {"left", GLFW_KEY_LEFT},
     {"up", GLFW_KEY_UP},         {"down", GLFW_KEY_DOWN},         {"pagedown", GLFW_KEY_PAGE_DOWN},
-    {"pageup", GLFW_KEY_PAGE_UP}, {"home", GLFW_KEY_HOME},        {"end", GLFW_KEY_END},
+    {"pageup", GLFW_KEY_PAGE_UP}, {"home", GLFW_KEY_HOME},        {"page down", GLFW_KEY_PAGE_DOWN},
+    {"page up", GLFW_KEY_PAGE_UP},        {"end", GLFW_KEY_END},
     {"escape", GLFW_KEY_ESCAPE}, {"esc", GLFW_KEY_ESCAPE},        {"enter", GLFW_KEY_ENTER},
     {"tab", GLFW_KEY_TAB},       {"+", GLFW_KEY_EQUAL},           {"=", GLFW_KEY_EQUAL},
     {"-", GLFW_KEY_MINUS},       {"/", GLFW_KEY_SLASH},           {"backspace", GLFW_KEY_BACKSPACE},

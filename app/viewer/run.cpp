@@ -33,7 +33,7 @@ class ScriptPlayer {
  public:
   ScriptPlayer(const std::vector<ScriptAction>& actions, const std::string& path) : actions_(actions), path_(path) {}
 
-  bool done() const { return next_ >= actions_.size() && frames_left_ == 0 && pending_.empty(); }
+  bool done() const { return next_ >= actions_.size() && frames_left_ == 0 && pending_.empty() && !pause_now_; }
   bool quit() const { return quit_; }
 
   // Before ImGui::NewFrame: sets this frame's input. Returns true when the frame must be
@@ -41,6 +41,11 @@ class ScriptPlayer {
   bool before_frame(Viewer& viewer) {
     ImGuiIO& io = ImGui::GetIO();
     release(io);
+    // `play N` pauses after its N-th frame has played, not before.
+    if (pause_now_) {
+      viewer.session().playback().playing = false;
+      pause_now_ = false;
+    }
     while (frames_left_ == 0 && pending_.empty() && next_ < actions_.size() && !quit_) {
       if (run(actions_[next_++], viewer, io)) break;
     }
@@ -51,7 +56,7 @@ class ScriptPlayer {
     } else if (frames_left_ > 0) {
       --frames_left_;
       if (frames_left_ == 0 && stop_playing_) {
-        viewer.session().playback().playing = false;
+        pause_now_ = true;
         stop_playing_ = false;
       }
     }
@@ -197,7 +202,7 @@ class ScriptPlayer {
   std::string path_;
   std::size_t next_ = 0;
   std::uint64_t frames_left_ = 0;
-  bool stop_playing_ = false;
+  bool stop_playing_ = false, pause_now_ = false;
   bool quit_ = false;
   std::vector<Input> pending_;
   const ScriptAction* capture_ = nullptr;

@@ -136,8 +136,10 @@ void Session::toggle_play() {
 void Session::advance(double seconds) {
   if (!log_ || !playback_.playing) return;
   playback_.owed += playback_.speed * seconds;
-  const double whole = std::floor(playback_.owed);
-  playback_.owed -= whole;
+  // 30 frames of 1/30 s at 30 steps a second are 30 steps, not 29.999...: a hair of
+  // rounding does not hold a step back.
+  const double whole = std::floor(playback_.owed + 1e-9);
+  playback_.owed = std::max(0.0, playback_.owed - whole);
   const auto units = static_cast<std::uint64_t>(whole);
   if (units == 0) return;
   if (playback_.unit == Unit::event) {

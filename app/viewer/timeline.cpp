@@ -83,8 +83,19 @@ void draw_timeline_picture(ImDrawList& draw, const replay::LogReader& log, Timel
                              IM_COL32(255, 255, 255, 255));
       draw.AddText(ImVec2(x + 5.0f, top), IM_COL32(255, 255, 255, 255), label);
     }
-  const float cx = x_of(session.cursor_info().position);
+  const CursorInfo c = session.cursor_info();
+  const float cx = x_of(c.position);
   draw.AddLine(ImVec2(cx, top), ImVec2(cx, bottom), IM_COL32(255, 60, 60, 255), 2.0f);
+
+  // Where the cursor is, in numbers, at the bar's right end over the bands.
+  char where[96];
+  std::snprintf(where, sizeof where, "step %llu/%llu \u00B7 event %llu/%llu", static_cast<unsigned long long>(c.step),
+                static_cast<unsigned long long>(c.step_count), static_cast<unsigned long long>(c.position),
+                static_cast<unsigned long long>(c.event_count));
+  const ImVec2 text = ImGui::CalcTextSize(where);
+  const ImVec2 at(origin.x + size.x - text.x - 6.0f, top + 2.0f);
+  draw.AddRectFilled(ImVec2(at.x - 4.0f, top), ImVec2(origin.x + size.x, top + text.y + 4.0f), IM_COL32(20, 20, 24, 220));
+  draw.AddText(at, IM_COL32(255, 255, 255, 255), where);
 }
 
 }  // namespace meshstep::viewer

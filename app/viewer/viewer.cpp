@@ -174,7 +174,10 @@ const Stats& Viewer::stats() {
 void Viewer::draw_side_panel(float x, float y, float w, float h) {
   place(x, y, w, h);
   ImGui::Begin("meshstep", nullptr, kPanelFlags);
-  ImGui::TextWrapped("%s", session_->title().c_str());
+  // The file's name: its folder is in the window's title.
+  const std::string& title = session_->title();
+  const std::size_t slash = title.rfind('/');
+  ImGui::TextWrapped("%s", title.c_str() + (slash == std::string::npos ? 0 : slash + 1));
   ImGui::Separator();
 
   if (ImGui::CollapsingHeader("Why this step?", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -244,10 +247,7 @@ void Viewer::draw_transport() {
     s.seek_step(std::strtoull(goto_text_, nullptr, 10));
     goto_text_[0] = '\0';
   }
-  ImGui::SameLine();
-  ImGui::Text("step %llu/%llu \u00B7 event %llu/%llu", static_cast<unsigned long long>(c.step),
-              static_cast<unsigned long long>(c.step_count), static_cast<unsigned long long>(c.position),
-              static_cast<unsigned long long>(c.event_count));
+  (void)c;  // the bar itself says where the cursor is (timeline.cpp)
 }
 
 void Viewer::draw_timeline(float x, float y, float w, float h) {

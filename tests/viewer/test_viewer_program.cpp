@@ -1,0 +1,206 @@
+// The viewer program driven by scripts: off screen on EGL and on OSMesa, and in a real
+// window under xvfb-run. Each run's state is checked exactly against the log, and its
+// window screenshot against tests/golden/viewer_lesson.png (the renderer's tolerance: 5
+// per channel on at most 0.1% of the pixels). Update the golden on purpose with
+// MESHSTEP_UPDATE_GOLDENS=1 build/tests/viewer/meshstep_viewer_tests, then look at it.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "golden_runs.hpp"
+#include "meshstep/scene/image.hpp"
+
+namespace meshstep::viewer {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kOffcenter = "--algorithm offcenter --min-angle 30";
+
+struct Result {
+  int status = -1;
+  std::string output;
+};
+
+Result run(const std::string& command) {
+  Result r;
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return r;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) r.output.append(buf, n);
+  const int status = ::pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The number after "KEY": in the state file (one field per line).
+long long field(const std::string& json, const std::string& key) {
+  const std::string tag = "\"" + key + "\": ";
+  const auto at = json.find(tag);
+  if (at == std::string::npos) return -1;
+  return std::atoll(json.c_str() + at + tag.size());
+}
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+class ViewerProgram : public ::testing::TestWithParam<std::string> {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("viewer_program_" + std::to_string(::getpid()) + "_" + GetParam());
+    fs::create_directories(dir_);
+    log_ = golden::lesson_run(kOffcenter);
+    ASSERT_NE(log_, nullptr);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+
+  // Runs the viewer on the lesson's log with this script, in the mode of the parameter:
+  // "egl" and "osmesa" off screen, "window" under xvfb-run. Skips when the mode is not
+  // available here, saying why.
+  Result view(const std::string& script, const std::string& extra = "") {
+    const fs::path file = dir_ / "script.txt";
+    std::ofstream(file) << script;
+    std::string command = std::string(MESHSTEP_VIEW_BINARY) + " " + log_->path() + " --size 1024x640 -q --script " +
+                          file.string() + " " + extra;
+    if (GetParam() == "window") {
+      if (run("command -v xvfb-run").status != 0) return {77, "xvfb-run is not installed (Debian package xvfb)"};
+      command = "xvfb-run -a -s '-screen 0 1280x800x24' " + command;
+    } else {
+      command += " --offscreen --gl " + GetParam();
+    }
+    Result r = run(command);
+    if (r.status != 0 && has(r.output, "cannot open a window or draw")) return {77, r.output};
+    return r;
+  }
+
+  fs::path dir_;
+  const replay::LogReader* log_ = nullptr;
+};
+
+#define VIEW_OR_SKIP(result, script, ...)                     \
+  const Result result = view(script, ##__VA_ARGS__);          \
+  if (result.status == 77) GTEST_SKIP() << result.output;     \
+  ASSERT_EQ(result.status, 0) << result.output
+
+TEST_P(ViewerProgram, KeysMoveTheCursorAndChangeWhatIsShown) {
+  const std::string a = (dir_ / "a.json").string(), b = (dir_ / "b.json").string();
+  VIEW_OR_SKIP(r,
+               "seek step 45\nframes 2\nstate " + a +
+                   "\nkey Right\nkey Shift+Left\nkey C\nkey F3\nkey Ctrl+2\nkey Home\nkey 2\nkey ?\nstate " + b +
+                   "\nquit\n");
+  const std::string before = read_text(a), after = read_text(b);
+  EXPECT_EQ(field(before, "position"), static_cast<long long>(log_->step_start(45)));
+  EXPECT_EQ(field(before, "step"), 45);
+  EXPECT_TRUE(has(before, "\"explain_heading\": \"step 45 of ")) << before;
+  EXPECT_TRUE(has(before, "\"caption\": \"refine \u00B7 step 45 of ")) << before;
+  // Right: to the end of step 46; Shift+Left: one event back, inside it.
+  const long long inside = static_cast<long long>(log_->step_start(46)) - 1;
+  EXPECT_EQ(field(after, "bookmarks\": {\"2"), inside) << after;  // Ctrl+2 set there
+  EXPECT_EQ(field(after, "position"), inside) << "Home, then 2 went back to the bookmark";
+  EXPECT_TRUE(has(after, "\"color_by\": \"angle\"")) << after;
+  EXPECT_FALSE(has(after, "\"edges\"")) << "F3 switches the edges off: " << after;
+  EXPECT_TRUE(has(after, "\"help_open\": true")) << after;
+}
+
+TEST_P(ViewerProgram, PlaysAtTheScriptsFixedFrameTime) {
+  const std::string a = (dir_ / "a.json").string();
+  VIEW_OR_SKIP(r, "seek step 10\nspeed 30\nplay 30\nstate " + a + "\nquit\n");
+  const std::string s = read_text(a);
+  EXPECT_EQ(field(s, "step"), 40) << "30 frames of 1/30 s at 30 steps per second";
+  EXPECT_TRUE(has(s, "\"playing\": false")) << s;
+}
+
+TEST_P(ViewerProgram, DragPansWheelZoomsAndTheTimelineScrubs) {
+  const std::string a = (dir_ / "a.json").string(), b = (dir_ / "b.json").string(),
+                    c = (dir_ / "c.json").string();
+  // The canvas is the window's left part above the timeline; the bar is the bottom strip.
+  VIEW_OR_SKIP(r, "frames 2\nstate " + a + "\nmouse 300 250\ndrag 120 0\nwheel 3\nframes 1\nstate " + b +
+                      "\nmouse 322 625\nclick\nframes 1\nstate " + c + "\nquit\n");
+  const std::string before = read_text(a), after = read_text(b), scrubbed = read_text(c);
+  const auto number = [](const std::string& json, const char* key) {
+    const auto at = json.find(std::string("\"") + key + "\": ");
+    return at == std::string::npos ? NAN : std::atof(json.c_str() + at + std::strlen(key) + 4);
+  };
+  EXPECT_GT(number(after, "pixels_per_unit"), 1.5 * number(before, "pixels_per_unit")) << after;
+  EXPECT_NE(number(after, "x"), number(before, "x")) << after;
+  // A click half way along the bar seeks to about the middle of the run.
+  const double fraction = static_cast<double>(field(scrubbed, "position")) / static_cast<double>(log_->event_count());
+  EXPECT_GT(fraction, 0.3) << scrubbed;
+  EXPECT_LT(fraction, 0.7) << scrubbed;
+}
+
+TEST_P(ViewerProgram, WindowScreenshotMatchesItsGolden) {
+  const fs::path shot = dir_ / "shot.png";
+  VIEW_OR_SKIP(r, "seek step 45\nframes 3\nscreenshot " + shot.string() + "\nquit\n");
+  const scene::Image actual = scene::read_png(shot.string());
+  ASSERT_EQ(actual.width, 1024);
+  ASSERT_EQ(actual.height, 640);
+  const fs::path golden = fs::path(MESHSTEP_GOLDEN_DIR) / "viewer_lesson.png";
+  if (std::getenv("MESHSTEP_UPDATE_GOLDENS") && GetParam() == "egl") {
+    scene::write_png(golden.string(), actual, 9);
+    GTEST_SKIP() << "updated " << golden;
+  }
+  ASSERT_TRUE(fs::exists(golden)) << golden << " is missing: run with MESHSTEP_UPDATE_GOLDENS=1 and look at it";
+  const scene::ImageDiff diff = scene::compare_images(scene::read_png(golden.string()), actual, 5);
+  const std::size_t allowed = static_cast<std::size_t>(actual.width) * static_cast<std::size_t>(actual.height) / 1000;
+  if (!diff.same_size || diff.differing_pixels > allowed) {
+    fs::create_directories(MESHSTEP_GOLDEN_OUT);
+    const std::string stem = std::string(MESHSTEP_GOLDEN_OUT) + "/viewer_lesson." + GetParam();
+    scene::write_png(stem + ".actual.png", actual);
+    if (diff.same_size) scene::write_png(stem + ".diff.png", diff.picture);
+    ADD_FAILURE() << diff.differing_pixels << " pixels differ by more than 5 (allowed " << allowed << "); see " << stem
+                  << ".actual.png and .diff.png";
+  }
+  // A different moment is a different picture: the comparison can fail.
+  const fs::path other = dir_ / "other.png";
+  VIEW_OR_SKIP(r2, "seek step 20\nframes 3\nscreenshot " + other.string() + "\nquit\n");
+  EXPECT_GT(scene::compare_images(actual, scene::read_png(other.string()), 5).differing_pixels, allowed);
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, ViewerProgram, ::testing::Values("egl", "osmesa", "window"),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+TEST(ViewerCli, BadScriptsAndInputsSayWhereAndExitNonZero) {
+  const fs::path script = fs::temp_directory_path() / ("viewer_bad_" + std::to_string(::getpid()) + ".txt");
+  std::ofstream(script) << "seek step 4\nbogus 3\n";
+  const replay::LogReader* log = golden::lesson_run(kOffcenter);
+  ASSERT_NE(log, nullptr);
+  Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + log->path() + " --offscreen --script " + script.string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(has(r.output, script.string() + ":2: unknown action 'bogus'")) << r.output;
+  fs::remove(script);
+
+  r = run(std::string(MESHSTEP_VIEW_BINARY) + " /nonexistent/run.mslog --offscreen");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(has(r.output, "/nonexistent/run.mslog")) << r.output;
+
+  r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + log->path() + " --offscreen --size 10x10");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(has(r.output, "--size 10x10")) << r.output;
+
+  // `meshstep view` is the viewer: its help lists the keys.
+  r = run(std::string(MESHSTEP_BINARY) + " view --help");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(has(r.output, "Keys: Space play/pause")) << r.output;
+}
+
+}  // namespace
+}  // namespace meshstep::viewer
