@@ -11,6 +11,7 @@
 #include "event_codec.hpp"
 #include "format.hpp"
 #include "meshstep/error.hpp"
+#include "meshstep/huge_pages.hpp"
 
 namespace meshstep::replay {
 namespace {
@@ -31,15 +32,10 @@ struct LogReader::Cache {
 
 LogReader::~LogReader() = default;
 
-LogReader::LogReader(const std::string& path) : path_(path), cache_(std::make_unique<Cache>()) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw InputError(path, 0, std::string("cannot read: ") + std::strerror(errno));
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw InputError(path, 0, "cannot read: not a regular file");
-  file_.resize(static_cast<std::size_t>(size));
-  in.seekg(0);
-  if (!in.read(reinterpret_cast<char*>(file_.data()), size))
-    throw InputError(path, 0, "cannot read the whole file");
+LogReader::LogReader(const std::string& path, std::uint64_t keep_writes_bytes)
+    : path_(path), cache_(std::make_unique<Cache>()) {
+  file_ = io::MappedFile(path);
+  keep_writes_ = file_.size() <= keep_writes_bytes;
   read_header();
   scan_blocks();
 }
@@ -182,10 +178,16 @@ void LogReader::index_events(std::size_t block, const DecodedEvents& events) {
     const std::uint64_t e = event_count_ + i;
     const EventHead& h = events.heads[i];
     ++counts_[static_cast<std::size_t>(h.type)];
-    const auto w = events.writes_of(i);
-    writes_.insert(writes_.end(), w.begin(), w.end());
-    write_end_.push_back(writes_.size());
+    if (keep_writes_) {
+      const auto w = events.writes_of(i);
+      reserve_huge(writes_, writes_.size() + w.size());
+      reserve_huge(write_end_, write_end_.size() + 1);
+      writes_.insert(writes_.end(), w.begin(), w.end());
+      write_end_.push_back(writes_.size());
+    }
     if (h.type == EventType::step_begin) {
+      reserve_huge(step_starts_, step_starts_.size() + 1);
+      reserve_huge(step_kinds_, step_kinds_.size() + 1);
       step_starts_.push_back(e);
       step_kinds_.push_back(static_cast<StepKind>(h.code));
     }
@@ -201,7 +203,10 @@ void LogReader::index_events(std::size_t block, const DecodedEvents& events) {
     if (h.type == EventType::vertex || h.type == EventType::duplicate) {
       const VertexId v = h.ids[0];
       if (v >= kInfiniteVertex) throw InputError(path_, 0, where(block) + ": event " + std::to_string(e) + " introduces an invalid vertex id");
-      if (v >= vertices_.size()) vertices_.resize(std::size_t{v} + 1, VertexInfo{{0, 0}, kNone, kNone, kNone, UINT64_MAX});
+      if (v >= vertices_.size()) {
+        reserve_huge(vertices_, std::size_t{v} + 1);
+        vertices_.resize(std::size_t{v} + 1, VertexInfo{{0, 0}, kNone, kNone, kNone, UINT64_MAX});
+      }
       VertexInfo& info = vertices_[v];
       info.point = h.point;
       info.event = e;
@@ -271,6 +276,13 @@ const DecodedEvents& LogReader::block_events(std::size_t block) const {
   while (!decoder.done()) decoder.event(events);  // checked when the file was opened
   cached.emplace_front(block, std::move(events));
   return cached.front().second;
+}
+
+std::span<const SlotWrite> LogReader::writes_from_blocks(std::uint64_t e) const {
+  std::size_t b = last_block_;
+  if (b >= blocks_.size() || e < blocks_[b].first_event || e >= blocks_[b].first_event + blocks_[b].event_count)
+    b = last_block_ = block_of_event(e);
+  return block_events(b).writes_of(e - blocks_[b].first_event);
 }
 
 Event LogReader::event(std::uint64_t e) const {

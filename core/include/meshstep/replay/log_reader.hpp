@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "meshstep/io/mapped_file.hpp"
 #include "meshstep/replay/decoded_events.hpp"
 #include "meshstep/replay/event.hpp"
 #include "meshstep/replay/log_writer.hpp"
@@ -52,7 +53,8 @@ struct VertexInfo {
 class LogReader {
  public:
   // Throws InputError ("PATH: ...") when the file cannot be read or is not a valid log.
-  explicit LogReader(const std::string& path);
+  // keep_writes_bytes: the largest file whose writes all stay decoded (see writes()).
+  explicit LogReader(const std::string& path, std::uint64_t keep_writes_bytes = kKeepWritesBytes);
   ~LogReader();
 
   const std::string& path() const { return path_; }
@@ -86,12 +88,18 @@ class LogReader {
   const DecodedEvents& block_events(std::size_t block) const;
   // Event e; its spans stay valid until the next call of block_events or event.
   Event event(std::uint64_t e) const;
-  // The face writes of event e. All of them stay decoded in memory (about 36 bytes per
-  // write), so that moving through the log costs a memory copy per write.
+  // The face writes of event e. A log of up to kKeepWritesBytes keeps all its writes
+  // decoded in memory from the start (36 bytes a write: moving through it costs a memory
+  // copy per write). A bigger log decodes them from its blocks when asked (the recently
+  // used blocks stay decoded), valid until the next call of writes, block_events or event:
+  // kept decoded, a million-point triangulation's log took 1.1 GB and 7 s to open; read
+  // from its blocks, 0.3 GB and 1.2 s, for seeks about 9 times slower.
   std::span<const SlotWrite> writes(std::uint64_t e) const {
+    if (write_end_.empty()) return writes_from_blocks(e);
     const std::uint64_t begin = e ? write_end_[e - 1] : 0;
     return {writes_.data() + begin, write_end_[e] - begin};
   }
+  static constexpr std::uint64_t kKeepWritesBytes = std::uint64_t{48} << 20;
   // The face records of keyframe j (decoded once, then cached).
   const std::vector<FaceRecord>& keyframe(std::size_t j) const;
 
@@ -110,7 +118,7 @@ class LogReader {
   void read_end_block(const std::uint8_t* payload, std::size_t stored, std::size_t raw);
 
   std::string path_;
-  std::vector<std::uint8_t> file_;
+  io::MappedFile file_;
   LogHeader header_;
   std::uint32_t format_version_ = 0;
   std::size_t blocks_start_ = 0;
@@ -125,8 +133,12 @@ class LogReader {
   std::vector<BlockInfo> blocks_;
   std::vector<KeyframeInfo> keyframes_;
   std::vector<VertexInfo> vertices_;
-  std::vector<SlotWrite> writes_;
+  std::span<const SlotWrite> writes_from_blocks(std::uint64_t e) const;
+
+  bool keep_writes_ = true;
+  std::vector<SlotWrite> writes_;         // all of them, for a log of up to kKeepWritesBytes
   std::vector<std::uint64_t> write_end_;  // per event: end of its writes in writes_
+  mutable std::size_t last_block_ = 0;    // the block writes_from_blocks found last
 
   struct Cache;
   std::unique_ptr<Cache> cache_;
