@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -13,6 +14,7 @@
 #include "meshstep/error.hpp"
 #include "render/gl_context.hpp"
 #include "run.hpp"
+#include "settings.hpp"
 
 extern char** environ;
 
@@ -28,6 +30,7 @@ struct Args {
   std::int64_t step = -1, event = -1;
   std::string script, size = "1280x800", gl = "auto";
   bool offscreen = false, quiet = false;
+  std::string frame_log;
   // Refinement of an input, as `meshstep refine` takes them.
   std::string algorithm, min_angle, max_angle, max_area, max_aspect;
 };
@@ -94,6 +97,7 @@ bool parse_size(const std::string& text, int& w, int& h) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const auto started = std::chrono::steady_clock::now();
   CLI::App app(
       "meshstep view: scrub a recorded run forward and backward and see why every point went where it did.\n"
       "INPUT is a replay log (written with --record), a mesh PREFIX, or a .poly/.node input (triangulated,\n"
@@ -113,6 +117,8 @@ int main(int argc, char** argv) {
   app.add_option("--max-area", a.max_area, "Refine an input: every triangle's area at most A");
   app.add_option("--max-aspect", a.max_aspect, "Refine an input: aspect ratio at most R");
   app.add_flag("-q,--quiet", a.quiet, "Print only errors");
+  app.add_option("--frame-log", a.frame_log,
+                 "Write each frame's time and allocations to this file (for benchmarks)");
   app.footer(
       "Keys: Space play/pause, Left/Right a step, Shift+Left/Right an event, Page Up/Down a phase,\n"
       "Home/End, +/- speed, F fit, L follow, C colouring, F2-F11 layers, 1-9 bookmarks (Ctrl+1-9 set),\n"
@@ -128,6 +134,7 @@ int main(int argc, char** argv) {
   }
 
   viewer::RunOptions options;
+  options.started = started;
   if (!parse_size(a.size, options.width, options.height)) {
     std::fprintf(stderr, "meshstep view: --size %s: expected WxH, from 320x240 to 8192x8192\n", a.size.c_str());
     return kExitUsage;
@@ -135,6 +142,21 @@ int main(int argc, char** argv) {
   options.offscreen = a.offscreen;
   options.gl = a.gl;
   options.quiet = a.quiet;
+  options.frame_log = a.frame_log;
+  // A person's viewer starts where they left it; a script's starts from the defaults, so
+  // that it sees the same thing on every machine.
+  viewer::Settings settings;
+  const std::string settings_file = a.script.empty() ? viewer::settings_path() : "";
+  if (!settings_file.empty()) {
+    std::vector<std::string> warnings;
+    settings = viewer::load_settings(settings_file, warnings);
+    for (const std::string& w : warnings) std::fprintf(stderr, "meshstep view: warning: %s\n", w.c_str());
+    if (!app.count("--size")) {
+      options.width = settings.window_width;
+      options.height = settings.window_height;
+    }
+    options.settings = &settings;
+  }
   std::string temporary_log;
   try {
     if (!a.script.empty()) {
@@ -146,6 +168,15 @@ int main(int argc, char** argv) {
     if (a.event >= 0) session->seek(static_cast<std::uint64_t>(a.event));
     const int status = viewer::run_viewer(std::move(session), options);
     if (!temporary_log.empty()) fs::remove(temporary_log);
+    if (!settings_file.empty()) {
+      std::error_code ec;
+      settings.add_recent(fs::absolute(a.input, ec).string());
+      try {
+        viewer::save_settings(settings, settings_file);
+      } catch (const InputError& e) {
+        std::fprintf(stderr, "meshstep view: warning: settings not kept: %s\n", e.what());
+      }
+    }
     return status;
   } catch (const InputError& e) {
     if (!temporary_log.empty()) fs::remove(temporary_log);

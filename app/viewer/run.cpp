@@ -5,9 +5,15 @@
 
 #include <algorithm>
 #include <chrono>
+#include <pthread.h>
+#include <signal.h>
+
+#include <atomic>
+#include <thread>
 #include <cstdio>
 #include <cstdlib>
 
+#include "allocations.hpp"
 #include "host.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/atomic_file.hpp"
@@ -21,6 +27,26 @@ namespace meshstep::viewer {
 namespace {
 
 constexpr double kScriptFrameSeconds = 1.0 / 30.0;
+
+// Ctrl+C in the terminal (or a SIGTERM) closes the viewer as its window's close button does:
+// the settings are kept. The signals are taken by a thread of their own (sigwait), not a
+// handler: a handler interrupts Xlib's wait for events, which Xlib takes for a lost
+// connection and ends the program.
+std::atomic<bool> g_interrupted{false};
+
+void watch_for_interrupts(bool window) {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &set, nullptr);  // before any other thread starts: they inherit it
+  std::thread([set, window] {
+    int signal = 0;
+    sigwait(&set, &signal);
+    g_interrupted = true;
+    if (window) glfwPostEmptyEvent();  // wakes the main loop's wait
+  }).detach();
+}
 
 bool ends_with(const std::string& s, const char* tail) {
   const std::string t(tail);
@@ -213,7 +239,9 @@ class ScriptPlayer {
 }  // namespace
 
 int run_viewer(std::unique_ptr<Session> session, const RunOptions& options) {
+  watch_for_interrupts(!options.offscreen);
   IMGUI_CHECKVERSION();
+  count_imgui_allocations();
   ImGui::CreateContext();
   struct ContextGuard {
     ~ContextGuard() { ImGui::DestroyContext(); }
@@ -225,19 +253,27 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options) {
                                    : make_window_host(options.width, options.height, "meshstep view: " + session->title());
   if (!options.quiet) std::fprintf(stderr, "meshstep view: %s\n", host->describe().c_str());
   Viewer viewer(std::move(session));
+  if (options.settings) viewer.apply(*options.settings);
   ScriptPlayer script(options.script, options.script_path);
   const bool scripted = !options.script.empty();
 
+  struct FrameRecord {
+    double end_ms, frame_ms;
+    std::uint64_t allocations, position;
+  };
+  std::vector<FrameRecord> frames;
+  frames.reserve(1 << 16);  // recording a frame must not allocate (it is one of the measured)
   scene::Image capture;
   using Clock = std::chrono::steady_clock;
   Clock::time_point last = Clock::now();
-  while (!viewer.quit_requested) {
+  while (!viewer.quit_requested && !g_interrupted) {
     // Scripts run on a fixed frame time, so that what they see does not depend on the
     // machine's speed; people get the wall clock.
     const Clock::time_point now = Clock::now();
     const double wall = std::chrono::duration<double>(now - last).count();
     const double seconds = scripted || !host->interactive() ? kScriptFrameSeconds : std::max(1e-4, wall);
     last = now;
+    const std::uint64_t allocations_before = allocations();
     if (!host->begin_frame(seconds)) break;
     const bool wants_capture = scripted && !script.done() && script.before_frame(viewer);
     if (script.quit()) break;
@@ -246,8 +282,30 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options) {
     ImGui::Render();
     host->end_frame(wants_capture ? &capture : nullptr);
     if (wants_capture) script.after_frame(capture);
+    if (!options.frame_log.empty() && frames.size() < frames.capacity()) {
+      const Clock::time_point end = Clock::now();
+      frames.push_back({std::chrono::duration<double, std::milli>(end - options.started).count(),
+                        std::chrono::duration<double, std::milli>(end - now).count(),
+                        allocations() - allocations_before, viewer.session().cursor_info().position});
+    }
     if (!host->interactive() && (!scripted || script.done())) break;
     if (host->interactive() && !scripted && !viewer.session().playback().playing) glfwWaitEventsTimeout(0.1);
+  }
+  if (options.settings) {
+    viewer.capture(*options.settings);
+    options.settings->window_width = host->width();
+    options.settings->window_height = host->height();
+  }
+  if (!options.frame_log.empty()) {
+    std::string text = "# frame end_ms frame_ms allocations position\n";
+    char line[128];
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      std::snprintf(line, sizeof line, "%zu %.3f %.3f %llu %llu\n", i, frames[i].end_ms, frames[i].frame_ms,
+                    static_cast<unsigned long long>(frames[i].allocations),
+                    static_cast<unsigned long long>(frames[i].position));
+      text += line;
+    }
+    io::write_file_atomically(options.frame_log, text);
   }
   return 0;
 }

@@ -2,12 +2,14 @@
 // of actions when one is given.
 #pragma once
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "script.hpp"
 #include "session.hpp"
+#include "settings.hpp"
 
 namespace meshstep::viewer {
 
@@ -18,6 +20,13 @@ struct RunOptions {
   std::vector<ScriptAction> script;
   std::string script_path;  // for messages
   bool quiet = false;
+  // Where to write one line per frame: its index, milliseconds from the program's start to
+  // the frame's end, the frame's own milliseconds, its allocations, the cursor's position
+  // (the responsiveness benchmark and the tests read it).
+  std::string frame_log;
+  // Options to start from and to keep (nullptr: the defaults, nothing kept: scripts).
+  Settings* settings = nullptr;
+  std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 };
 
 // Runs until the window closes, Ctrl+Q, or (off screen) the script ends. Returns the exit

@@ -1,7 +1,9 @@
 #include "state_json.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
+#include "pseudocode.hpp"
 #include "viewer.hpp"
 
 namespace meshstep::viewer {
@@ -66,6 +68,16 @@ std::string state_json(Viewer& v) {
   std::string lines = "[";
   for (const std::string& line : e.lines) lines += std::string(lines.size() > 1 ? ",\n    " : "\n    ") + quoted(line);
   field("explain", lines + "\n  ]");
+  if (const replay::LogReader* log = s.log()) {
+    const CodeAt code = pseudocode_at(*log, *s.cursor());
+    field("code_title", code.code ? quoted(code.code->title) : "null");
+    std::string current;
+    for (int i = code.line; code.code && i >= 0 && i < code.line + std::max(1, code.lines) &&
+                            i < static_cast<int>(code.code->lines.size());
+         ++i)
+      current += (current.empty() ? "" : " / ") + code.code->lines[static_cast<std::size_t>(i)];
+    field("code_line", code.line >= 0 ? quoted(current) : "null");
+  }
   const Stats& st = v.stats();
   field("stats", "{\"vertices\": " + std::to_string(st.vertices) + ", \"steiner\": " + std::to_string(st.steiner) +
                      ", \"triangles\": " + std::to_string(st.triangles) + ", \"min_angle\": " + number(st.min_angle) +

@@ -14,7 +14,6 @@ namespace meshstep::viewer {
 
 namespace {
 
-constexpr float kSidePanelWidth = 380.0f;
 constexpr float kTimelineHeight = 122.0f;
 constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                          ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
@@ -41,6 +40,35 @@ BBox run_box(Session& session) {
 
 Viewer::Viewer(std::unique_ptr<Session> session) : session_(std::move(session)) {}
 Viewer::~Viewer() = default;
+
+void Viewer::apply(const Settings& s) {
+  session_->set_color_by(s.color_by);
+  session_->set_theme(s.theme);
+  for (std::size_t i = 0; i < scene::kLayerCount; ++i)
+    session_->set_layer(static_cast<scene::Layer>(i), s.layers.has(static_cast<scene::Layer>(i)));
+  session_->playback().speed = std::clamp(s.speed, Playback::kMinSpeed, Playback::kMaxSpeed);
+  session_->playback().unit = s.unit;
+  follow = s.follow;
+  side_panel_width_ = s.side_panel_width;
+  explain_open_ = s.explain_open;
+  layers_open_ = s.layers_open;
+  stats_open_ = s.stats_open;
+  code_open_ = s.code_open;
+}
+
+void Viewer::capture(Settings& s) const {
+  s.color_by = session_->options().color_by;
+  s.theme = session_->options().theme;
+  s.layers = session_->options().layers;
+  s.speed = session_->playback().speed;
+  s.unit = session_->playback().unit;
+  s.follow = follow;
+  s.side_panel_width = side_panel_width_;
+  s.explain_open = explain_open_;
+  s.layers_open = layers_open_;
+  s.stats_open = stats_open_;
+  s.code_open = code_open_;
+}
 
 void Viewer::cycle_color_by(int direction) {
   const int n = static_cast<int>(scene::ColorBy::count_);
@@ -92,7 +120,7 @@ void Viewer::frame(int width, int height, double seconds) {
   handle_keys();
   session_->advance(seconds);
 
-  const float side = std::min(kSidePanelWidth, 0.4f * static_cast<float>(width));
+  const float side = std::min(side_panel_width_, 0.4f * static_cast<float>(width));
   const float timeline = session_->has_timeline() ? kTimelineHeight : 0.0f;
   const float canvas_w = std::max(1.0f, static_cast<float>(width) - side);
   const float canvas_h = std::max(1.0f, static_cast<float>(height) - timeline);
@@ -180,13 +208,17 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
   ImGui::TextWrapped("%s", title.c_str() + (slash == std::string::npos ? 0 : slash + 1));
   ImGui::Separator();
 
-  if (ImGui::CollapsingHeader("Why this step?", ImGuiTreeNodeFlags_DefaultOpen)) {
+  ImGui::SetNextItemOpen(explain_open_);
+  if ((explain_open_ = ImGui::CollapsingHeader("Why this step?"))) {
     const scene::Explanation& e = session_->explanation();
     ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", e.heading.c_str());
     for (const std::string& line : e.lines) ImGui::TextWrapped("%s", line.c_str());
   }
 
-  if (ImGui::CollapsingHeader("Layers and colours", ImGuiTreeNodeFlags_DefaultOpen)) {
+  draw_pseudocode();
+
+  ImGui::SetNextItemOpen(layers_open_);
+  if ((layers_open_ = ImGui::CollapsingHeader("Layers and colours"))) {
     int color = static_cast<int>(session_->options().color_by);
     static const char* const kColorNames[] = {"none", "smallest angle", "quality (vs bound)", "area", "region", "age"};
     if (ImGui::Combo("colour by (C)", &color, kColorNames, IM_ARRAYSIZE(kColorNames)))
@@ -203,7 +235,8 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
     }
   }
 
-  if (ImGui::CollapsingHeader("Statistics at the cursor", ImGuiTreeNodeFlags_DefaultOpen)) {
+  ImGui::SetNextItemOpen(stats_open_);
+  if ((stats_open_ = ImGui::CollapsingHeader("Statistics at the cursor"))) {
     const Stats& st = stats();
     ImGui::Text("%zu vertices (%zu Steiner), %zu triangles", st.vertices, st.steiner, st.triangles);
     ImGui::Text("angles from %.2f%s to %.2f%s", st.min_angle, "\u00B0", st.max_angle, "\u00B0");
@@ -211,6 +244,50 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
                          "smallest angle per triangle, 0-60\u00B0", 0.0f, FLT_MAX, ImVec2(w - 24.0f, 70.0f));
   }
   ImGui::End();
+}
+
+// The running algorithm's pseudo-code, the line of the cursor's event highlighted.
+void Viewer::draw_pseudocode() {
+  const replay::LogReader* log = session_->log();
+  if (!log) return;
+  ImGui::SetNextItemOpen(code_open_);
+  if (!(code_open_ = ImGui::CollapsingHeader("Pseudo-code"))) return;
+  const std::uint64_t at = session_->cursor_info().position;
+  if (at != code_position_) {
+    code_ = pseudocode_at(*log, *session_->cursor());
+    code_position_ = at;
+  }
+  if (!code_.code) return;
+  ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", code_.code->title.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.6f, 0.6f, 0.6f, 1.0f));
+  ImGui::TextWrapped("%s", code_.code->reference.c_str());
+  ImGui::PopStyleColor();
+  // Lines wrap at the panel's edge, their continuation indented under their text; the
+  // current lines get a band behind them, as a debugger marks the line it stopped at (drawn
+  // on a channel below the text, once the wrapped text's height is known).
+  ImDrawList& draw = *ImGui::GetWindowDrawList();
+  draw.ChannelsSplit(2);
+  const auto& lines = code_.code->lines;
+  const float right = ImGui::GetCursorPosX() + ImGui::GetContentRegionAvail().x;
+  for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
+    const std::string& line = lines[static_cast<std::size_t>(i)];
+    const std::size_t indent = line.find_first_not_of(' ');
+    const float shift = ImGui::CalcTextSize(" ").x * static_cast<float>(indent == std::string::npos ? 0 : indent);
+    draw.ChannelsSetCurrent(1);
+    ImGui::Indent(shift + 1.0f);
+    ImGui::PushTextWrapPos(right);
+    ImGui::TextUnformatted(line.c_str() + (indent == std::string::npos ? line.size() : indent));
+    ImGui::PopTextWrapPos();
+    ImGui::Unindent(shift + 1.0f);
+    const bool current = code_.line >= 0 && i >= code_.line && i < code_.line + std::max(1, code_.lines);
+    if (current) {
+      draw.ChannelsSetCurrent(0);
+      const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+      draw.AddRectFilled(ImVec2(ImGui::GetWindowPos().x + 4.0f, lo.y), ImVec2(ImGui::GetWindowPos().x + right, hi.y),
+                         IM_COL32(230, 159, 0, 110));
+    }
+  }
+  draw.ChannelsMerge();
 }
 
 void Viewer::draw_transport() {

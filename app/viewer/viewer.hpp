@@ -13,7 +13,9 @@
 
 #include "meshstep/scene/camera.hpp"
 #include "render/renderer.hpp"
+#include "pseudocode.hpp"
 #include "session.hpp"
+#include "settings.hpp"
 #include "timeline.hpp"
 
 namespace meshstep::viewer {
@@ -37,6 +39,10 @@ class Viewer {
   scene::Camera& camera() { return camera_; }
   const Stats& stats();
 
+  // The options a person set last time (settings.hpp), and back.
+  void apply(const Settings& settings);
+  void capture(Settings& settings) const;
+
   // UI state that keys and scripts change.
   bool help_open = false;
   bool follow = false;
@@ -57,6 +63,7 @@ class Viewer {
   void draw_side_panel(float x, float y, float w, float h);
   void draw_timeline(float x, float y, float w, float h);
   void draw_transport();
+  void draw_pseudocode();
   void draw_timeline_bar(float height);
   void draw_help();
   void fit_camera(int width, int height);
@@ -81,6 +88,11 @@ class Viewer {
   Stats stats_;
   std::size_t stats_of_build_ = SIZE_MAX;
   char goto_text_[32] = "";
+  float side_panel_width_ = 380.0f;
+  bool explain_open_ = true, layers_open_ = true, stats_open_ = true, code_open_ = true;
+  // The pseudo-code line of the cursor's event, found again only when the cursor moves.
+  CodeAt code_;
+  std::uint64_t code_position_ = UINT64_MAX;
   TimelineCache timeline_cache_;
 };
 

@@ -111,6 +111,11 @@ TEST_P(ViewerProgram, KeysMoveTheCursorAndChangeWhatIsShown) {
   EXPECT_EQ(field(before, "step"), 45);
   EXPECT_TRUE(has(before, "\"explain_heading\": \"step 45 of ")) << before;
   EXPECT_TRUE(has(before, "\"caption\": \"refine \u00B7 step 45 of ")) << before;
+  // The pseudo-code panel follows the run: an off-center refinement, and step 45 ends in
+  // the insertion's Lawson flips (in-circle tests), as its explanation says.
+  EXPECT_TRUE(has(before, "\"code_title\": \"Off-center refinement")) << before;
+  EXPECT_TRUE(has(before, "Lawson flips")) << before;
+  EXPECT_TRUE(has(before, "\"code_line\": \"") && has(before, "in-circle")) << before;
   // Right: to the end of step 46; Shift+Left: one event back, inside it.
   const long long inside = static_cast<long long>(log_->step_start(46)) - 1;
   EXPECT_EQ(field(after, "bookmarks\": {\"2"), inside) << after;  // Ctrl+2 set there
@@ -145,6 +150,31 @@ TEST_P(ViewerProgram, DragPansWheelZoomsAndTheTimelineScrubs) {
   const double fraction = static_cast<double>(field(scrubbed, "position")) / static_cast<double>(log_->event_count());
   EXPECT_GT(fraction, 0.3) << scrubbed;
   EXPECT_LT(fraction, 0.7) << scrubbed;
+}
+
+// An idle viewer's frames allocate nothing (C++ and ImGui allocations, counted by the
+// program's own operator new), and the frame that follows a change does.
+TEST_P(ViewerProgram, IdleFramesDoNotAllocate) {
+  const fs::path frames = dir_ / "frames.txt";
+  VIEW_OR_SKIP(r, "seek step 45\nframes 6\nkey C\nframes 20\nquit\n", "--frame-log " + frames.string());
+  std::ifstream in(frames);
+  std::string line;
+  std::vector<unsigned long long> allocations;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    unsigned long long index = 0, count = 0, position = 0;
+    double end_ms = 0, frame_ms = 0;
+    fields >> index >> end_ms >> frame_ms >> count >> position;
+    allocations.push_back(count);
+  }
+  ASSERT_GE(allocations.size(), 25u);
+  EXPECT_GT(allocations[0], 0u) << "the first frame builds everything";
+  // Frames 0 and 1 warm up (ImGui sizes its buffers over its first two frames); 2-5 idle;
+  // 6 presses C (a new colouring: a new scene); 7 releases it; then idle.
+  for (std::size_t i = 2; i < 6; ++i) EXPECT_EQ(allocations[i], 0u) << "idle frame " << i;
+  EXPECT_GT(allocations[6], 0u) << "the frame of the new colouring";
+  for (std::size_t i = 8; i < allocations.size(); ++i) EXPECT_EQ(allocations[i], 0u) << "idle frame " << i;
 }
 
 TEST_P(ViewerProgram, WindowScreenshotMatchesItsGolden) {

@@ -1,0 +1,587 @@
+#include "pseudocode.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <initializer_list>
+#include <optional>
+#include <utility>
+
+namespace meshstep::viewer {
+
+namespace {
+
+using replay::Event;
+using replay::EventType;
+using replay::FlipReason;
+using replay::Phase;
+using replay::StepKind;
+
+// The roles a line plays, named so that the texts and the event mapping below stay in step:
+// a program marks the lines of the roles it has, and an event asks for a role.
+enum class At : std::uint8_t {
+  start,            // the first line: the mesh the program starts from
+  each,             // the loop over the points, segments or vertices
+  locate,           // locate the triangle containing the point
+  duplicate,        // the point is a vertex already
+  insert,           // split the triangle (or the edge's two) at the point
+  cavity,           // Bowyer-Watson: remove the conflicting triangles, fan the hole
+  legalize,         // while an edge fails the in-circle test: flip it
+  present,          // segment recovery: the segment is an edge already
+  split_at,         // segment recovery: a vertex on the segment or a crossing segment
+  crossing_flip,    // segment recovery: flip an edge the segment crosses
+  constrain,        // segment recovery: mark the recovered segment
+  carve,            // remove holes, the outside and the ghost triangles
+  encroached,       // refinement: a subsegment encroached by a vertex
+  split,            // refinement: split it
+  bad,              // refinement: a bad (or too large) triangle
+  still_there,      // Lepp: the same triangle, still in the mesh
+  lepp,             // Lepp: the path to the terminal edge
+  select,           // the new point
+  rejected,         // the new point encroaches a subsegment
+  split_instead,    // which is split instead
+  bisect,           // Lepp bisection: split the terminal edge
+  removal_accept,   // vertex removal: the plan is accepted
+  removal_flip,     // vertex removal: flip a spoke away
+  removal_merge,    // vertex removal: the vertex of degree 3 goes
+  count_
+};
+
+struct Span {
+  int line = -1;
+  int count = 0;
+};
+
+struct Entry {
+  PseudoCode code;
+  std::array<Span, static_cast<std::size_t>(At::count_)> spans{};
+
+  Span span(At at) const { return spans[static_cast<std::size_t>(at)]; }
+};
+
+class Builder {
+ public:
+  Builder(std::string title, std::string reference) {
+    entry_.code.title = std::move(title);
+    entry_.code.reference = std::move(reference);
+  }
+  // Lines with no role.
+  Builder& add(std::initializer_list<const char*> lines) {
+    for (const char* l : lines) entry_.code.lines.emplace_back(l);
+    return *this;
+  }
+  // Lines that carry out `at` (highlighted together).
+  Builder& add(At at, std::initializer_list<const char*> lines) {
+    entry_.spans[static_cast<std::size_t>(at)] = {static_cast<int>(entry_.code.lines.size()),
+                                                  static_cast<int>(lines.size())};
+    return add(lines);
+  }
+  // One more role for the last line added.
+  Builder& also(At at) {
+    entry_.spans[static_cast<std::size_t>(at)] = {static_cast<int>(entry_.code.lines.size()) - 1, 1};
+    return *this;
+  }
+  Entry take() { return std::move(entry_); }
+
+ private:
+  Entry entry_;
+};
+
+// --- The texts ------------------------------------------------------------------------------
+
+constexpr const char* kFirstTriangle = "T ← a first triangle of three points, closed by ghost triangles";
+constexpr const char* kEachPoint = "for each other point p (in a spatially coherent order):";
+constexpr const char* kLocatePoint = "    locate the triangle containing p, walking from the last one";
+constexpr const char* kDuplicate = "    if p is a vertex already: skip it (a duplicate)";
+
+Entry lawson() {
+  return Builder("Delaunay insertion by flips (Lawson 1977)",
+                 "C. L. Lawson, \"Software for C¹ surface interpolation\", Mathematical Software III, "
+                 "Academic Press, 1977")
+      .add(At::start, {kFirstTriangle})
+      .add(At::each, {kEachPoint})
+      .add(At::locate, {kLocatePoint})
+      .add(At::duplicate, {kDuplicate})
+      .add(At::insert, {"    split that triangle in 3 (p on an edge: its two triangles in 4)"})
+      .add({"    suspect ← the edges opposite p"})
+      .add(At::legalize, {"    while a suspect edge fails the in-circle test: flip it"})
+      .add({"        the two edges beyond the flipped one become suspect"})
+      .take();
+}
+
+Entry bowyer_watson() {
+  return Builder("Delaunay insertion by cavities (Bowyer 1981, Watson 1981)",
+                 "A. Bowyer, \"Computing Dirichlet tessellations\"; D. F. Watson, \"Computing the "
+                 "n-dimensional Delaunay tessellation...\"; The Computer Journal 24(2), 1981")
+      .add(At::start, {kFirstTriangle})
+      .add(At::each, {kEachPoint})
+      .add(At::locate, {kLocatePoint})
+      .add(At::duplicate, {kDuplicate})
+      .add(At::cavity, {"    remove every triangle whose circumcircle contains p",
+                        "        (the cavity, grown from the located triangle edge by edge)",
+                        "    connect p to every edge of the cavity's boundary"})
+      .add({"    // the cavity is star-shaped from p: the new triangles are Delaunay"})
+      .take();
+}
+
+Entry segment_recovery() {
+  return Builder("Constrained Delaunay: segment recovery by flips (Sloan 1993)",
+                 "S. W. Sloan, \"A fast algorithm for generating constrained Delaunay triangulations\", "
+                 "Computers & Structures 47(3), 1993")
+      .add(At::each, {"for each segment ab of the input:"})
+      .also(At::start)
+      .add(At::present, {"    if ab is an edge already: mark it constrained, next segment"})
+      .add({"    walk from a to b, listing the edges that ab crosses"})
+      .add(At::split_at, {"    a vertex on ab, or a segment crossing it: split ab there"})
+      .add({"    while an edge e still crosses ab:"})
+      .add(At::crossing_flip, {"        if e's quadrilateral is convex: flip e (else come back to it)"})
+      .add({"        if the new edge crosses ab too: list it again"})
+      .add(At::constrain, {"    mark ab constrained"})
+      .add(At::legalize, {"    while a new edge fails the in-circle test: flip it (not a segment)"})
+      .add(At::carve, {"remove the triangles reachable from a hole, or from outside,",
+                       "    without crossing a segment, and the ghost triangles"})
+      .take();
+}
+
+constexpr const char* kCdt = "T ← constrained Delaunay triangulation of the input, holes carved";
+
+// The head of every Delaunay refinement program: the mesh, and Ruppert's first loop.
+void refinement_head(Builder& b) {
+  b.add(At::start, {kCdt})
+      .add(At::encroached, {"while a subsegment s is encroached (a vertex in its diametral circle):"})
+      .add(At::split, {"    split s at its midpoint (concentric shells round a segment's end)"});
+}
+
+// The tail: the new point (c, or p in a Lepp program's inner loop) rejected or inserted, by
+// flips or by a cavity.
+void refinement_tail(Builder& b, Insertion insertion, bool lepp) {
+  if (lepp) {
+    b.add(At::rejected, {"        if p encroaches a subsegment s, or a segment blocks the walk to p:"})
+        .add(At::split_instead, {"            split s instead (as above); t stays in the queue"})
+        .add(At::locate, {"        else: locate the triangle containing p, walking from e"});
+    if (insertion == Insertion::flips) {
+      b.add(At::insert, {"            split it in 3 (p on an edge: its two triangles in 4)"})
+          .add(At::legalize, {"        after each new vertex: while an edge fails the in-circle test: flip it"});
+    } else {
+      b.add(At::cavity, {"            remove every triangle whose circumcircle contains p",
+                         "            connect p to every edge of the cavity's boundary"})
+          .add(At::legalize, {"        after a segment split: while an edge fails the in-circle test: flip it"});
+    }
+    return;
+  }
+  b.add(At::rejected, {"    if c encroaches a subsegment s, or a segment blocks the walk to c:"})
+      .add(At::split_instead, {"        split s instead (as above); t stays in the queue"})
+      .add(At::locate, {"    else: locate the triangle containing c, walking from t"});
+  if (insertion == Insertion::flips) {
+    b.add(At::insert, {"        split it in 3 (c on an edge: its two triangles in 4)"})
+        .add(At::legalize, {"    after each new vertex: while an edge fails the in-circle test: flip it"});
+  } else {
+    b.add(At::cavity, {"        remove every triangle whose circumcircle contains c",
+                       "        connect c to every edge of the cavity's boundary"})
+        .add(At::legalize, {"    after a segment split: while an edge fails the in-circle test: flip it"});
+  }
+}
+
+constexpr const char* kBadLoop = "while a bad triangle t remains (a bound fails; the worst first):";
+constexpr const char* kRuppertRefs =
+    "J. Ruppert, \"A Delaunay refinement algorithm for quality 2-dimensional mesh generation\", "
+    "J. Algorithms 18(3), 1995; L. P. Chew, Cornell TR 89-983, 1989, and SoCG 1993; concentric shells: "
+    "J. R. Shewchuk, CGTA 22, 2002";
+
+Entry circumcenter(Insertion insertion) {
+  Builder b("Delaunay refinement with circumcenters (Ruppert 1995, Chew 1989/1993)", kRuppertRefs);
+  refinement_head(b);
+  b.add(At::bad, {kBadLoop}).add(At::select, {"    c ← circumcenter of t"});
+  refinement_tail(b, insertion, false);
+  return b.take();
+}
+
+Entry offcenter(Insertion insertion) {
+  Builder b("Off-center refinement (Üngör 2004/2009)",
+            "A. Üngör, \"Off-centers: a new type of Steiner points for computing size-optimal "
+            "quality-guaranteed Delaunay triangulations\", LATIN 2004; CGTA 42(2), 2009");
+  refinement_head(b);
+  b.add(At::bad, {kBadLoop})
+      .add(At::select, {"    c ← off-center of t: on the bisector of t's shortest edge pq,",
+                        "        the apex of the isosceles triangle on pq with the bound's angle",
+                        "    if t's circumcenter is nearer to pq: c ← the circumcenter"});
+  refinement_tail(b, insertion, false);
+  return b.take();
+}
+
+Entry longest_edge_midpoint(Insertion insertion) {
+  Builder b("Delaunay refinement with longest-edge midpoints",
+            "Ruppert's loop (J. Ruppert, J. Algorithms 18(3), 1995) inserting the midpoint of the bad "
+            "triangle's longest edge: for area and size bounds");
+  refinement_head(b);
+  b.add(At::bad, {kBadLoop}).add(At::select, {"    c ← midpoint of t's longest edge"});
+  refinement_tail(b, insertion, false);
+  return b.take();
+}
+
+constexpr const char* kLeppDelaunayRefs =
+    "M.-C. Rivara, \"New longest-edge algorithms for the refinement and/or improvement of "
+    "unstructured triangulations\", IJNME 40, 1997; M.-C. Rivara, N. Hitschfeld, B. Simpson, "
+    "\"Terminal-edge Delaunay (small-angle based) algorithm for the quality triangulation "
+    "problem\", Computer-Aided Design 33, 2001";
+
+void lepp_head(Builder& b, const char* loop, const char* stop) {
+  b.add(At::bad, {loop})
+      .add(At::still_there, {"    while t is still in the mesh:"})
+      .add(At::lepp, {"        follow Lepp(t): step across longest edges while they grow,", stop});
+}
+
+Entry lepp_delaunay(bool centroid, Insertion insertion) {
+  Builder b(centroid ? "Lepp-Delaunay, terminal-triangles centroid (Rivara 2010/2020)"
+                     : "Lepp-Delaunay, terminal-edge midpoint (Rivara 1997/2001)",
+            centroid ? "M.-C. Rivara, C. Calderon, \"Lepp terminal centroid method for quality triangulation\", "
+                       "Computer-Aided Design 42(1), 2010; M.-C. Rivara, P. Rodriguez-Moreno, \"Terminal "
+                       "triangles centroid algorithms for quality Delaunay triangulation\", CAD 125, 2020"
+                     : kLeppDelaunayRefs);
+  refinement_head(b);
+  lepp_head(b, kBadLoop, "            to the terminal edge e (longest of both its triangles, or a segment)");
+  if (centroid)
+    b.add(At::select, {"        p ← centroid of the two terminal triangles (a segment: e's midpoint)"});
+  else
+    b.add(At::select, {"        p ← midpoint of e"});
+  refinement_tail(b, insertion, true);
+  return b.take();
+}
+
+Entry lepp_bisection() {
+  Builder b("Lepp longest-edge bisection (Rivara 1997)",
+            "M.-C. Rivara, \"New longest-edge algorithms for the refinement and/or improvement of "
+            "unstructured triangulations\", IJNME 40(18), 1997");
+  b.add(At::start, {kCdt});
+  lepp_head(b, "while a triangle t is too large (it fails the area or the size bound):",
+            "            to the terminal edge e (longest of both its triangles, or boundary)");
+  b.add(At::bisect, {"        bisect the terminal edge e: join its midpoint to the opposite",
+                     "            vertex of each terminal triangle (two inside, one on the boundary)"})
+      .add({"// no flips: T stays conforming but not Delaunay; segments split like edges;",
+            "// no angle ever falls below half the smallest angle of the first T"});
+  return b.take();
+}
+
+Entry vertex_removal() {
+  return Builder("Improvement: removing Steiner vertices (Coll et al. 2008)",
+                 "N. Coll et al., improvement + refinement, 2008; Delaunay deletion: O. Devillers, \"On "
+                 "deletion in Delaunay triangulations\", IJCGA 12(3), 2002")
+      .add(At::each, {"for each free Steiner vertex v (not on a segment), worst star first:"})
+      .also(At::start)
+      .add({"    P ← the polygon of v's neighbours",
+            "    plan: fill P by clipping ears whose circumcircle holds no other vertex of P"})
+      .add(At::removal_accept, {"    if the plan raises the smallest angle round v and keeps every bound:"})
+      .add(At::removal_flip, {"        for each planned triangle but one: flip the spoke from v to its tip"})
+      .add(At::removal_merge, {"        v now has degree 3: remove it, its three triangles become one"})
+      .add({"        v's neighbours are candidates again"})
+      .take();
+}
+
+constexpr std::size_t kProgramCount = static_cast<std::size_t>(Program::count_);
+
+// Every text, built once: [program][insertion].
+const std::array<std::array<Entry, 2>, kProgramCount>& entries() {
+  static const std::array<std::array<Entry, 2>, kProgramCount> table = [] {
+    std::array<std::array<Entry, 2>, kProgramCount> t;
+    const auto both = [&](Program p, Entry flips, Entry cavity) {
+      t[static_cast<std::size_t>(p)] = {std::move(flips), std::move(cavity)};
+    };
+    const auto one = [&](Program p, const Entry& e) { both(p, e, e); };
+    one(Program::lawson, lawson());
+    one(Program::bowyer_watson, bowyer_watson());
+    one(Program::segment_recovery, segment_recovery());
+    both(Program::circumcenter, circumcenter(Insertion::flips), circumcenter(Insertion::cavity));
+    both(Program::offcenter, offcenter(Insertion::flips), offcenter(Insertion::cavity));
+    both(Program::longest_edge_midpoint, longest_edge_midpoint(Insertion::flips),
+         longest_edge_midpoint(Insertion::cavity));
+    both(Program::lepp_midpoint, lepp_delaunay(false, Insertion::flips), lepp_delaunay(false, Insertion::cavity));
+    both(Program::lepp_centroid, lepp_delaunay(true, Insertion::flips), lepp_delaunay(true, Insertion::cavity));
+    one(Program::lepp_bisection, lepp_bisection());
+    one(Program::vertex_removal, vertex_removal());
+    return t;
+  }();
+  return table;
+}
+
+bool has_variants(Program p) {
+  switch (p) {
+    case Program::circumcenter:
+    case Program::offcenter:
+    case Program::longest_edge_midpoint:
+    case Program::lepp_midpoint:
+    case Program::lepp_centroid: return true;
+    default: return false;
+  }
+}
+
+const Entry& entry(Program p, Insertion insertion) {
+  const std::size_t variant = has_variants(p) && insertion == Insertion::cavity ? 1 : 0;
+  return entries()[static_cast<std::size_t>(p)][variant];
+}
+
+// --- Which program ----------------------------------------------------------------------------
+
+Insertion triangulation_insertion(const replay::LogReader& log) {
+  return log.header().insertion == "cavity" ? Insertion::cavity : Insertion::flips;
+}
+
+Insertion refinement_insertion(const replay::LogReader& log) {
+  const std::string insertion = log.parameter("insertion", log.header().insertion);
+  return insertion == "cavity" ? Insertion::cavity : Insertion::flips;
+}
+
+// The refinement program: by the point selection the parameters name (an algorithm's own or
+// --select's), the bisection insertion first; by the algorithm's name when the parameters
+// do not say.
+Program refinement_program(const replay::LogReader& log) {
+  const std::string& algorithm = log.header().algorithm;
+  if (log.parameter("insertion") == "bisection" || algorithm == "lepp-bisection") return Program::lepp_bisection;
+  std::string selection = log.parameter("selection");
+  if (selection.empty()) {
+    if (algorithm == "offcenter") selection = "offcenter";
+    else if (algorithm == "lepp-midpoint") selection = "lepp-midpoint";
+    else if (algorithm == "lepp-centroid" || algorithm == "lepp-aspect" || algorithm == "combined")
+      selection = "lepp-centroid";
+    else if (algorithm == "midpoint-area") selection = "longest-edge-midpoint";
+  }
+  if (selection == "offcenter") return Program::offcenter;
+  if (selection == "lepp-midpoint") return Program::lepp_midpoint;
+  if (selection == "lepp-centroid") return Program::lepp_centroid;
+  if (selection == "longest-edge-midpoint") return Program::longest_edge_midpoint;
+  return Program::circumcenter;
+}
+
+// The phase span event e lies in: the last one begun at or before it.
+const replay::PhaseSpan* phase_of(const replay::LogReader& log, std::uint64_t e) {
+  const replay::PhaseSpan* found = nullptr;
+  for (const replay::PhaseSpan& span : log.phases()) {
+    if (span.begin > e) break;
+    found = &span;
+  }
+  return found;
+}
+
+struct Choice {
+  Program program;
+  Insertion insertion;
+};
+
+Choice program_for(const replay::LogReader& log, const replay::PhaseSpan* span) {
+  const Phase phase = span ? span->phase : Phase::insert_vertices;
+  switch (phase) {
+    case Phase::recover_segments:
+    case Phase::carve: return {Program::segment_recovery, Insertion::flips};
+    case Phase::refine: return {refinement_program(log), refinement_insertion(log)};
+    case Phase::improve: return {Program::vertex_removal, Insertion::flips};
+    default: {
+      const Insertion insertion = triangulation_insertion(log);
+      return {insertion == Insertion::cavity ? Program::bowyer_watson : Program::lawson, insertion};
+    }
+  }
+}
+
+// --- Which line -------------------------------------------------------------------------------
+
+constexpr std::optional<At> kNoLine = std::nullopt;
+
+bool is_flip(const Event& ev, FlipReason reason) {
+  return ev.type == EventType::flip && static_cast<FlipReason>(ev.code) == reason;
+}
+
+// The step event e belongs to, and its kind (none for the preamble).
+std::optional<StepKind> step_kind_of(const replay::LogReader& log, std::uint64_t e, std::uint64_t& step) {
+  step = log.step_of_event(e);
+  if (step >= log.step_count()) return std::nullopt;
+  return log.step_kind(step);
+}
+
+std::optional<At> insertion_line(const Event& ev, std::optional<StepKind> kind) {
+  switch (ev.type) {
+    case EventType::phase_begin:
+    case EventType::init: return At::start;
+    case EventType::step_begin: return kind == StepKind::start ? At::start : At::each;
+    case EventType::vertex: return kind == StepKind::start ? At::start : At::insert;
+    case EventType::locate: return At::locate;
+    case EventType::duplicate: return At::duplicate;
+    case EventType::split_face:
+    case EventType::split_edge: return At::insert;
+    case EventType::cavity: return At::cavity;
+    case EventType::flip: return is_flip(ev, FlipReason::delaunay) ? std::optional<At>(At::legalize) : kNoLine;
+    default: return kNoLine;
+  }
+}
+
+std::optional<At> recovery_line(const replay::LogReader& log, std::uint64_t e, const Event& ev) {
+  switch (ev.type) {
+    case EventType::phase_begin:
+      return static_cast<Phase>(ev.code) == Phase::carve ? At::carve : At::each;
+    case EventType::step_begin: return static_cast<StepKind>(ev.code) == StepKind::carve ? At::carve : At::each;
+    case EventType::remove_face: return At::carve;
+    case EventType::locate:
+    case EventType::vertex:
+    case EventType::split_face:
+    case EventType::split_edge: return At::split_at;
+    case EventType::flip:
+      if (is_flip(ev, FlipReason::segment_recovery)) return At::crossing_flip;
+      if (is_flip(ev, FlipReason::delaunay)) return At::legalize;
+      return kNoLine;
+    case EventType::constrain: {
+      if (ev.code == 0) return At::split_at;  // a crossed segment's mark cleared to split it
+      // What came before this run of marks: the flips that recovered the segment, a split
+      // (the halves keep the split segment's mark), or neither (the segment was an edge).
+      for (std::uint64_t q = e; q-- > 0;) {
+        const Event before = log.event(q);
+        if (before.type == EventType::constrain) continue;
+        if (is_flip(before, FlipReason::segment_recovery)) return At::constrain;
+        if (before.type == EventType::split_edge || before.type == EventType::vertex) return At::split_at;
+        return At::present;
+      }
+      return At::present;
+    }
+    default: return kNoLine;
+  }
+}
+
+// Of a split_segment step: did a vertex encroach (Ruppert's first loop), or a point that was
+// then rejected (the split instead)?
+bool split_by_vertex(const replay::LogReader& log, std::uint64_t step) {
+  const std::uint64_t first = log.step_start(step) + 1;
+  if (first >= log.step_start(step + 1)) return true;
+  const Event ev = log.event(first);
+  return ev.type != EventType::encroached || ev.ids[2] != kNone;
+}
+
+// Is the bad triangle of the test at event e the one the previous refinement step tested
+// (in the same phase): still in the mesh after that step?
+bool tested_before(const replay::LogReader& log, std::uint64_t e, const Event& test,
+                   const replay::PhaseSpan* span) {
+  constexpr std::uint64_t kStepsBack = 64;  // split steps between two of a triangle's turns: a few
+  const std::uint64_t step = log.step_of_event(e);
+  if (step >= log.step_count()) return false;
+  const std::array<std::uint32_t, 3> triangle{test.ids[0], test.ids[1], test.ids[2]};
+  for (std::uint64_t k = step; k-- > 0 && step - k <= kStepsBack;) {
+    const std::uint64_t begin = log.step_start(k);
+    if (span && begin < span->begin) return false;
+    const StepKind kind = log.step_kind(k);
+    if (kind != StepKind::refine && kind != StepKind::bisect) continue;
+    if (begin + 1 >= log.step_start(k + 1)) return false;
+    const Event previous = log.event(begin + 1);
+    if (previous.type != EventType::criterion_test) return false;
+    return std::array<std::uint32_t, 3>{previous.ids[0], previous.ids[1], previous.ids[2]} == triangle;
+  }
+  return false;
+}
+
+std::optional<At> refinement_line(const replay::LogReader& log, std::uint64_t e, const Event& ev,
+                                  const replay::PhaseSpan* span) {
+  std::uint64_t step = 0;
+  const std::optional<StepKind> kind = step_kind_of(log, e, step);
+  const bool in_split = kind == StepKind::split_segment;
+  const bool by_vertex = in_split && split_by_vertex(log, step);
+  switch (ev.type) {
+    case EventType::phase_begin: return At::start;
+    case EventType::step_begin:
+      switch (static_cast<StepKind>(ev.code)) {
+        case StepKind::split_segment: return split_by_vertex(log, step) ? At::encroached : At::rejected;
+        case StepKind::refine:
+        case StepKind::bisect:
+          // The decision is the triangle's test, the next event.
+          if (e + 1 < log.event_count()) {
+            const Event next = log.event(e + 1);
+            if (next.type == EventType::criterion_test)
+              return tested_before(log, e + 1, next, span) ? At::still_there : At::bad;
+          }
+          return At::bad;
+        default: return kNoLine;
+      }
+    case EventType::encroached: return ev.ids[2] != kNone ? At::encroached : At::rejected;
+    case EventType::criterion_test: return tested_before(log, e, ev, span) ? At::still_there : At::bad;
+    case EventType::point_selected: return At::select;
+    case EventType::lepp_path: return At::lepp;
+    case EventType::locate: return in_split ? kNoLine : std::optional<At>(At::locate);
+    case EventType::vertex:
+    case EventType::split_face:
+    case EventType::split_edge:
+    case EventType::cavity:
+    case EventType::constrain:
+      if (in_split) return by_vertex ? At::split : At::split_instead;
+      if (kind == StepKind::bisect) return At::bisect;
+      if (ev.type == EventType::constrain) return kNoLine;
+      return ev.type == EventType::cavity ? At::cavity : At::insert;
+    case EventType::flip: return is_flip(ev, FlipReason::delaunay) ? std::optional<At>(At::legalize) : kNoLine;
+    default: return kNoLine;  // vertex removals near a split (--delete-free) have no line here
+  }
+}
+
+std::optional<At> removal_line(const Event& ev) {
+  switch (ev.type) {
+    case EventType::phase_begin: return At::start;
+    case EventType::step_begin:
+      return static_cast<StepKind>(ev.code) == StepKind::remove_vertex ? std::optional<At>(At::removal_accept)
+                                                                        : kNoLine;
+    case EventType::flip:
+      return is_flip(ev, FlipReason::vertex_removal) ? std::optional<At>(At::removal_flip) : kNoLine;
+    case EventType::remove_vertex: return At::removal_merge;
+    default: return kNoLine;
+  }
+}
+
+}  // namespace
+
+const PseudoCode& pseudocode(Program program, Insertion insertion) {
+  if (program >= Program::count_) program = Program::lawson;
+  return entry(program, insertion).code;
+}
+
+std::vector<const PseudoCode*> all_pseudocode() {
+  std::vector<const PseudoCode*> out;
+  for (std::size_t p = 0; p < kProgramCount; ++p) {
+    out.push_back(&entries()[p][0].code);
+    if (has_variants(static_cast<Program>(p))) out.push_back(&entries()[p][1].code);
+  }
+  return out;
+}
+
+CodeAt pseudocode_at(const replay::LogReader& log, std::uint64_t position) {
+  position = std::min(position, log.event_count());
+  if (position == 0) {
+    const Choice choice = program_for(log, log.phases().empty() ? nullptr : &log.phases().front());
+    return {&pseudocode(choice.program, choice.insertion), -1, 0, choice.program};
+  }
+  const std::uint64_t e = position - 1;
+  const replay::PhaseSpan* span = phase_of(log, e);
+  const Choice choice = program_for(log, span);
+  const Entry& program = entry(choice.program, choice.insertion);
+  CodeAt at{&program.code, -1, 0, choice.program};
+
+  const Event ev = log.event(e);
+  std::optional<At> role;
+  switch (choice.program) {
+    case Program::lawson:
+    case Program::bowyer_watson: {
+      std::uint64_t step = 0;
+      role = insertion_line(ev, step_kind_of(log, e, step));
+      break;
+    }
+    case Program::segment_recovery: role = recovery_line(log, e, ev); break;
+    case Program::vertex_removal: role = removal_line(ev); break;
+    default: role = refinement_line(log, e, ev, span); break;
+  }
+  if (!role) return at;
+  Span s = program.span(*role);
+  // A point goes in by the program's own insertion, whichever event the log has for it.
+  if (s.line < 0 && *role == At::insert) s = program.span(At::cavity);
+  if (s.line < 0 && *role == At::cavity) s = program.span(At::insert);
+  // A triangle tested again, in a program with one loop over bad triangles.
+  if (s.line < 0 && *role == At::still_there) s = program.span(At::bad);
+  if (s.line < 0) return at;
+  at.line = s.line;
+  at.lines = s.count;
+  return at;
+}
+
+CodeAt pseudocode_at(const replay::LogReader& log, const replay::Replay& cursor) {
+  return pseudocode_at(log, cursor.position());
+}
+
+}  // namespace meshstep::viewer

@@ -1,0 +1,71 @@
+// The pseudo-code panel's model: the published algorithms a recorded run follows, as short
+// programs readable on a slide, and which line of which program the event under the cursor
+// carries out. No GL, no ImGui: the viewer draws it, the tests read it.
+//
+// Which program: by the phase of the event (inserting vertices: the insertion program, Lawson's
+// flips or Bowyer-Watson's cavities as the log's header says; recovering segments and carving:
+// segment recovery; refining: the refinement program that the log's parameters name, by its
+// point selection and insertion; improving: vertex removal). Which line: by the event's type
+// and reason, and, where one event type serves two lines, by the events round it in its step
+// (a segment split because a vertex encroaches it, or instead of a rejected point; a bad
+// triangle tested again while it is still in the mesh).
+//
+// The text keeps to the characters the viewer's font holds: Latin-1 and the arrows.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "meshstep/replay/log_reader.hpp"
+#include "meshstep/replay/replay.hpp"
+
+namespace meshstep::viewer {
+
+struct PseudoCode {
+  std::string title;               // "Off-center refinement (Üngör 2004/2009)"
+  std::string reference;           // the paper(s), one line
+  std::vector<std::string> lines;  // the pseudo-code, indented with spaces (4 a level)
+};
+
+enum class Program : std::uint8_t {
+  lawson,                 // Delaunay insertion by flips
+  bowyer_watson,          // Delaunay insertion by cavities
+  segment_recovery,       // constrained Delaunay: segments recovered by flips, then carving
+  circumcenter,           // Ruppert / Chew Delaunay refinement
+  offcenter,              // Üngör's off-centers
+  longest_edge_midpoint,  // Delaunay refinement inserting longest-edge midpoints
+  lepp_midpoint,          // Rivara's Lepp-Delaunay, terminal-edge midpoint
+  lepp_centroid,          // Lepp-Delaunay, terminal-triangles centroid
+  lepp_bisection,         // Rivara's Lepp longest-edge bisection
+  vertex_removal,         // improvement: removal of Steiner vertices
+  count_
+};
+
+// How a Delaunay refinement program puts its points in: its last lines say so. The other
+// programs have one text whatever this says.
+enum class Insertion : std::uint8_t { flips, cavity };
+
+const PseudoCode& pseudocode(Program program, Insertion insertion = Insertion::flips);
+// Every text there is (the refinement programs once per insertion), for a list or the tests.
+std::vector<const PseudoCode*> all_pseudocode();
+
+// What the panel shows at an event: the program, and the lines it highlights,
+// [line, line + lines); line -1 when no line fits (a phase's end, an event the program has
+// no line for).
+struct CodeAt {
+  const PseudoCode* code = nullptr;
+  int line = -1;
+  int lines = 0;
+  Program program = Program::lawson;
+};
+
+// At the event `position` - 1 of the log (the one a cursor at `position` applied last); at
+// position 0, the program of the run's first phase with no line. Reads a few events round it
+// (its step's first ones, the step before): spans of events the caller got from the log
+// before may go stale, as after any LogReader::event call.
+CodeAt pseudocode_at(const replay::LogReader& log, std::uint64_t position);
+// At the cursor's last event.
+CodeAt pseudocode_at(const replay::LogReader& log, const replay::Replay& cursor);
+
+}  // namespace meshstep::viewer
