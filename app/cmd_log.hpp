@@ -13,6 +13,7 @@ Command add_log_info_command(CLI::App& log);
 Command add_log_dump_command(CLI::App& log);
 Command add_log_mesh_command(CLI::App& log);
 Command add_log_verify_command(CLI::App& log);
+Command add_log_check_command(CLI::App& log);
 
 // Opening a log and reporting failure the same way everywhere.
 template <class F>
