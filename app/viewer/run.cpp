@@ -216,6 +216,11 @@ class ScriptPlayer {
       io::write_file_atomically(a.args[0], state_json(viewer));
       return false;
     }
+    if (v == "check") {
+      viewer.invariants().start(s.log() ? s.log()->path() : std::string());
+      viewer.invariants().wait();
+      return false;
+    }
     if (v == "quit") {
       quit_ = true;
       return true;

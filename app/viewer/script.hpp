@@ -16,6 +16,7 @@
 //   screenshot FILE     the window with its UI, as PNG
 //   canvas FILE         the canvas alone (the renderer's picture), PNG or SVG
 //   state FILE          the viewer's state as JSON (cursor, playback, options, panel text)
+//   check               check every step boundary (valid, Delaunay) and wait for it
 //   quit
 #pragma once
 

@@ -82,6 +82,9 @@ std::string state_json(Viewer& v) {
   field("stats", "{\"vertices\": " + std::to_string(st.vertices) + ", \"steiner\": " + std::to_string(st.steiner) +
                      ", \"triangles\": " + std::to_string(st.triangles) + ", \"min_angle\": " + number(st.min_angle) +
                      ", \"max_angle\": " + number(st.max_angle) + "}");
+  const auto& invariants = v.invariants().report();
+  field("invariants", invariants ? quoted(describe(*invariants))
+                                 : v.invariants().error().empty() ? "null" : quoted(v.invariants().error()));
   field("scene_builds", std::to_string(s.scene_builds()));
   out += "  \"canvas_renders\": " + std::to_string(v.canvas_renders()) + "\n}\n";
   return out;

@@ -217,6 +217,8 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
 
   draw_pseudocode();
 
+  draw_invariants();
+
   ImGui::SetNextItemOpen(layers_open_);
   if ((layers_open_ = ImGui::CollapsingHeader("Layers and colours"))) {
     int color = static_cast<int>(session_->options().color_by);
@@ -288,6 +290,32 @@ void Viewer::draw_pseudocode() {
     }
   }
   draw.ChannelsMerge();
+}
+
+// "Check every step": the mesh valid and Delaunay at every step boundary, in the background;
+// a break takes you to the step that made it.
+void Viewer::draw_invariants() {
+  const replay::LogReader* log = session_->log();
+  if (!log || !ImGui::CollapsingHeader("Invariants")) return;
+  if (invariants_.running()) {
+    ImGui::ProgressBar(static_cast<float>(std::min<double>(
+                           1.0, static_cast<double>(invariants_.checked()) /
+                                    static_cast<double>(std::max<std::uint64_t>(1, log->step_count() + 1)))),
+                       ImVec2(-1, 0), "checking...");
+    return;
+  }
+  if (ImGui::Button("Check every step: valid, Delaunay")) {
+    invariants_text_.clear();
+    invariants_.start(log->path());
+    return;
+  }
+  if (const auto& report = invariants_.report()) {
+    if (invariants_text_.empty()) invariants_text_ = describe(*report);
+    ImGui::TextWrapped("%s", invariants_text_.c_str());
+    if (!report->ok && ImGui::Button("Go to the step that breaks it")) session_->seek_step(report->boundary);
+  } else if (!invariants_.error().empty()) {
+    ImGui::TextWrapped("%s", invariants_.error().c_str());
+  }
 }
 
 void Viewer::draw_transport() {

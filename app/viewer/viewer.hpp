@@ -13,6 +13,7 @@
 
 #include "meshstep/scene/camera.hpp"
 #include "render/renderer.hpp"
+#include "invariant_job.hpp"
 #include "pseudocode.hpp"
 #include "session.hpp"
 #include "settings.hpp"
@@ -51,6 +52,9 @@ class Viewer {
   void cycle_color_by(int direction);
   void toggle_layer(scene::Layer layer);
 
+  // Checks every step boundary of the log in the background ("check every step").
+  InvariantJob& invariants() { return invariants_; }
+
   // The canvas's rectangle in the window (pixels), as the last frame laid it out.
   ImVec4 canvas_rect() const { return canvas_rect_; }
   // Renders the canvas alone (no UI) into an image, as `meshstep render` would.
@@ -64,6 +68,7 @@ class Viewer {
   void draw_timeline(float x, float y, float w, float h);
   void draw_transport();
   void draw_pseudocode();
+  void draw_invariants();
   void draw_timeline_bar(float height);
   void draw_help();
   void fit_camera(int width, int height);
@@ -92,6 +97,8 @@ class Viewer {
   bool explain_open_ = true, layers_open_ = true, stats_open_ = true, code_open_ = true;
   // The pseudo-code line of the cursor's event, found again only when the cursor moves.
   CodeAt code_;
+  InvariantJob invariants_;
+  std::string invariants_text_;  // the finished job's line, made once
   std::uint64_t code_position_ = UINT64_MAX;
   TimelineCache timeline_cache_;
 };

@@ -208,6 +208,36 @@ TEST_P(ViewerProgram, WindowScreenshotMatchesItsGolden) {
 INSTANTIATE_TEST_SUITE_P(Modes, ViewerProgram, ::testing::Values("egl", "osmesa", "window"),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
+// "Check every step" in the viewer: an off-center run holds at every boundary; a
+// Lepp-bisection run (bisection makes no flips) breaks Delaunay at a bisection step.
+TEST(ViewerInvariants, ChecksEveryStepAndNamesTheOneThatBreaks) {
+  const fs::path dir = fs::temp_directory_path() / ("viewer_invariants_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path script = dir / "check.txt", state = dir / "state.json";
+  std::ofstream(script) << "check\nstate " << state.string() << "\nquit\n";
+  for (const char* args : {kOffcenter, "--algorithm lepp-bisection --max-area 0.5"}) {
+    const replay::LogReader* log = golden::lesson_run(args);
+    ASSERT_NE(log, nullptr);
+    const Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + log->path() + " --offscreen -q --script " +
+                         script.string());
+    if (r.status != 0 && has(r.output, "cannot open a window or draw")) GTEST_SKIP() << r.output;
+    ASSERT_EQ(r.status, 0) << r.output;
+    const std::string json = read_text(state);
+    if (std::string(args) == kOffcenter) {
+      EXPECT_TRUE(has(json, "hold at the " + std::to_string(log->step_count() + 1) + " step boundaries")) << json;
+    } else {
+      const std::string tag = "\"invariants\": \"step ";
+      const auto at = json.find(tag);
+      ASSERT_NE(at, std::string::npos) << json;
+      const long long step = std::atoll(json.c_str() + at + tag.size());
+      ASSERT_GT(step, 0) << json;
+      EXPECT_TRUE(has(json, "breaks delaunay")) << json;
+      EXPECT_EQ(log->step_kind(static_cast<std::uint64_t>(step - 1)), replay::StepKind::bisect) << json;
+    }
+  }
+  fs::remove_all(dir);
+}
+
 TEST(ViewerCli, BadScriptsAndInputsSayWhereAndExitNonZero) {
   const fs::path script = fs::temp_directory_path() / ("viewer_bad_" + std::to_string(::getpid()) + ".txt");
   std::ofstream(script) << "seek step 4\nbogus 3\n";
