@@ -1,0 +1,172 @@
+// bench_viewer: how the viewer responds, measured in its scripted mode (meshstep-view
+// --offscreen --script, with --frame-log: each frame's time and allocations). For each size
+// N, the log of a recorded triangulation of N uniform random points:
+//   open    from the program's start to the end of its first frame (the log opened, its
+//           timeline and the mesh at the end of the run shown), 1280x800;
+//   scrub   61 seeks spread over the whole run, one frame each, as a drag along the
+//           timeline does: the frames' median and worst time, and the frames per second
+//           the median gives;
+//   idle    30 frames with nothing changing: their median time and their allocations.
+// Repeated R times (alternating sizes); medians over the repetitions.
+//
+//   bench_viewer --view PATH --meshstep PATH --make-points PATH [--sizes 1e5,1e6] [--repeat R]
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench_args.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using meshstep::bench::parse_whole;
+using meshstep::bench::usage_error;
+
+constexpr const char* kUsage =
+    "usage: bench_viewer --view PATH --meshstep PATH --make-points PATH [--sizes 1e5,1e6] [--repeat R]\n";
+
+struct Frame {
+  double end_ms = 0, ms = 0;
+  unsigned long long allocations = 0, position = 0;
+};
+
+int run(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+}
+
+std::vector<Frame> read_frames(const fs::path& path) {
+  std::vector<Frame> frames;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream f(line);
+    unsigned long long index = 0;
+    Frame fr;
+    f >> index >> fr.end_ms >> fr.ms >> fr.allocations >> fr.position;
+    frames.push_back(fr);
+  }
+  return frames;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+struct Run {
+  double open_ms = 0, scrub_median_ms = 0, scrub_max_ms = 0, idle_ms = 0;
+  unsigned long long idle_allocations = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string view, meshstep, make_points;
+  std::vector<std::size_t> sizes = {100000, 1000000};
+  int repeat = 3;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (arg == "--view" && has_value) view = argv[++i];
+    else if (arg == "--meshstep" && has_value) meshstep = argv[++i];
+    else if (arg == "--make-points" && has_value) make_points = argv[++i];
+    else if (arg == "--repeat" && has_value) {
+      if (!parse_whole(argv[++i], repeat) || repeat < 1) return usage_error("bench_viewer", "--repeat: expected >= 1", kUsage);
+    } else if (arg == "--sizes" && has_value) {
+      sizes.clear();
+      std::stringstream list(argv[++i]);
+      for (std::string item; std::getline(list, item, ',');) {
+        const double n = std::atof(item.c_str());
+        if (n < 10 || n > 1e8) return usage_error("bench_viewer", "--sizes: counts from 10 to 1e8", kUsage);
+        sizes.push_back(static_cast<std::size_t>(n));
+      }
+    } else {
+      return usage_error("bench_viewer", "unknown argument " + arg, kUsage);
+    }
+  }
+  if (view.empty() || meshstep.empty() || make_points.empty())
+    return usage_error("bench_viewer", "--view, --meshstep and --make-points are needed", kUsage);
+
+  const fs::path dir = fs::temp_directory_path() / "bench_viewer";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::vector<std::string> logs;
+  std::vector<unsigned long long> events;
+  for (const std::size_t n : sizes) {
+    const std::string node = (dir / ("p" + std::to_string(n) + ".node")).string();
+    const std::string log = (dir / ("p" + std::to_string(n) + ".mslog")).string();
+    if (run(make_points + " " + std::to_string(n) + " " + node + " 11") != 0 ||
+        run(meshstep + " triangulate " + node + " --record " + log + " --no-output -q") != 0) {
+      std::fprintf(stderr, "bench_viewer: recording %zu points failed\n", n);
+      return 1;
+    }
+    fs::remove(node);
+    logs.push_back(log);
+  }
+
+  // The script: seeks spread over the run (event numbers beyond the end are clamped), one
+  // frame each, then idle frames.
+  const fs::path script = dir / "scrub.txt";
+  std::vector<std::vector<Run>> runs(sizes.size());
+  for (int r = 0; r < repeat; ++r) {
+    for (std::size_t s = 0; s < sizes.size(); ++s) {
+      {
+        std::ofstream out(script);
+        out << "frames 1\n";
+        const unsigned long long approx_events = 7ULL * sizes[s];
+        for (int k = 0; k <= 60; ++k) out << "seek event " << approx_events * static_cast<unsigned long long>(k) / 60 << "\nframes 1\n";
+        out << "frames 30\nquit\n";
+      }
+      const fs::path frames_file = dir / "frames.txt";
+      if (run(view + " " + logs[s] + " --offscreen --size 1280x800 -q --script " + script.string() + " --frame-log " +
+              frames_file.string()) != 0) {
+        std::fprintf(stderr, "bench_viewer: the viewer failed on %s\n", logs[s].c_str());
+        return 1;
+      }
+      const std::vector<Frame> f = read_frames(frames_file);
+      if (f.size() < 92) {
+        std::fprintf(stderr, "bench_viewer: %zu frames logged, expected 92\n", f.size());
+        return 1;
+      }
+      Run result;
+      result.open_ms = f[0].end_ms;
+      std::vector<double> scrub, idle;
+      for (std::size_t i = 1; i <= 61; ++i) scrub.push_back(f[i].ms);
+      for (std::size_t i = 62; i < f.size(); ++i) {
+        idle.push_back(f[i].ms);
+        if (i > 63) result.idle_allocations += f[i].allocations;  // after 2 warm-up frames
+      }
+      result.scrub_median_ms = median(scrub);
+      result.scrub_max_ms = *std::max_element(scrub.begin(), scrub.end());
+      result.idle_ms = median(idle);
+      runs[s].push_back(result);
+    }
+  }
+
+  std::printf("| log of N points | open, first frame (ms) | scrub frame median / worst (ms) | scrub frames/s | idle frame (ms) | idle allocations |\n");
+  std::printf("|--:|--:|--:|--:|--:|--:|\n");
+  for (std::size_t s = 0; s < sizes.size(); ++s) {
+    std::vector<double> open, med, worst, idle;
+    unsigned long long allocations = 0;
+    for (const Run& r : runs[s]) {
+      open.push_back(r.open_ms);
+      med.push_back(r.scrub_median_ms);
+      worst.push_back(r.scrub_max_ms);
+      idle.push_back(r.idle_ms);
+      allocations += r.idle_allocations;
+    }
+    std::printf("| %zu | %.0f | %.1f / %.0f | %.1f | %.1f | %llu |\n", sizes[s], median(open), median(med), median(worst),
+                1000.0 / std::max(1e-3, median(med)), median(idle), allocations);
+  }
+  fs::remove_all(dir);
+  return 0;
+}
