@@ -4,6 +4,8 @@
 #include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
 
+#include <utility>
+
 #include "imgui_gl.hpp"
 #include "render/embedded_files.hpp"
 #include "render/framebuffer.hpp"
@@ -31,11 +33,22 @@ void setup_imgui_style() {
 
 namespace {
 
+// GLFW's drop callback takes no user pointer that ImGui's backend does not own already: the
+// one window's last drop waits here.
+std::string& dropped_path() {
+  static std::string path;
+  return path;
+}
+
 class WindowHost final : public Host {
  public:
   WindowHost(int width, int height, const std::string& title)
       : context_(render::make_window_context(width, height, title, true)) {
     ImGui_ImplGlfw_InitForOpenGL(context_->window(), true);
+    // ImGui's backend leaves file drops alone: they are the viewer's.
+    glfwSetDropCallback(context_->window(), [](GLFWwindow*, int count, const char** paths) {
+      if (count > 0) dropped_path() = paths[count - 1];
+    });
     gl_ = std::make_unique<ImGuiGl>();
   }
   ~WindowHost() override {
@@ -66,6 +79,7 @@ class WindowHost final : public Host {
   int height() const override { return height_; }
   std::string describe() const override { return "GLFW window: " + context_->describe(); }
   bool interactive() const override { return true; }
+  std::string take_dropped() override { return std::exchange(dropped_path(), std::string()); }
 
  private:
   // The back buffer, bottom row first: flipped into an image's order.

@@ -26,6 +26,8 @@ class Host {
   virtual std::string describe() const = 0;
   // True when ImGui's input comes from the window's events.
   virtual bool interactive() const = 0;
+  // The last file dropped on the window since the last call ("" if none).
+  virtual std::string take_dropped() { return {}; }
 };
 
 // Throws render::GlUnavailable when there is no display or no GL. The ImGui context must

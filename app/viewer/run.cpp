@@ -9,12 +9,14 @@
 #include <signal.h>
 
 #include <atomic>
+#include <filesystem>
 #include <thread>
 #include <cstdio>
 #include <cstdlib>
 
 #include "allocations.hpp"
 #include "host.hpp"
+#include "start_page.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/atomic_file.hpp"
 #include "meshstep/scene/svg.hpp"
@@ -64,16 +66,30 @@ class ScriptPlayer {
 
   // Before ImGui::NewFrame: sets this frame's input. Returns true when the frame must be
   // captured for a screenshot.
-  bool before_frame(Viewer& viewer) {
+  // `viewer` is null on the start page; `open` receives the file of an `open` action (the
+  // loop opens it before the next frame).
+  bool before_frame(Viewer* viewer, std::string& open, const std::string& problem) {
     ImGuiIO& io = ImGui::GetIO();
     release(io);
     // `play N` pauses after its N-th frame has played, not before.
-    if (pause_now_) {
-      viewer.session().playback().playing = false;
+    if (pause_now_ && viewer) {
+      viewer->session().playback().playing = false;
       pause_now_ = false;
     }
-    while (frames_left_ == 0 && pending_.empty() && next_ < actions_.size() && !quit_) {
-      if (run(actions_[next_++], viewer, io)) break;
+    while (frames_left_ == 0 && pending_.empty() && next_ < actions_.size() && !quit_ && open.empty()) {
+      const ScriptAction& a = actions_[next_++];
+      if (a.verb == "open") {
+        open = a.args[0];
+        pending_.push_back({});  // the frame that shows it
+        break;
+      }
+      if (a.verb == "state" && !viewer) {
+        io::write_file_atomically(a.args[0], "{\n  \"page\": \"start\",\n  \"problem\": \"" + escaped(problem) + "\"\n}\n");
+        continue;
+      }
+      if (!viewer && needs_viewer(a.verb))
+        throw InputError(path_, static_cast<std::size_t>(a.line), "no run is open yet for '" + a.verb + "' (open one first)");
+      if (run(a, viewer, io)) break;
     }
     if (!pending_.empty()) {
       const Input in = pending_.front();
@@ -96,6 +112,20 @@ class ScriptPlayer {
   }
 
  private:
+  static bool needs_viewer(const std::string& verb) {
+    return !(verb == "frames" || verb == "key" || verb == "mouse" || verb == "click" || verb == "drag" ||
+             verb == "wheel" || verb == "screenshot" || verb == "quit");
+  }
+
+  static std::string escaped(const std::string& s) {
+    std::string out;
+    for (const char c : s) {
+      if (c == '"' || c == '\\') out += '\\';
+      if (static_cast<unsigned char>(c) >= 0x20) out += c;
+    }
+    return out;
+  }
+
   struct Input {
     int key = -1;
     bool shift = false, ctrl = false;
@@ -126,14 +156,14 @@ class ScriptPlayer {
   }
 
   // Runs one action; true when it takes frames (the loop then draws them).
-  bool run(const ScriptAction& a, Viewer& viewer, ImGuiIO& io) {
-    Session& s = viewer.session();
+  // `viewer` is null only for the actions that need none (needs_viewer).
+  bool run(const ScriptAction& a, Viewer* viewer, ImGuiIO& io) {
     const auto& v = a.verb;
     if (v == "seek") {
-      if (a.args[0] == "start") s.to_start();
-      else if (a.args[0] == "end") s.to_end();
-      else if (a.args[0] == "step") s.seek_step(std::strtoull(a.args[1].c_str(), nullptr, 10));
-      else s.seek(std::strtoull(a.args[1].c_str(), nullptr, 10));
+      if (a.args[0] == "start") viewer->session().to_start();
+      else if (a.args[0] == "end") viewer->session().to_end();
+      else if (a.args[0] == "step") viewer->session().seek_step(std::strtoull(a.args[1].c_str(), nullptr, 10));
+      else viewer->session().seek(std::strtoull(a.args[1].c_str(), nullptr, 10));
       return false;
     }
     if (v == "frames") {
@@ -142,7 +172,7 @@ class ScriptPlayer {
     }
     if (v == "play") {
       frames_left_ = std::strtoull(a.args[0].c_str(), nullptr, 10);
-      if (!s.playback().playing) s.toggle_play();
+      if (!viewer->session().playback().playing) viewer->session().toggle_play();
       stop_playing_ = true;
       return frames_left_ > 0;
     }
@@ -153,19 +183,19 @@ class ScriptPlayer {
       return true;
     }
     if (v == "toggle") {
-      viewer.toggle_layer(*scene::parse_layer(a.args[0]));
+      viewer->toggle_layer(*scene::parse_layer(a.args[0]));
       return false;
     }
     if (v == "color-by") {
-      s.set_color_by(*scene::parse_color_by(a.args[0]));
+      viewer->session().set_color_by(*scene::parse_color_by(a.args[0]));
       return false;
     }
     if (v == "speed") {
-      s.playback().speed = std::clamp(std::strtod(a.args[0].c_str(), nullptr), Playback::kMinSpeed, Playback::kMaxSpeed);
+      viewer->session().playback().speed = std::clamp(std::strtod(a.args[0].c_str(), nullptr), Playback::kMinSpeed, Playback::kMaxSpeed);
       return false;
     }
     if (v == "unit") {
-      s.playback().unit = a.args[0] == "event" ? Unit::event : a.args[0] == "step" ? Unit::step : Unit::phase;
+      viewer->session().playback().unit = a.args[0] == "event" ? Unit::event : a.args[0] == "step" ? Unit::step : Unit::phase;
       return false;
     }
     if (v == "mouse") {
@@ -208,17 +238,17 @@ class ScriptPlayer {
     }
     if (v == "canvas") {
       const std::string& file = a.args[0];
-      if (ends_with(file, ".svg")) io::write_file_atomically(file, scene::to_svg(s.scene(), viewer.camera()));
-      else scene::write_png(file, viewer.canvas_picture(), 6);
+      if (ends_with(file, ".svg")) io::write_file_atomically(file, scene::to_svg(viewer->session().scene(), viewer->camera()));
+      else scene::write_png(file, viewer->canvas_picture(), 6);
       return false;
     }
     if (v == "state") {
-      io::write_file_atomically(a.args[0], state_json(viewer));
+      io::write_file_atomically(a.args[0], state_json(*viewer));
       return false;
     }
     if (v == "check") {
-      viewer.invariants().start(s.log() ? s.log()->path() : std::string());
-      viewer.invariants().wait();
+      viewer->invariants().start(viewer->session().log() ? viewer->session().log()->path() : std::string());
+      viewer->invariants().wait();
       return false;
     }
     if (v == "quit") {
@@ -243,7 +273,7 @@ class ScriptPlayer {
 
 }  // namespace
 
-int run_viewer(std::unique_ptr<Session> session, const RunOptions& options) {
+int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Opener& opener) {
   watch_for_interrupts(!options.offscreen);
   IMGUI_CHECKVERSION();
   count_imgui_allocations();
@@ -253,12 +283,36 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options) {
   } guard;
   setup_imgui_style();
 
-  std::unique_ptr<Host> host = options.offscreen
-                                   ? make_offscreen_host(options.width, options.height, options.gl)
-                                   : make_window_host(options.width, options.height, "meshstep view: " + session->title());
+  const std::string title = session ? session->title() : "start";
+  std::unique_ptr<Host> host = options.offscreen ? make_offscreen_host(options.width, options.height, options.gl)
+                                                 : make_window_host(options.width, options.height, "meshstep view: " + title);
   if (!options.quiet) std::fprintf(stderr, "meshstep view: %s\n", host->describe().c_str());
-  Viewer viewer(std::move(session));
-  if (options.settings) viewer.apply(*options.settings);
+
+  // What the window shows: a viewer of a session, or (none yet) the start page. Opening
+  // another file (a drop, the start page) makes a new viewer that keeps the options.
+  std::unique_ptr<Viewer> viewer;
+  std::string problem;  // the last file that could not be opened, and why
+  const auto show = [&](std::unique_ptr<Session> next) {
+    Settings carried = options.settings ? *options.settings : Settings{};
+    if (viewer) viewer->capture(carried);
+    const std::string path = next->title();
+    viewer = std::make_unique<Viewer>(std::move(next));
+    if (options.settings || carried != Settings{}) viewer->apply(carried);
+    if (options.settings) {
+      std::error_code ec;
+      options.settings->add_recent(std::filesystem::absolute(path, ec).string());
+    }
+    problem.clear();
+  };
+  const auto open = [&](const std::string& path, const RefineOptions& refine) {
+    try {
+      show(opener.open(path, refine));
+    } catch (const InputError& e) {
+      problem = e.what();
+    }
+  };
+  if (session) show(std::move(session));
+
   ScriptPlayer script(options.script, options.script_path);
   const bool scripted = !options.script.empty();
 
@@ -271,7 +325,9 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options) {
   scene::Image capture;
   using Clock = std::chrono::steady_clock;
   Clock::time_point last = Clock::now();
-  while (!viewer.quit_requested && !g_interrupted) {
+  std::string picked;
+  RefineOptions picked_refine;
+  while (!(viewer && viewer->quit_requested) && !g_interrupted) {
     // Scripts run on a fixed frame time, so that what they see does not depend on the
     // machine's speed; people get the wall clock.
     const Clock::time_point now = Clock::now();
@@ -280,24 +336,35 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options) {
     last = now;
     const std::uint64_t allocations_before = allocations();
     if (!host->begin_frame(seconds)) break;
-    const bool wants_capture = scripted && !script.done() && script.before_frame(viewer);
+    // Between frames: a file dropped on the window, or picked on the start page.
+    if (const std::string dropped = host->take_dropped(); !dropped.empty()) open(dropped, {});
+    const bool wants_capture = scripted && !script.done() && script.before_frame(viewer.get(), picked, problem);
     if (script.quit()) break;
+    if (!picked.empty()) {
+      open(picked, picked_refine);
+      picked.clear();
+      picked_refine = {};
+    }
     ImGui::NewFrame();
-    viewer.frame(host->width(), host->height(), seconds);
+    if (viewer) viewer->frame(host->width(), host->height(), seconds);
+    else draw_start_page(host->width(), host->height(), options.settings, picked, picked_refine);
+    if (!problem.empty()) draw_problem(problem);
     ImGui::Render();
     host->end_frame(wants_capture ? &capture : nullptr);
     if (wants_capture) script.after_frame(capture);
+    const std::uint64_t position = viewer ? viewer->session().cursor_info().position : 0;
     if (!options.frame_log.empty() && frames.size() < frames.capacity()) {
       const Clock::time_point end = Clock::now();
       frames.push_back({std::chrono::duration<double, std::milli>(end - options.started).count(),
                         std::chrono::duration<double, std::milli>(end - now).count(),
-                        allocations() - allocations_before, viewer.session().cursor_info().position});
+                        allocations() - allocations_before, position});
     }
     if (!host->interactive() && (!scripted || script.done())) break;
-    if (host->interactive() && !scripted && !viewer.session().playback().playing) glfwWaitEventsTimeout(0.1);
+    const bool playing = viewer && viewer->session().playback().playing;
+    if (host->interactive() && !scripted && !playing && picked.empty()) glfwWaitEventsTimeout(0.1);
   }
   if (options.settings) {
-    viewer.capture(*options.settings);
+    if (viewer) viewer->capture(*options.settings);
     options.settings->window_width = host->width();
     options.settings->window_height = host->height();
   }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "open_input.hpp"
 #include "script.hpp"
 #include "session.hpp"
 #include "settings.hpp"
@@ -29,8 +30,10 @@ struct RunOptions {
   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 };
 
-// Runs until the window closes, Ctrl+Q, or (off screen) the script ends. Returns the exit
-// status; throws InputError for a script action that cannot be done (a file not written).
-int run_viewer(std::unique_ptr<Session> session, const RunOptions& options);
+// Runs until the window closes, Ctrl+Q, or (off screen) the script ends. Without a session
+// it starts on the start page (examples and recent files). Files dropped on the window or
+// picked on the start page are opened with `opener`. Returns the exit status; throws
+// InputError for a script action that cannot be done (a file not written).
+int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Opener& opener);
 
 }  // namespace meshstep::viewer

@@ -67,7 +67,7 @@ std::string check(const ScriptAction& a) {
     return "expected: wheel N";
   }
   if (v == "click" || v == "quit" || v == "check") return count(0, v.c_str());
-  if (v == "screenshot" || v == "canvas" || v == "state") return count(1, (v + " FILE").c_str());
+  if (v == "screenshot" || v == "canvas" || v == "state" || v == "open") return count(1, (v + " FILE").c_str());
   return "unknown action '" + v + "'";
 }
 

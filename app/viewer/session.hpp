@@ -49,6 +49,7 @@ class Session {
   ~Session();
 
   const std::string& title() const { return title_; }
+  void set_title(std::string title) { title_ = std::move(title); }
   const replay::LogReader* log() const { return log_.get(); }
   bool has_timeline() const { return log_ != nullptr; }
   CursorInfo cursor_info() const;

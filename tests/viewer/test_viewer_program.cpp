@@ -238,6 +238,27 @@ TEST(ViewerInvariants, ChecksEveryStepAndNamesTheOneThatBreaks) {
   fs::remove_all(dir);
 }
 
+// Without INPUT the viewer starts on the start page: a file that cannot be opened is
+// reported there, and the first example's "refine" button records and opens its run.
+TEST(ViewerStartPage, OpensAnExampleOrSaysWhyNot) {
+  const fs::path dir = fs::temp_directory_path() / ("viewer_start_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path script = dir / "start.txt", start = dir / "start.json", opened = dir / "opened.json";
+  std::ofstream(script) << "frames 2\nopen " << (dir / "missing.mslog").string() << "\nframes 1\nstate "
+                        << start.string() << "\nmouse 90 87\nclick\nframes 2\nstate " << opened.string()
+                        << "\nquit\n";
+  const Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " --offscreen -q --size 1280x800 --script " + script.string());
+  if (r.status != 0 && has(r.output, "cannot open a window or draw")) GTEST_SKIP() << r.output;
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string page = read_text(start), run_state = read_text(opened);
+  EXPECT_TRUE(has(page, "\"page\": \"start\"")) << page;
+  EXPECT_TRUE(has(page, "missing.mslog: no such file")) << page;
+  EXPECT_TRUE(has(run_state, "examples/lesson.poly\"")) << run_state;
+  EXPECT_GT(field(run_state, "step_count"), 20) << run_state;
+  EXPECT_TRUE(has(run_state, "\"code_title\": \"Off-center")) << run_state;
+  fs::remove_all(dir);
+}
+
 TEST(ViewerCli, BadScriptsAndInputsSayWhereAndExitNonZero) {
   const fs::path script = fs::temp_directory_path() / ("viewer_bad_" + std::to_string(::getpid()) + ".txt");
   std::ofstream(script) << "seek step 4\nbogus 3\n";

@@ -1,0 +1,117 @@
+#include "open_input.hpp"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "../scene_source.hpp"
+#include "meshstep/error.hpp"
+
+extern char** environ;
+
+namespace meshstep::viewer {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path program_folder() {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? fs::path() : self.parent_path();
+}
+
+// The meshstep program beside this one (both are built into the same folder).
+std::string sibling_meshstep() {
+  const fs::path here = program_folder();
+  for (const fs::path& candidate : {here / "meshstep", here.parent_path() / "meshstep"})
+    if (!here.empty() && fs::exists(candidate)) return candidate.string();
+  return "meshstep";
+}
+
+}  // namespace
+
+Opener::~Opener() {
+  std::error_code ec;
+  for (const std::string& log : temporary_logs_) fs::remove(log, ec);
+}
+
+std::string Opener::record_run(const std::string& input, const RefineOptions& r) {
+  const std::string log = (fs::temp_directory_path() / ("meshstep-view-" + std::to_string(::getpid()) + "-" +
+                                                        std::to_string(temporary_logs_.size()) + ".mslog"))
+                              .string();
+  temporary_logs_.push_back(log);
+  std::vector<std::string> args = {sibling_meshstep(), r.any() ? "refine" : "triangulate", input, "--record", log,
+                                   "--no-output", "-q"};
+  const auto pass = [&](const char* flag, const std::string& value) {
+    if (!value.empty()) args.insert(args.end(), {flag, value});
+  };
+  pass("--algorithm", r.algorithm);
+  pass("--min-angle", r.min_angle);
+  pass("--max-angle", r.max_angle);
+  pass("--max-area", r.max_area);
+  pass("--max-aspect", r.max_aspect);
+  std::vector<char*> argv;
+  for (std::string& s : args) argv.push_back(s.data());
+  argv.push_back(nullptr);
+  if (!quiet_) std::fprintf(stderr, "meshstep view: recording %s %s ...\n", args[1].c_str(), input.c_str());
+  pid_t pid = -1;
+  if (::posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0)
+    throw InputError(input, 0, "cannot run " + args[0] + " to triangulate it");
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw InputError(input, 0, "its run failed (see above)");
+  return log;
+}
+
+std::unique_ptr<Session> Opener::open(const std::string& path, const RefineOptions& refine) {
+  if (app::is_replay_log(path)) return Session::open_log(path);
+  if (path.ends_with(".poly") || path.ends_with(".node")) {
+    auto session = Session::open_log(record_run(path, refine));
+    session->set_title(path);
+    return session;
+  }
+  std::vector<std::string> warnings;
+  app::SceneSource source = app::open_scene_source(path, &warnings);
+  for (const std::string& w : warnings) std::fprintf(stderr, "%s\n", w.c_str());
+  if (source.mesh) return Session::still(std::move(*source.mesh), path);
+  return Session::still(std::move(*source.input), path);
+}
+
+std::vector<Example> bundled_examples() {
+  // Installed or built: the examples are found from the program's folder upward, else
+  // from the source tree the program was built from.
+  std::vector<fs::path> folders;
+  for (fs::path p = program_folder(); !p.empty() && p != p.root_path(); p = p.parent_path())
+    folders.push_back(p / "assets" / "examples");
+#ifdef MESHSTEP_SOURCE_ASSETS
+  folders.emplace_back(MESHSTEP_SOURCE_ASSETS "/examples");
+#endif
+  for (const fs::path& folder : folders) {
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) continue;
+    std::vector<Example> out;
+    for (const auto& entry : fs::directory_iterator(folder, ec)) {
+      if (entry.path().extension() != ".poly") continue;
+      Example e{entry.path().string(), ""};
+      std::ifstream in(entry.path());
+      for (std::string line; std::getline(in, line);)
+        if (line.starts_with("#")) {
+          e.description = line.substr(line.find_first_not_of("# ") == std::string::npos ? line.size()
+                                                                                          : line.find_first_not_of("# "));
+          break;
+        }
+      out.push_back(std::move(e));
+    }
+    std::sort(out.begin(), out.end(), [](const Example& a, const Example& b) { return a.path < b.path; });
+    if (!out.empty()) return out;
+  }
+  return {};
+}
+
+}  // namespace meshstep::viewer

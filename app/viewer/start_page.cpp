@@ -1,0 +1,91 @@
+#include "start_page.hpp"
+
+#include <imgui.h>
+
+#include <filesystem>
+#include <vector>
+
+namespace meshstep::viewer {
+
+void draw_start_page(int width, int height, const Settings* settings, std::string& picked, RefineOptions& refine) {
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(ImVec2(static_cast<float>(width), static_cast<float>(height)));
+  ImGui::Begin("start", nullptr,
+               ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "meshstep view");
+  ImGui::TextWrapped(
+      "Watch a triangulation or a refinement step by step: pick an example, a recent file, or drop a replay log, "
+      "a mesh or a .poly/.node input on this window.");
+  ImGui::Separator();
+
+  static const std::vector<Example> examples = bundled_examples();
+  ImGui::Text("Examples");
+  if (examples.empty()) ImGui::TextDisabled("(the folder assets/examples was not found)");
+  for (const Example& e : examples) {
+    ImGui::PushID(e.path.c_str());
+    const std::string name = std::filesystem::path(e.path).filename().string();
+    if (ImGui::Button("refine (off-center, 30\u00B0)")) {
+      picked = e.path;
+      refine = RefineOptions{"offcenter", "30", "", "", ""};
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Lepp-centroid")) {
+      picked = e.path;
+      refine = RefineOptions{"lepp-centroid", "30", "", "", ""};
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("triangulate")) {
+      picked = e.path;
+      refine = RefineOptions{};
+    }
+    ImGui::SameLine();
+    ImGui::Text("%s", name.c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", e.description.c_str());
+    ImGui::PopID();
+  }
+
+  ImGui::Separator();
+  ImGui::Text("Recent files");
+  if (!settings || settings->recent_files.empty()) ImGui::TextDisabled("(none yet)");
+  if (settings)
+    for (const std::string& path : settings->recent_files) {
+      ImGui::PushID(path.c_str());
+      if (ImGui::Button("open")) {
+        picked = path;
+        refine = RefineOptions{};
+      }
+      ImGui::SameLine();
+      ImGui::TextUnformatted(path.c_str());
+      ImGui::PopID();
+    }
+
+  ImGui::Separator();
+  static char path[1024] = "";
+  ImGui::Text("Open a file");
+  ImGui::SetNextItemWidth(std::max(200.0f, static_cast<float>(width) - 160.0f));
+  const bool entered =
+      ImGui::InputTextWithHint("##path", "a replay log, a mesh PREFIX, or a .poly/.node", path, sizeof path,
+                               ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  if ((ImGui::Button("open##path") || entered) && path[0] != '\0') {
+    picked = path;
+    refine = RefineOptions{};
+  }
+  ImGui::End();
+}
+
+void draw_problem(const std::string& problem) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y - 20.0f), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+  ImGui::SetNextWindowBgAlpha(0.95f);
+  ImGui::Begin("cannot open", nullptr,
+               ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+  ImGui::PushTextWrapPos(io.DisplaySize.x * 0.7f);
+  ImGui::TextUnformatted(problem.c_str());
+  ImGui::PopTextWrapPos();
+  ImGui::End();
+}
+
+}  // namespace meshstep::viewer
