@@ -38,7 +38,10 @@ BBox run_box(Session& session) {
 
 }  // namespace
 
-Viewer::Viewer(std::unique_ptr<Session> session) : session_(std::move(session)) {}
+Viewer::Viewer(std::unique_ptr<Session> session) : session_(std::move(session)) {
+  if (const replay::LogReader* log = session_->log())
+    angle_bound_ = std::strtod(log->parameter("min_angle", "0").c_str(), nullptr);
+}
 Viewer::~Viewer() = default;
 
 void Viewer::apply(const Settings& s) {
@@ -244,6 +247,14 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
     ImGui::Text("angles from %.2f%s to %.2f%s", st.min_angle, "\u00B0", st.max_angle, "\u00B0");
     ImGui::PlotHistogram("##angles", st.histogram.data(), static_cast<int>(st.histogram.size()), 0,
                          "smallest angle per triangle, 0-60\u00B0", 0.0f, FLT_MAX, ImVec2(w - 24.0f, 70.0f));
+    // The run's angle bound, as a line across the histogram: bars left of it are the bad.
+    const double bound = angle_bound_;
+    if (bound > 0.0 && bound < 60.0) {
+      const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+      const float x = lo.x + static_cast<float>(bound / 60.0) * (hi.x - lo.x);
+      ImGui::GetWindowDrawList()->AddLine(ImVec2(x, lo.y), ImVec2(x, hi.y), IM_COL32(213, 94, 0, 255), 2.0f);
+      ImGui::Text("bound %.4g\u00B0 (the orange line)", bound);
+    }
   }
   ImGui::End();
 }

@@ -94,6 +94,7 @@ class Viewer {
   std::size_t stats_of_build_ = SIZE_MAX;
   char goto_text_[32] = "";
   float side_panel_width_ = 380.0f;
+  double angle_bound_ = 0.0;  // the run's min_angle, 0 when it has none
   bool explain_open_ = true, layers_open_ = true, stats_open_ = true, code_open_ = true;
   // The pseudo-code line of the cursor's event, found again only when the cursor moves.
   CodeAt code_;
