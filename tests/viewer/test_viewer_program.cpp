@@ -169,11 +169,18 @@ TEST_P(ViewerProgram, IdleFramesDoNotAllocate) {
     allocations.push_back(count);
   }
   ASSERT_GE(allocations.size(), 25u);
-  EXPECT_GT(allocations[0], 0u) << "the first frame builds everything";
+  // Under the sanitizers only ImGui's allocations are counted: the frames that must
+  // allocate may not show it, the idle ones must still count nothing.
+  const bool counts_new = MESHSTEP_VIEW_COUNTS_NEW;
+  if (counts_new) {
+    EXPECT_GT(allocations[0], 0u) << "the first frame builds everything";
+  }
   // Frames 0 and 1 warm up (ImGui sizes its buffers over its first two frames); 2-5 idle;
   // 6 presses C (a new colouring: a new scene); 7 releases it; then idle.
   for (std::size_t i = 2; i < 6; ++i) EXPECT_EQ(allocations[i], 0u) << "idle frame " << i;
-  EXPECT_GT(allocations[6], 0u) << "the frame of the new colouring";
+  if (counts_new) {
+    EXPECT_GT(allocations[6], 0u) << "the frame of the new colouring";
+  }
   for (std::size_t i = 8; i < allocations.size(); ++i) EXPECT_EQ(allocations[i], 0u) << "idle frame " << i;
 }
 
