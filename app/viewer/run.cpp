@@ -246,6 +246,10 @@ class ScriptPlayer {
       io::write_file_atomically(a.args[0], state_json(*viewer));
       return false;
     }
+    if (v == "select") {
+      viewer->select_at({std::strtod(a.args[0].c_str(), nullptr), std::strtod(a.args[1].c_str(), nullptr)});
+      return false;
+    }
     if (v == "check") {
       viewer->invariants().start(viewer->session().log() ? viewer->session().log()->path() : std::string());
       viewer->invariants().wait();

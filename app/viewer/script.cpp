@@ -58,6 +58,10 @@ std::string check(const ScriptAction& a) {
     if (n == 1 && (a.args[0] == "event" || a.args[0] == "step" || a.args[0] == "phase")) return "";
     return "expected: unit event|step|phase";
   }
+  if (v == "select") {
+    if (n == 2 && is_number(a.args[0], true, true) && is_number(a.args[1], true, true)) return "";
+    return "expected: select X Y (world coordinates)";
+  }
   if (v == "mouse" || v == "drag") {
     if (n == 2 && is_number(a.args[0], true, true) && is_number(a.args[1], true, true)) return "";
     return "expected: " + v + " X Y (pixels)";

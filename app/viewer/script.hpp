@@ -11,6 +11,7 @@
 //   unit event|step|phase
 //   mouse X Y           move the pointer to pixel X, Y of the window
 //   click               press and release the left button where the pointer is
+//   select X Y          select what is at world point X, Y, as a click there does
 //   drag DX DY          drag with the left button by DX, DY pixels (over 4 frames)
 //   wheel N             turn the wheel N notches (positive: zoom in)
 //   screenshot FILE     the window with its UI, as PNG

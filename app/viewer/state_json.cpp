@@ -85,6 +85,8 @@ std::string state_json(Viewer& v) {
   const auto& invariants = v.invariants().report();
   field("invariants", invariants ? quoted(describe(*invariants))
                                  : v.invariants().error().empty() ? "null" : quoted(v.invariants().error()));
+  const std::string selected = v.selection_text();
+  field("selection", selected.empty() ? "null" : quoted(selected));
   field("scene_builds", std::to_string(s.scene_builds()));
   out += "  \"canvas_renders\": " + std::to_string(v.canvas_renders()) + "\n}\n";
   return out;

@@ -159,15 +159,151 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
 
   // Pan by dragging, zoom at the pointer with the wheel.
   const ImGuiIO& io = ImGui::GetIO();
+  refresh_selection();
   if (ImGui::IsItemHovered()) {
     const ImVec2 mouse = io.MousePos;
+    const Point world = camera_.to_world({mouse.x - x, mouse.y - y});
     if (io.MouseWheel != 0.0f)
       camera_.zoom_at({mouse.x - x, mouse.y - y}, std::pow(1.2, static_cast<double>(io.MouseWheel)));
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
       camera_.pan(io.MouseDelta.x, io.MouseDelta.y);
+    // Hover: looked up again only when the pointer moves, and not in huge meshes (a scan).
+    if ((io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) && s.mesh.triangles.size() <= 200000)
+      hovered_ = pick(s.mesh, world, 8.0 / camera_.pixels_per_unit());
+    // A click (pressed and released without a drag) selects.
+    if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f) select_at(world);
+  } else {
+    hovered_ = {};
   }
+  draw_selection_overlay(x, y);
   ImGui::End();
   ImGui::PopStyleVar(2);
+}
+
+void Viewer::select_at(Point world) {
+  const scene::Scene& s = session_->scene();
+  selected_ = pick(s.mesh, world, 8.0 / camera_.pixels_per_unit());
+  lepp_ = {};
+  if (selected_.kind == Picked::Kind::triangle) {
+    selected_vertices_ = s.mesh.triangles[selected_.index];
+    lepp_ = lepp_path(s.mesh, selected_.index);
+  }
+  selection_build_ = session_->scene_builds();
+}
+
+// After the scene changed: the selected triangle is looked for by its vertices (gone: the
+// selection goes); a vertex keeps its id, which the log gives it for the whole run.
+void Viewer::refresh_selection() {
+  if (selected_.kind == Picked::Kind::none || selection_build_ == session_->scene_builds()) return;
+  const scene::Scene& s = session_->scene();
+  selection_build_ = session_->scene_builds();
+  hovered_ = {};
+  if (selected_.kind == Picked::Kind::vertex) return;
+  auto sorted = selected_vertices_;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::uint32_t t = 0; t < s.mesh.triangles.size(); ++t) {
+    auto v = s.mesh.triangles[t];
+    std::sort(v.begin(), v.end());
+    if (v == sorted) {
+      selected_.index = t;
+      lepp_ = lepp_path(s.mesh, t);
+      return;
+    }
+  }
+  selected_ = {};
+  lepp_ = {};
+}
+
+// The hovered and selected elements over the canvas picture, drawn by ImGui (they change
+// with the pointer; the renderer's picture stays as it is).
+void Viewer::draw_selection_overlay(float x, float y) {
+  const scene::Scene& s = session_->scene();
+  ImDrawList& draw = *ImGui::GetWindowDrawList();
+  const auto screen = [&](std::uint32_t v) {
+    const Point p = camera_.to_screen(s.mesh.points[v]);
+    return ImVec2(static_cast<float>(p.x) + x, static_cast<float>(p.y) + y);
+  };
+  const auto outline = [&](std::uint32_t t, ImU32 colour, float width) {
+    if (t >= s.mesh.triangles.size()) return;
+    const auto& v = s.mesh.triangles[t];
+    draw.AddTriangle(screen(v[0]), screen(v[1]), screen(v[2]), colour, width);
+  };
+  const auto centroid = [&](std::uint32_t t) {
+    const auto& v = s.mesh.triangles[t];
+    const ImVec2 a = screen(v[0]), b = screen(v[1]), c = screen(v[2]);
+    return ImVec2((a.x + b.x + c.x) / 3.0f, (a.y + b.y + c.y) / 3.0f);
+  };
+  if (hovered_.kind == Picked::Kind::triangle && !(hovered_ == selected_)) outline(hovered_.index, IM_COL32(0, 114, 178, 200), 2.0f);
+  if (hovered_.kind == Picked::Kind::vertex) draw.AddCircle(screen(hovered_.index), 7.0f, IM_COL32(0, 114, 178, 220), 0, 2.0f);
+  if (selected_.kind == Picked::Kind::triangle) {
+    // Its Lepp path: a line through the centroids in order, the terminal edge thick.
+    for (std::size_t i = 0; i + 1 < lepp_.triangles.size(); ++i)
+      draw.AddLine(centroid(lepp_.triangles[i]), centroid(lepp_.triangles[i + 1]), IM_COL32(204, 121, 167, 255), 2.5f);
+    for (const std::uint32_t t : lepp_.triangles) draw.AddCircleFilled(centroid(t), 3.5f, IM_COL32(204, 121, 167, 255));
+    if (!lepp_.triangles.empty()) draw.AddLine(screen(lepp_.a), screen(lepp_.b), IM_COL32(204, 121, 167, 255), 5.0f);
+    outline(selected_.index, IM_COL32(213, 94, 0, 255), 3.0f);
+  }
+  if (selected_.kind == Picked::Kind::vertex && selected_.index < s.mesh.points.size())
+    draw.AddCircle(screen(selected_.index), 9.0f, IM_COL32(213, 94, 0, 255), 0, 3.0f);
+}
+
+std::string Viewer::selection_text() {
+  const scene::Scene& s = session_->scene();
+  char buf[256];
+  if (selected_.kind == Picked::Kind::triangle) {
+    const TriangleFacts f = triangle_facts(s.mesh, selected_.index);
+    std::snprintf(buf, sizeof buf, "triangle %u %u %u: angles %.1f %.1f %.1f, area %.4g", f.vertices[0], f.vertices[1],
+                  f.vertices[2], f.angles[0], f.angles[1], f.angles[2], f.area);
+    std::string out = buf;
+    if (angle_bound_ > 0) {
+      std::snprintf(buf, sizeof buf, ", smallest angle %.1f %s %.4g (the bound)", f.min_angle,
+                    f.min_angle < angle_bound_ ? "<" : ">=", angle_bound_);
+      out += buf;
+    }
+    std::snprintf(buf, sizeof buf, "; Lepp path of %zu to edge %u-%u%s", lepp_.triangles.size(), lepp_.a, lepp_.b,
+                  lepp_.boundary ? " (on the boundary)" : "");
+    return out + buf;
+  }
+  if (selected_.kind == Picked::Kind::vertex) {
+    const std::uint32_t v = selected_.index;
+    const Point& p = s.mesh.points[v];
+    std::snprintf(buf, sizeof buf, "vertex %u at (%.6g, %.6g)", v, p.x, p.y);
+    std::string out = buf;
+    const replay::LogReader* log = session_->log();
+    if (!log || v >= log->vertices().size()) return out + (log ? "" : ", of the mesh");
+    const replay::VertexInfo& info = log->vertices()[v];
+    const std::uint64_t inputs = std::strtoull(log->parameter("input_vertices", "0").c_str(), nullptr, 10);
+    const std::uint64_t step = log->step_of_event(info.event);
+    if (info.input_index < inputs) {
+      out += ": input vertex " + std::to_string(info.input_index + 1);
+    } else {
+      out += ": Steiner";
+    }
+    if (step < log->step_count()) {
+      std::string kind = replay::name(log->step_kind(step));
+      std::replace(kind.begin(), kind.end(), '_', ' ');
+      out += ", inserted by step " + std::to_string(step + 1) + " (" + kind + ")";
+    }
+    return out;
+  }
+  return "";
+}
+
+// What is selected, in words, with a jump to the step that made a vertex.
+void Viewer::draw_selection_panel() {
+  if (selected_.kind == Picked::Kind::none) return;
+  if (!ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (selection_text_of_ != std::pair{selected_, session_->scene_builds()}) {
+    selection_text_ = selection_text();
+    selection_text_of_ = {selected_, session_->scene_builds()};
+  }
+  ImGui::TextWrapped("%s", selection_text_.c_str());
+  const replay::LogReader* log = session_->log();
+  if (selected_.kind == Picked::Kind::vertex && log && selected_.index < log->vertices().size()) {
+    const std::uint64_t step = log->step_of_event(log->vertices()[selected_.index].event);
+    if (step < log->step_count() && ImGui::Button("Go to the step that inserted it")) session_->seek_step(step + 1);
+  }
+  if (ImGui::Button("Clear the selection")) selected_ = {};
 }
 
 const Stats& Viewer::stats() {
@@ -211,6 +347,7 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
   ImGui::TextWrapped("%s", title.c_str() + (slash == std::string::npos ? 0 : slash + 1));
   ImGui::Separator();
 
+  draw_selection_panel();
   ImGui::SetNextItemOpen(explain_open_);
   if ((explain_open_ = ImGui::CollapsingHeader("Why this step?"))) {
     const scene::Explanation& e = session_->explanation();

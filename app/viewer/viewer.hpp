@@ -4,15 +4,18 @@
 // them (a GLFW window, or EGL/OSMesa off screen for scripts) is the host's business.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <imgui.h>
 
 #include "meshstep/scene/camera.hpp"
 #include "render/renderer.hpp"
+#include "inspector.hpp"
 #include "invariant_job.hpp"
 #include "pseudocode.hpp"
 #include "session.hpp"
@@ -52,6 +55,13 @@ class Viewer {
   void cycle_color_by(int direction);
   void toggle_layer(scene::Layer layer);
 
+  // Selects what is under a world point (a vertex within 8 pixels, else the triangle), as a
+  // click on the canvas does; nothing there clears the selection.
+  void select_at(Point world);
+  // "triangle 12 40 7: angles 31.2 58.8 90.0, area 0.5, Lepp path of 3 to edge 4-9",
+  // "vertex 33: Steiner, inserted by step 45 (refine)", or "" when nothing is selected.
+  std::string selection_text();
+
   // Checks every step boundary of the log in the background ("check every step").
   InvariantJob& invariants() { return invariants_; }
 
@@ -69,6 +79,9 @@ class Viewer {
   void draw_transport();
   void draw_pseudocode();
   void draw_invariants();
+  void draw_selection_panel();
+  void draw_selection_overlay(float x, float y);
+  void refresh_selection();
   void draw_timeline_bar(float height);
   void draw_help();
   void fit_camera(int width, int height);
@@ -98,6 +111,14 @@ class Viewer {
   bool explain_open_ = true, layers_open_ = true, stats_open_ = true, code_open_ = true;
   // The pseudo-code line of the cursor's event, found again only when the cursor moves.
   CodeAt code_;
+  // The inspector: what the pointer is over, and what was clicked (a triangle by its
+  // vertices, found again in each new scene; a vertex by its id, which a log keeps).
+  Picked hovered_, selected_;
+  std::array<std::uint32_t, 3> selected_vertices_{};
+  LeppPath lepp_;
+  std::size_t selection_build_ = SIZE_MAX;
+  std::string selection_text_;  // made again only when the selection or the scene changes
+  std::pair<Picked, std::size_t> selection_text_of_{{}, SIZE_MAX};  // the selection and scene it says
   InvariantJob invariants_;
   std::string invariants_text_;  // the finished job's line, made once
   std::uint64_t code_position_ = UINT64_MAX;

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "golden_runs.hpp"
+#include "meshstep/replay/replay.hpp"
 #include "meshstep/scene/image.hpp"
 
 namespace meshstep::viewer {
@@ -242,6 +243,59 @@ TEST(ViewerInvariants, ChecksEveryStepAndNamesTheOneThatBreaks) {
       EXPECT_EQ(log->step_kind(static_cast<std::uint64_t>(step - 1)), replay::StepKind::bisect) << json;
     }
   }
+  fs::remove_all(dir);
+}
+
+// The inspector: a vertex is named with the step that inserted it; a triangle with its
+// angles, its Lepp path; a selected triangle stays selected while it exists.
+TEST(ViewerInspector, SelectsVerticesAndTriangles) {
+  const replay::LogReader* log = golden::lesson_run(kOffcenter);
+  ASSERT_NE(log, nullptr);
+  // The vertex step 45 inserted (0-based step 44), and a triangle of the mesh after it.
+  const std::uint64_t inputs = std::strtoull(log->parameter("input_vertices", "0").c_str(), nullptr, 10);
+  std::uint32_t vertex = kNone;
+  for (std::uint32_t v = 0; v < log->vertices().size(); ++v)
+    if (log->vertices()[v].event != kNone && log->step_of_event(log->vertices()[v].event) == 44 &&
+        log->vertices()[v].input_index >= inputs)
+      vertex = v;
+  ASSERT_NE(vertex, kNone);
+  replay::Replay cursor(*log);
+  cursor.seek_step(45);
+  const TriMesh mesh = cursor.mesh();
+  ASSERT_FALSE(mesh.triangles.empty());
+  const auto& t = mesh.triangles.front();
+  const Point c{(mesh.points[t[0]].x + mesh.points[t[1]].x + mesh.points[t[2]].x) / 3,
+                (mesh.points[t[0]].y + mesh.points[t[1]].y + mesh.points[t[2]].y) / 3};
+  // The mesh's points are numbered as the log numbers vertices only for the cursor's
+  // vertices; the triangle is named by its log ids: look them up by position.
+  std::vector<std::uint32_t> ids;
+  for (const std::uint32_t i : t)
+    for (std::uint32_t v = 0; v < log->vertices().size(); ++v)
+      if (log->vertices()[v].event != kNone && log->vertices()[v].point == mesh.points[i]) {
+        ids.push_back(v);
+        break;
+      }
+  ASSERT_EQ(ids.size(), 3u);
+
+  const fs::path dir = fs::temp_directory_path() / ("viewer_inspector_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path script = dir / "s.txt", a = dir / "a.json", b = dir / "b.json";
+  char line[256];
+  std::snprintf(line, sizeof line, "seek step 45\nselect %.17g %.17g\nframes 1\nstate %s\nselect %.17g %.17g\nframes 1\nstate %s\nquit\n",
+                log->vertices()[vertex].point.x, log->vertices()[vertex].point.y, a.c_str(), c.x, c.y, b.c_str());
+  std::ofstream(script) << line;
+  const Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + log->path() + " --offscreen -q --script " + script.string());
+  if (r.status != 0 && has(r.output, "cannot open a window or draw")) GTEST_SKIP() << r.output;
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string vs = read_text(a), ts = read_text(b);
+  EXPECT_TRUE(has(vs, "\"selection\": \"vertex " + std::to_string(vertex) + " at")) << vs;
+  EXPECT_TRUE(has(vs, "Steiner, inserted by step 45 (refine)")) << vs;
+  EXPECT_TRUE(has(ts, "\"selection\": \"triangle ")) << ts;
+  for (const std::uint32_t id : ids) {
+    const std::string name = std::string(1, ' ').append(std::to_string(id));
+    EXPECT_TRUE(has(ts, name)) << id << " in " << ts;
+  }
+  EXPECT_TRUE(has(ts, "Lepp path of ")) << ts;
   fs::remove_all(dir);
 }
 

@@ -1,0 +1,113 @@
+#include "inspector.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "meshstep/geometry/predicates.hpp"
+#include "meshstep/mesh/tri_mesh.hpp"
+#include "meshstep/refine/quality.hpp"
+
+namespace meshstep::viewer {
+
+namespace {
+
+double squared(double x) { return x * x; }
+double distance2(const Point& p, const Point& q) { return squared(p.x - q.x) + squared(p.y - q.y); }
+
+bool valid(const scene::MeshLayer& mesh, const std::array<std::uint32_t, 3>& t) {
+  return t[0] < mesh.points.size() && t[1] < mesh.points.size() && t[2] < mesh.points.size();
+}
+
+// Edge i of a triangle runs from its vertex i to vertex i + 1.
+int longest_edge(const scene::MeshLayer& mesh, const std::array<std::uint32_t, 3>& t) {
+  int best = 0;
+  double longest = -1.0;
+  for (int i = 0; i < 3; ++i) {
+    const double l = distance2(mesh.points[t[i]], mesh.points[t[(i + 1) % 3]]);
+    // Ties go to the lowest vertex pair, so that both triangles of an edge agree.
+    if (l > longest) best = i, longest = l;
+  }
+  return best;
+}
+
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+  return a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
+}
+
+}  // namespace
+
+Picked pick(const scene::MeshLayer& mesh, Point at, double radius) {
+  Picked vertex, triangle;
+  double nearest = radius * radius;
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& v = mesh.triangles[t];
+    if (!valid(mesh, v)) continue;
+    for (const std::uint32_t i : v)
+      if (const double d = distance2(mesh.points[i], at); d <= nearest) {
+        nearest = d;
+        vertex = {Picked::Kind::vertex, i};
+      }
+    if (triangle.kind == Picked::Kind::none) {
+      const Point &a = mesh.points[v[0]], &b = mesh.points[v[1]], &c = mesh.points[v[2]];
+      if (orient2d(a, b, at) >= 0 && orient2d(b, c, at) >= 0 && orient2d(c, a, at) >= 0)
+        triangle = {Picked::Kind::triangle, t};
+    }
+  }
+  return vertex.kind != Picked::Kind::none ? vertex : triangle;
+}
+
+TriangleFacts triangle_facts(const scene::MeshLayer& mesh, std::uint32_t triangle) {
+  TriangleFacts f;
+  if (triangle >= mesh.triangles.size() || !valid(mesh, mesh.triangles[triangle])) return f;
+  f.vertices = mesh.triangles[triangle];
+  const Point* p[3] = {&mesh.points[f.vertices[0]], &mesh.points[f.vertices[1]], &mesh.points[f.vertices[2]]};
+  for (int i = 0; i < 3; ++i) {
+    const Point &o = *p[i], &u = *p[(i + 1) % 3], &w = *p[(i + 2) % 3];
+    const double ux = u.x - o.x, uy = u.y - o.y, wx = w.x - o.x, wy = w.y - o.y;
+    f.angles[static_cast<std::size_t>(i)] = std::atan2(std::abs(ux * wy - uy * wx), ux * wx + uy * wy) * 180.0 / M_PI;
+  }
+  f.area = 0.5 * std::abs((p[1]->x - p[0]->x) * (p[2]->y - p[0]->y) - (p[1]->y - p[0]->y) * (p[2]->x - p[0]->x));
+  f.min_angle = *std::min_element(f.angles.begin(), f.angles.end());
+  return f;
+}
+
+LeppPath lepp_path(const scene::MeshLayer& mesh, std::uint32_t triangle) {
+  LeppPath path;
+  if (triangle >= mesh.triangles.size() || !valid(mesh, mesh.triangles[triangle])) return path;
+  // Each edge's triangles (two at most in a valid mesh).
+  std::unordered_map<std::uint64_t, std::array<std::uint32_t, 2>> edges;
+  edges.reserve(mesh.triangles.size() * 2);
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& v = mesh.triangles[t];
+    if (!valid(mesh, v)) continue;
+    for (int i = 0; i < 3; ++i) {
+      auto [it, fresh] = edges.try_emplace(edge_key(v[i], v[(i + 1) % 3]), std::array<std::uint32_t, 2>{t, kNoIndex});
+      if (!fresh) it->second[1] = t;
+    }
+  }
+  std::uint32_t t = triangle;
+  for (std::size_t guard = 0; guard <= mesh.triangles.size(); ++guard) {
+    path.triangles.push_back(t);
+    const auto& v = mesh.triangles[t];
+    const int e = longest_edge(mesh, v);
+    path.a = v[static_cast<std::size_t>(e)];
+    path.b = v[static_cast<std::size_t>((e + 1) % 3)];
+    const auto& across = edges.at(edge_key(path.a, path.b));
+    const std::uint32_t next = across[0] == t ? across[1] : across[0];
+    if (next == kNoIndex) {
+      path.boundary = true;
+      return path;
+    }
+    const auto& w = mesh.triangles[next];
+    const int f = longest_edge(mesh, w);
+    if (edge_key(w[static_cast<std::size_t>(f)], w[static_cast<std::size_t>((f + 1) % 3)]) == edge_key(path.a, path.b)) {
+      path.triangles.push_back(next);  // the terminal pair
+      return path;
+    }
+    t = next;
+  }
+  return path;  // longest edges strictly grow along a path: not reached
+}
+
+}  // namespace meshstep::viewer
