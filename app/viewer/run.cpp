@@ -354,8 +354,17 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     else draw_start_page(host->width(), host->height(), options.settings, picked, picked_refine);
     if (!problem.empty()) draw_problem(problem);
     ImGui::Render();
-    host->end_frame(wants_capture ? &capture : nullptr);
+    const bool capture_window = viewer && !viewer->window_capture_path.empty();
+    host->end_frame(wants_capture || capture_window ? &capture : nullptr);
     if (wants_capture) script.after_frame(capture);
+    if (capture_window) {
+      try {
+        scene::write_png(viewer->window_capture_path, capture, 6);
+      } catch (const std::exception& e) {
+        viewer->export_status = std::string("failed: ") + e.what();
+      }
+      viewer->window_capture_path.clear();
+    }
     const std::uint64_t position = viewer ? viewer->session().cursor_info().position : 0;
     if (!options.frame_log.empty() && frames.size() < frames.capacity()) {
       const Clock::time_point end = Clock::now();

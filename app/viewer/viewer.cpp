@@ -8,6 +8,8 @@
 #include "keys.hpp"
 #include "meshstep/refine/quality.hpp"
 #include "meshstep/scene/layout.hpp"
+#include "meshstep/io/atomic_file.hpp"
+#include "meshstep/scene/svg.hpp"
 #include "timeline.hpp"
 
 namespace meshstep::viewer {
@@ -358,6 +360,7 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
   draw_pseudocode();
 
   draw_invariants();
+  draw_export();
 
   ImGui::SetNextItemOpen(layers_open_);
   if ((layers_open_ = ImGui::CollapsingHeader("Layers and colours"))) {
@@ -438,6 +441,57 @@ void Viewer::draw_pseudocode() {
     }
   }
   draw.ChannelsMerge();
+}
+
+// Pictures of the moment (canvas as PNG or SVG, the whole window) and a video of a range of
+// steps, written beside the log.
+void Viewer::draw_export() {
+  if (!ImGui::CollapsingHeader("Export")) return;
+  const replay::LogReader* log = session_->log();
+  const std::string base = log ? log->path() : session_->title();
+  const auto step = static_cast<unsigned long long>(session_->cursor_info().step);
+  if (ImGui::Button("canvas PNG")) {
+    const std::string file = export_name(base, step, "step", ".png");
+    try {
+      scene::write_png(file, canvas_picture(), 6);
+      export_status = "wrote " + file;
+    } catch (const std::exception& e) {
+      export_status = std::string("failed: ") + e.what();
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("canvas SVG")) {
+    const std::string file = export_name(base, step, "step", ".svg");
+    try {
+      io::write_file_atomically(file, scene::to_svg(session_->scene(), camera_));
+      export_status = "wrote " + file;
+    } catch (const std::exception& e) {
+      export_status = std::string("failed: ") + e.what();
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("window PNG")) {
+    window_capture_path = export_name(base, step, "window_step", ".png");
+    export_status = "wrote " + window_capture_path;
+  }
+  if (log && log->step_count() > 0) {
+    const int last = static_cast<int>(log->step_count());
+    if (export_range_[1] == 0) export_range_[1] = last;
+    ImGui::SetNextItemWidth(160);
+    ImGui::DragInt2("steps##range", export_range_, 1.0f, 0, last);
+    ImGui::SameLine();
+    if (export_job_.running()) {
+      ImGui::TextDisabled("writing...");
+    } else if (ImGui::Button("video MP4")) {
+      const int from = std::clamp(std::min(export_range_[0], export_range_[1]), 0, last);
+      const int to = std::clamp(std::max(export_range_[0], export_range_[1]), 0, last);
+      const std::string file = export_name(base, static_cast<unsigned long long>(from), "steps_", "") + "-" +
+                               std::to_string(to) + ".mp4";
+      export_job_.start(log->path(), file, static_cast<unsigned long long>(from), static_cast<unsigned long long>(to));
+    }
+    if (!export_job_.status().empty()) ImGui::TextWrapped("%s", export_job_.status().c_str());
+  }
+  if (!export_status.empty()) ImGui::TextWrapped("%s", export_status.c_str());
 }
 
 // "Check every step": the mesh valid and Delaunay at every step boundary, in the background;

@@ -15,6 +15,7 @@
 
 #include "meshstep/scene/camera.hpp"
 #include "render/renderer.hpp"
+#include "export_job.hpp"
 #include "inspector.hpp"
 #include "invariant_job.hpp"
 #include "pseudocode.hpp"
@@ -46,6 +47,10 @@ class Viewer {
   // The options a person set last time (settings.hpp), and back.
   void apply(const Settings& settings);
   void capture(Settings& settings) const;
+
+  // Set by the export panel: the host reads the next whole frame into this file.
+  std::string window_capture_path;
+  std::string export_status;  // what the last export wrote, or why it failed
 
   // UI state that keys and scripts change.
   bool help_open = false;
@@ -80,6 +85,7 @@ class Viewer {
   void draw_pseudocode();
   void draw_invariants();
   void draw_selection_panel();
+  void draw_export();
   void draw_selection_overlay(float x, float y);
   void refresh_selection();
   void draw_timeline_bar(float height);
@@ -120,6 +126,8 @@ class Viewer {
   std::string selection_text_;  // made again only when the selection or the scene changes
   std::pair<Picked, std::size_t> selection_text_of_{{}, SIZE_MAX};  // the selection and scene it says
   InvariantJob invariants_;
+  ExportJob export_job_;
+  int export_range_[2] = {0, 0};
   std::string invariants_text_;  // the finished job's line, made once
   std::uint64_t code_position_ = UINT64_MAX;
   TimelineCache timeline_cache_;

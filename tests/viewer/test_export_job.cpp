@@ -1,0 +1,41 @@
+// Export from the viewer: the names of the files it writes, and a video of a range of steps
+// made by `meshstep export` in the background.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
+
+#include "export_job.hpp"
+#include "golden_runs.hpp"
+
+namespace meshstep::viewer {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(ViewerExport, NamesFilesBesideTheLog) {
+  EXPECT_EQ(export_name("/runs/lesson.mslog", 45, "step", ".png"), "/runs/lesson_step45.png");
+  EXPECT_EQ(export_name("lesson.mslog", 3, "window_step", ".png"), "./lesson_window_step3.png");
+}
+
+TEST(ViewerExport, WritesAVideoOfARangeInTheBackground) {
+  if (std::system("command -v ffmpeg > /dev/null") != 0) GTEST_SKIP() << "ffmpeg is not installed";
+  const replay::LogReader* log = golden::lesson_run("--algorithm offcenter --min-angle 30");
+  ASSERT_NE(log, nullptr);
+  const fs::path out = fs::temp_directory_path() / ("viewer_export_" + std::to_string(::getpid()) + ".mp4");
+  ExportJob job(MESHSTEP_BINARY);
+  ASSERT_TRUE(job.start(log->path(), out.string(), 10, 20)) << job.status();
+  EXPECT_NE(job.status().find("writing"), std::string::npos);
+  for (int i = 0; i < 600 && job.running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_EQ(job.status(), "wrote " + out.string());
+  EXPECT_GT(fs::file_size(out), 1000u);
+  fs::remove(out);
+
+  ExportJob missing("/nonexistent/meshstep");
+  EXPECT_FALSE(missing.start(log->path(), out.string(), 0, 1));
+  EXPECT_NE(missing.status().find("cannot run /nonexistent/meshstep"), std::string::npos) << missing.status();
+}
+
+}  // namespace
+}  // namespace meshstep::viewer
