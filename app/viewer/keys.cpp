@@ -37,6 +37,14 @@ std::vector<KeyAction> make_actions() {
   add({GLFW_KEY_R}, "R", "next refinement step", [](Viewer& v) { v.session().find_step(StepKind::refine, +1); });
   add({GLFW_KEY_R, true}, "Shift+R", "previous refinement step",
       [](Viewer& v) { v.session().find_step(StepKind::refine, -1); });
+  add({GLFW_KEY_J}, "J", "next rejected point (it encroached a segment)",
+      [](Viewer& v) { v.session().find_event(is_rejected_point, +1); });
+  add({GLFW_KEY_J, true}, "Shift+J", "previous rejected point",
+      [](Viewer& v) { v.session().find_event(is_rejected_point, -1); });
+  add({GLFW_KEY_K}, "K", "next cavity of more than 10 faces",
+      [](Viewer& v) { v.session().find_event(is_big_cavity, +1); });
+  add({GLFW_KEY_K, true}, "Shift+K", "previous cavity of more than 10 faces",
+      [](Viewer& v) { v.session().find_event(is_big_cavity, -1); });
   add({GLFW_KEY_EQUAL}, "+", "play twice as fast", [](Viewer& v) { v.session().scale_speed(2.0); });
   add({GLFW_KEY_MINUS}, "-", "play half as fast", [](Viewer& v) { v.session().scale_speed(0.5); });
   add({GLFW_KEY_U}, "U", "play by events / steps / phases", [](Viewer& v) {

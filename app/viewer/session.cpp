@@ -125,6 +125,37 @@ bool Session::find_step(replay::StepKind kind, int direction) {
   return false;
 }
 
+bool Session::find_event(const std::function<bool(const replay::Event&)>& wanted, int direction) {
+  if (!log_) return false;
+  const std::uint64_t at = cursor_->position(), n = log_->event_count();
+  if (direction > 0) {
+    for (std::uint64_t e = at; e < n; ++e)
+      if (wanted(log_->event(e))) {
+        seek(e + 1);
+        return true;
+      }
+  } else {
+    // The event just applied is the one the cursor shows: look before it.
+    for (std::uint64_t e = at >= 1 ? at - 1 : 0; e-- > 0;)
+      if (wanted(log_->event(e))) {
+        seek(e + 1);
+        return true;
+      }
+  }
+  return false;
+}
+
+bool is_rejected_point(const replay::Event& e) {
+  return e.type == replay::EventType::encroached && e.ids[2] == kNone;
+}
+
+bool is_big_cavity(const replay::Event& e) {
+  if (e.type != replay::EventType::cavity) return false;
+  std::size_t removed = 0;
+  for (const replay::SlotWrite& w : e.writes) removed += !w.before.dead();
+  return removed > 10;
+}
+
 void Session::toggle_play() {
   if (!log_) return;
   // Play at the end starts again from the beginning, as a video player does.

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -39,6 +40,11 @@ struct CursorInfo {
   std::optional<replay::Phase> phase;      // the innermost phase the cursor is in
 };
 
+// Events worth jumping to: a point rejected because it encroached a segment; a
+// Bowyer-Watson cavity of more than 10 faces.
+bool is_rejected_point(const replay::Event& e);
+bool is_big_cavity(const replay::Event& e);
+
 class Session {
  public:
   // A recorded run; throws InputError for a file that is not a valid log.
@@ -63,6 +69,9 @@ class Session {
   void to_end();
   // To the end of the next (previous) step of this kind; false when there is none.
   bool find_step(replay::StepKind kind, int direction);
+  // To just after the next (previous) event that `wanted` accepts; false when there is none.
+  // Scans the events one by one (a few million a second).
+  bool find_event(const std::function<bool(const replay::Event&)>& wanted, int direction);
 
   Playback& playback() { return playback_; }
   const Playback& playback() const { return playback_; }

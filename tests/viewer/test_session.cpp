@@ -104,6 +104,42 @@ TEST(ViewerSession, FindsTheNextAndPreviousStepOfAKind) {
   EXPECT_FALSE(s->find_step(StepKind::bisect, +1)) << "an off-center run bisects nothing";
 }
 
+TEST(ViewerSession, FindsRejectedPointsAndBigCavities) {
+  auto s = lesson();
+  ASSERT_TRUE(s);
+  const replay::LogReader& log = *s->log();
+  // Every rejected point and big cavity of the run, found by a plain scan.
+  std::vector<std::uint64_t> rejected, cavities;
+  for (std::uint64_t e = 0; e < log.event_count(); ++e) {
+    if (is_rejected_point(log.event(e))) rejected.push_back(e + 1);
+    if (is_big_cavity(log.event(e))) cavities.push_back(e + 1);
+  }
+  ASSERT_GE(rejected.size(), 2u) << "the teaching example rejects points near its segments";
+  s->to_start();
+  for (const std::uint64_t at : rejected) {
+    ASSERT_TRUE(s->find_event(is_rejected_point, +1));
+    EXPECT_EQ(s->cursor_info().position, at);
+  }
+  EXPECT_FALSE(s->find_event(is_rejected_point, +1));
+  ASSERT_TRUE(s->find_event(is_rejected_point, -1));
+  EXPECT_EQ(s->cursor_info().position, rejected[rejected.size() - 2]);
+  // An off-center run by flips has no cavity at all; a cavity run's big ones are found.
+  EXPECT_TRUE(cavities.empty());
+  s->to_start();
+  EXPECT_FALSE(s->find_event(is_big_cavity, +1));
+  auto bw = lesson("--algorithm circumcenter --insertion cavity --min-angle 30");
+  ASSERT_TRUE(bw);
+  std::size_t big = 0, any = 0;
+  for (std::uint64_t e = 0; e < bw->log()->event_count(); ++e) {
+    const replay::Event ev = bw->log()->event(e);
+    any += ev.type == replay::EventType::cavity;
+    big += is_big_cavity(ev);
+  }
+  EXPECT_GT(any, 0u);
+  bw->to_start();
+  EXPECT_EQ(bw->find_event(is_big_cavity, +1), big > 0);
+}
+
 TEST(ViewerSession, PlaysAtItsSpeedAndStopsAtTheEnd) {
   auto s = lesson();
   ASSERT_TRUE(s);
