@@ -250,6 +250,10 @@ class ScriptPlayer {
       viewer->select_at({std::strtod(a.args[0].c_str(), nullptr), std::strtod(a.args[1].c_str(), nullptr)});
       return false;
     }
+    if (v == "wait") {
+      while (!viewer->history().ready()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      return false;
+    }
     if (v == "check") {
       viewer->invariants().start(viewer->session().log() ? viewer->session().log()->path() : std::string());
       viewer->invariants().wait();

@@ -70,7 +70,7 @@ std::string check(const ScriptAction& a) {
     if (n == 1 && is_number(a.args[0], true, true)) return "";
     return "expected: wheel N";
   }
-  if (v == "click" || v == "quit" || v == "check") return count(0, v.c_str());
+  if (v == "click" || v == "quit" || v == "check" || v == "wait") return count(0, v.c_str());
   if (v == "screenshot" || v == "canvas" || v == "state" || v == "open") return count(1, (v + " FILE").c_str());
   return "unknown action '" + v + "'";
 }

@@ -85,6 +85,12 @@ std::string state_json(Viewer& v) {
   const auto& invariants = v.invariants().report();
   field("invariants", invariants ? quoted(describe(*invariants))
                                  : v.invariants().error().empty() ? "null" : quoted(v.invariants().error()));
+  std::string steps = "[";
+  for (const std::uint64_t k : v.selected_vertex_steps()) steps += (steps.size() > 1 ? ", " : "") + std::to_string(k);
+  field("selection_history", steps + "]");
+  field("history_index", v.history().ready() ? "{\"seconds\": " + number(v.history().build_seconds()) +
+                                                  ", \"bytes\": " + std::to_string(v.history().bytes()) + "}"
+                                            : "null");
   const std::string selected = v.selection_text();
   field("selection", selected.empty() ? "null" : quoted(selected));
   field("scene_builds", std::to_string(s.scene_builds()));

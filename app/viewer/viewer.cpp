@@ -41,8 +41,21 @@ BBox run_box(Session& session) {
 }  // namespace
 
 Viewer::Viewer(std::unique_ptr<Session> session) : session_(std::move(session)) {
-  if (const replay::LogReader* log = session_->log())
+  if (const replay::LogReader* log = session_->log()) {
     angle_bound_ = std::strtod(log->parameter("min_angle", "0").c_str(), nullptr);
+    history_.build(log->path());
+  }
+}
+
+std::vector<std::uint64_t> Viewer::selected_vertex_steps() const {
+  std::vector<std::uint64_t> steps;
+  const replay::LogReader* log = session_->log();
+  if (!log || selected_.kind != Picked::Kind::vertex) return steps;
+  for (const std::uint32_t e : history_.events_of_vertex(selected_.index)) {
+    const std::uint64_t k = log->step_of_event(e);
+    if (k < log->step_count() && (steps.empty() || steps.back() != k + 1)) steps.push_back(k + 1);
+  }
+  return steps;
 }
 Viewer::~Viewer() = default;
 
@@ -304,6 +317,24 @@ void Viewer::draw_selection_panel() {
   if (selected_.kind == Picked::Kind::vertex && log && selected_.index < log->vertices().size()) {
     const std::uint64_t step = log->step_of_event(log->vertices()[selected_.index].event);
     if (step < log->step_count() && ImGui::Button("Go to the step that inserted it")) session_->seek_step(step + 1);
+    // Its history: the steps that inserted it, flipped or split its edges, removed it.
+    if (!history_.ready()) {
+      ImGui::TextDisabled("indexing the run's history...");
+    } else {
+      if (history_steps_of_ != std::pair{selected_, std::size_t{0}}) {
+        history_steps_ = selected_vertex_steps();
+        history_steps_of_ = {selected_, 0};
+      }
+      ImGui::Text("history: %zu steps (ticks on the timeline)", history_steps_.size());
+      constexpr std::size_t kShown = 16;
+      for (std::size_t i = 0; i < std::min(history_steps_.size(), kShown); ++i) {
+        char label[32];
+        std::snprintf(label, sizeof label, "%llu", static_cast<unsigned long long>(history_steps_[i]));
+        if (i % 8) ImGui::SameLine();
+        if (ImGui::SmallButton(label)) session_->seek_step(history_steps_[i]);
+      }
+      if (history_steps_.size() > kShown) ImGui::TextDisabled("and %zu more", history_steps_.size() - kShown);
+    }
   }
   if (ImGui::Button("Clear the selection")) selected_ = {};
 }
@@ -577,6 +608,15 @@ void Viewer::draw_timeline_bar(float height) {
     session_->seek(static_cast<std::uint64_t>(std::llround(t * static_cast<double>(events))));
   }
   draw_timeline_picture(*ImGui::GetWindowDrawList(), log, timeline_cache_, *session_, origin, ImVec2(width, height));
+  // The selected vertex's history as ticks along the bar's bottom.
+  if (selected_.kind == Picked::Kind::vertex) {
+    ImDrawList& draw = *ImGui::GetWindowDrawList();
+    const float bottom = origin.y + height;
+    for (const std::uint32_t e : history_.events_of_vertex(selected_.index)) {
+      const float x = origin.x + static_cast<float>(static_cast<double>(e) / static_cast<double>(events)) * width;
+      draw.AddLine(ImVec2(x, bottom - 16.0f), ImVec2(x, bottom), IM_COL32(204, 121, 167, 255), 2.0f);
+    }
+  }
 }
 
 void Viewer::draw_help() {

@@ -15,6 +15,7 @@
 
 #include "meshstep/scene/camera.hpp"
 #include "render/renderer.hpp"
+#include "element_index.hpp"
 #include "export_job.hpp"
 #include "inspector.hpp"
 #include "invariant_job.hpp"
@@ -69,6 +70,10 @@ class Viewer {
 
   // Checks every step boundary of the log in the background ("check every step").
   InvariantJob& invariants() { return invariants_; }
+  // The element history's index (built in the background when the log opens).
+  const ElementIndex& history() const { return history_; }
+  // The steps (1-based, as the caption counts) whose events name the selected vertex.
+  std::vector<std::uint64_t> selected_vertex_steps() const;
 
   // The canvas's rectangle in the window (pixels), as the last frame laid it out.
   ImVec4 canvas_rect() const { return canvas_rect_; }
@@ -124,8 +129,11 @@ class Viewer {
   LeppPath lepp_;
   std::size_t selection_build_ = SIZE_MAX;
   std::string selection_text_;  // made again only when the selection or the scene changes
+  std::vector<std::uint64_t> history_steps_;  // of the selected vertex
+  std::pair<Picked, std::size_t> history_steps_of_{{}, SIZE_MAX};
   std::pair<Picked, std::size_t> selection_text_of_{{}, SIZE_MAX};  // the selection and scene it says
   InvariantJob invariants_;
+  ElementIndex history_;
   ExportJob export_job_;
   int export_range_[2] = {0, 0};
   std::string invariants_text_;  // the finished job's line, made once

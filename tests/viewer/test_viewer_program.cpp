@@ -281,7 +281,7 @@ TEST(ViewerInspector, SelectsVerticesAndTriangles) {
   fs::create_directories(dir);
   const fs::path script = dir / "s.txt", a = dir / "a.json", b = dir / "b.json";
   char line[256];
-  std::snprintf(line, sizeof line, "seek step 45\nselect %.17g %.17g\nframes 1\nstate %s\nselect %.17g %.17g\nframes 1\nstate %s\nquit\n",
+  std::snprintf(line, sizeof line, "seek step 45\nwait\nselect %.17g %.17g\nframes 1\nstate %s\nselect %.17g %.17g\nframes 1\nstate %s\nquit\n",
                 log->vertices()[vertex].point.x, log->vertices()[vertex].point.y, a.c_str(), c.x, c.y, b.c_str());
   std::ofstream(script) << line;
   const Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + log->path() + " --offscreen -q --script " + script.string());
@@ -290,6 +290,22 @@ TEST(ViewerInspector, SelectsVerticesAndTriangles) {
   const std::string vs = read_text(a), ts = read_text(b);
   EXPECT_TRUE(has(vs, "\"selection\": \"vertex " + std::to_string(vertex) + " at")) << vs;
   EXPECT_TRUE(has(vs, "Steiner, inserted by step 45 (refine)")) << vs;
+  // Its history: step 45 first, then every step whose mesh-changing events name it.
+  std::vector<std::uint64_t> expected;
+  for (std::uint64_t e = 0; e < log->event_count(); ++e) {
+    const replay::Event ev = log->event(e);
+    const replay::EventSchema& schema = replay::schema(ev.type);
+    bool names = false;
+    for (std::size_t i = 0; i < schema.id_count; ++i)
+      names = names || (schema.id_kinds[i] == replay::IdKind::vertex && ev.ids[i] == vertex);
+    const std::uint64_t step = log->step_of_event(e) + 1;
+    if (schema.changes_mesh() && names && (expected.empty() || expected.back() != step)) expected.push_back(step);
+  }
+  std::string list = "[";
+  for (const std::uint64_t k : expected) list += (list.size() > 1 ? ", " : "") + std::to_string(k);
+  ASSERT_GE(expected.size(), 2u);
+  EXPECT_EQ(expected.front(), 45u);
+  EXPECT_TRUE(has(vs, "\"selection_history\": " + list + "]")) << list << "] in " << vs;
   EXPECT_TRUE(has(ts, "\"selection\": \"triangle ")) << ts;
   for (const std::uint32_t id : ids) {
     const std::string name = std::string(1, ' ').append(std::to_string(id));
