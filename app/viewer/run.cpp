@@ -251,7 +251,8 @@ class ScriptPlayer {
       return false;
     }
     if (v == "wait") {
-      while (!viewer->history().ready()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      while (!viewer->history().ready() || !viewer->plots().ready())
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
       return false;
     }
     if (v == "check") {

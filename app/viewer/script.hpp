@@ -18,7 +18,8 @@
 //   canvas FILE         the canvas alone (the renderer's picture), PNG or SVG
 //   state FILE          the viewer's state as JSON (cursor, playback, options, panel text)
 //   check               check every step boundary (valid, Delaunay) and wait for it
-//   wait                wait for the background index of the elements' history
+//   wait                wait for the background work of an opened log (the elements' history
+//                       index, the plots over the whole run)
 //   open FILE           open a log, mesh or input as a dropped file would (an input is
 //                       triangulated); without INPUT the script starts on the start page
 //   quit

@@ -93,6 +93,13 @@ std::string state_json(Viewer& v) {
                                             : "null");
   const std::string selected = v.selection_text();
   field("selection", selected.empty() ? "null" : quoted(selected));
+  if (v.plots().ready() && !v.plots().triangles().empty()) {
+    const std::size_t k = std::min<std::size_t>(c.step, v.plots().triangles().size() - 1);
+    field("plots_at_cursor", "{\"triangles\": " + number(v.plots().triangles()[k]) +
+                                 ", \"smallest_angle\": " + number(v.plots().smallest_angle()[k]) +
+                                 ", \"bad\": " + number(v.plots().bad()[k]) + ", \"steps\": " +
+                                 std::to_string(v.plots().triangles().size()) + "}");
+  }
   field("scene_builds", std::to_string(s.scene_builds()));
   out += "  \"canvas_renders\": " + std::to_string(v.canvas_renders()) + "\n}\n";
   return out;

@@ -44,6 +44,7 @@ Viewer::Viewer(std::unique_ptr<Session> session) : session_(std::move(session)) 
   if (const replay::LogReader* log = session_->log()) {
     angle_bound_ = std::strtod(log->parameter("min_angle", "0").c_str(), nullptr);
     history_.build(log->path());
+    plots_.build(log->path(), angle_bound_);
   }
 }
 
@@ -339,6 +340,47 @@ void Viewer::draw_selection_panel() {
   if (ImGui::Button("Clear the selection")) selected_ = {};
 }
 
+// The whole run at a glance: triangles, smallest angle and bad triangles after each step,
+// the cursor's step marked on each.
+void Viewer::draw_run_plots(float width) {
+  const replay::LogReader* log = session_->log();
+  if (!log) return;
+  ImGui::Separator();
+  if (!plots_.ready()) {
+    ImGui::TextDisabled("plotting the whole run...");
+    return;
+  }
+  if (!plots_.error().empty() || plots_.triangles().empty()) return;
+  const std::array<const std::vector<float>*, 3> series = {&plots_.triangles(), &plots_.smallest_angle(), &plots_.bad()};
+  if (!plot_scales_known_) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      float lo = FLT_MAX, hi = -FLT_MAX;
+      for (const float v : *series[i])
+        if (!std::isnan(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+      plot_scales_[2 * i] = lo == FLT_MAX ? 0.0f : std::min(lo, 0.0f);
+      plot_scales_[2 * i + 1] = hi == -FLT_MAX ? 1.0f : std::max(hi, 1.0f);
+    }
+    plot_scales_known_ = true;
+  }
+  static constexpr const char* kTitles[] = {"triangles", "smallest angle", "bad triangles left"};
+  const std::uint64_t step = session_->cursor_info().step;
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (i == 2 && angle_bound_ <= 0.0) break;
+    const std::vector<float>& v = *series[i];
+    const std::size_t at = std::min<std::size_t>(step, v.size() - 1);
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "%s: %.6g", kTitles[i], static_cast<double>(v[at]));
+    ImGui::PushID(static_cast<int>(i));
+    ImGui::PlotLines("##plot", v.data(), static_cast<int>(v.size()), 0, overlay, plot_scales_[2 * i],
+                     plot_scales_[2 * i + 1], ImVec2(width, 48.0f));
+    ImGui::PopID();
+    const ImVec2 lo = ImGui::GetItemRectMin();
+    const float plot_w = width;
+    const float x = lo.x + plot_w * static_cast<float>(at) / static_cast<float>(std::max<std::size_t>(1, v.size() - 1));
+    ImGui::GetWindowDrawList()->AddLine(ImVec2(x, lo.y), ImVec2(x, lo.y + 48.0f), IM_COL32(255, 60, 60, 255), 1.5f);
+  }
+}
+
 const Stats& Viewer::stats() {
   const scene::Scene& s = session_->scene();
   if (stats_of_build_ == session_->scene_builds()) return stats_;
@@ -426,6 +468,7 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
       ImGui::GetWindowDrawList()->AddLine(ImVec2(x, lo.y), ImVec2(x, hi.y), IM_COL32(213, 94, 0, 255), 2.0f);
       ImGui::Text("bound %.4g\u00B0 (the orange line)", bound);
     }
+    draw_run_plots(w - 24.0f);
   }
   ImGui::End();
 }

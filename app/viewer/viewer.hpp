@@ -20,6 +20,7 @@
 #include "inspector.hpp"
 #include "invariant_job.hpp"
 #include "pseudocode.hpp"
+#include "run_plots.hpp"
 #include "session.hpp"
 #include "settings.hpp"
 #include "timeline.hpp"
@@ -72,6 +73,8 @@ class Viewer {
   InvariantJob& invariants() { return invariants_; }
   // The element history's index (built in the background when the log opens).
   const ElementIndex& history() const { return history_; }
+  // The plots over the whole run (built in the background when the log opens).
+  const RunPlots& plots() const { return plots_; }
   // The steps (1-based, as the caption counts) whose events name the selected vertex.
   std::vector<std::uint64_t> selected_vertex_steps() const;
 
@@ -134,6 +137,10 @@ class Viewer {
   std::pair<Picked, std::size_t> selection_text_of_{{}, SIZE_MAX};  // the selection and scene it says
   InvariantJob invariants_;
   ElementIndex history_;
+  RunPlots plots_;
+  std::array<float, 6> plot_scales_{};  // min, max of each plot, found once when ready
+  bool plot_scales_known_ = false;
+  void draw_run_plots(float width);
   ExportJob export_job_;
   int export_range_[2] = {0, 0};
   std::string invariants_text_;  // the finished job's line, made once

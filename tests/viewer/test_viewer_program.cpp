@@ -315,6 +315,39 @@ TEST(ViewerInspector, SelectsVerticesAndTriangles) {
   fs::remove_all(dir);
 }
 
+// The plots over the whole run agree with the mesh at the cursor, step by step.
+TEST(ViewerPlots, AgreeWithTheMeshAtEveryStepLookedAt) {
+  const replay::LogReader* log = golden::lesson_run(kOffcenter);
+  ASSERT_NE(log, nullptr);
+  const fs::path dir = fs::temp_directory_path() / ("viewer_plots_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::string script = "wait\n";
+  const std::vector<std::uint64_t> steps = {0, 10, 24, 45, log->step_count()};
+  const auto state_file = [&](std::uint64_t k) { return dir / std::to_string(k).append(".json"); };
+  for (const std::uint64_t k : steps)
+    script.append("seek step ").append(std::to_string(k)).append("\nstate ").append(state_file(k).string()).append("\n");
+  std::ofstream(dir / "s.txt") << script << "quit\n";
+  const Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + log->path() + " --offscreen -q --script " +
+                       (dir / "s.txt").string());
+  if (r.status != 0 && has(r.output, "cannot open a window or draw")) GTEST_SKIP() << r.output;
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (const std::uint64_t k : steps) {
+    const std::string json = read_text(state_file(k));
+    const auto number_after = [&](const std::string& tag) {
+      const auto at = json.find(tag);
+      return at == std::string::npos ? NAN : std::atof(json.c_str() + at + tag.size());
+    };
+    // The plots' figures (a float each) against the statistics of the scene at the cursor.
+    EXPECT_EQ(number_after("\"plots_at_cursor\": {\"triangles\": "), number_after("\"triangles\": ")) << json;
+    const double plotted = number_after("\"smallest_angle\": "), stats = number_after("\"min_angle\": ");
+    if (number_after("\"triangles\": ") > 0) {
+      EXPECT_NEAR(plotted, stats, 1e-4) << json;
+    }
+    EXPECT_EQ(number_after("\"steps\": "), static_cast<double>(log->step_count() + 1)) << json;
+  }
+  fs::remove_all(dir);
+}
+
 // Without INPUT the viewer starts on the start page: a file that cannot be opened is
 // reported there, and the first example's "refine" button records and opens its run.
 TEST(ViewerStartPage, OpensAnExampleOrSaysWhyNot) {
