@@ -1,0 +1,254 @@
+// Plays a script (script.hpp) into the viewer, frame by frame: actions that change state
+// take no frame; a key, a click, a drag, `frames` and `play` take the frames they need.
+#pragma once
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "keys.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/io/atomic_file.hpp"
+#include "meshstep/scene/image.hpp"
+#include "meshstep/scene/svg.hpp"
+#include "script.hpp"
+#include "state_json.hpp"
+#include "viewer.hpp"
+
+namespace meshstep::viewer {
+
+class ScriptPlayer {
+ public:
+  ScriptPlayer(const std::vector<ScriptAction>& actions, const std::string& path) : actions_(actions), path_(path) {}
+
+  bool done() const { return next_ >= actions_.size() && frames_left_ == 0 && pending_.empty() && !pause_now_; }
+  bool quit() const { return quit_; }
+
+  // Before ImGui::NewFrame: sets this frame's input. Returns true when the frame must be
+  // captured for a screenshot.
+  // `viewer` is null on the start page; `open` receives the file of an `open` action (the
+  // loop opens it before the next frame).
+  bool before_frame(Viewer* viewer, std::string& open, const std::string& problem) {
+    ImGuiIO& io = ImGui::GetIO();
+    release(io);
+    // `play N` pauses after its N-th frame has played, not before.
+    if (pause_now_ && viewer) {
+      viewer->session().playback().playing = false;
+      pause_now_ = false;
+    }
+    while (frames_left_ == 0 && pending_.empty() && next_ < actions_.size() && !quit_ && open.empty()) {
+      const ScriptAction& a = actions_[next_++];
+      if (a.verb == "open") {
+        open = a.args[0];
+        pending_.push_back({});  // the frame that shows it
+        break;
+      }
+      if (a.verb == "state" && !viewer) {
+        io::write_file_atomically(a.args[0], "{\n  \"page\": \"start\",\n  \"problem\": \"" + escaped(problem) + "\"\n}\n");
+        continue;
+      }
+      if (!viewer && needs_viewer(a.verb))
+        throw InputError(path_, static_cast<std::size_t>(a.line), "no run is open yet for '" + a.verb + "' (open one first)");
+      if (run(a, viewer, io)) break;
+    }
+    if (!pending_.empty()) {
+      const Input in = pending_.front();
+      pending_.erase(pending_.begin());
+      apply(in, io);
+    } else if (frames_left_ > 0) {
+      --frames_left_;
+      if (frames_left_ == 0 && stop_playing_) {
+        pause_now_ = true;
+        stop_playing_ = false;
+      }
+    }
+    return capture_ != nullptr;
+  }
+
+  void after_frame(const scene::Image& captured) {
+    if (!capture_) return;
+    scene::write_png(capture_->args[0], captured, 6);
+    capture_ = nullptr;
+  }
+
+ private:
+  static bool ends_with(const std::string& s, const char* tail) {
+    const std::string t(tail);
+    return s.size() >= t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
+  }
+
+  static bool needs_viewer(const std::string& verb) {
+    return !(verb == "frames" || verb == "key" || verb == "mouse" || verb == "click" || verb == "drag" ||
+             verb == "wheel" || verb == "screenshot" || verb == "quit");
+  }
+
+  static std::string escaped(const std::string& s) {
+    std::string out;
+    for (const char c : s) {
+      if (c == '"' || c == '\\') out += '\\';
+      if (static_cast<unsigned char>(c) >= 0x20) out += c;
+    }
+    return out;
+  }
+
+  struct Input {
+    int key = -1;
+    bool shift = false, ctrl = false;
+    bool button = false;  // left button held this frame
+    float dx = 0, dy = 0, wheel = 0;
+  };
+
+  void release(ImGuiIO& io) {
+    if (held_key_ >= 0) io.KeysDown[held_key_] = false;
+    held_key_ = -1;
+    io.KeyShift = io.KeyCtrl = false;
+    io.MouseWheel = 0.0f;
+    io.MouseDown[0] = false;
+  }
+
+  void apply(const Input& in, ImGuiIO& io) {
+    if (in.key >= 0) {
+      io.KeysDown[in.key] = true;
+      held_key_ = in.key;
+      io.KeyShift = in.shift;
+      io.KeyCtrl = in.ctrl;
+    }
+    mouse_x_ += in.dx;
+    mouse_y_ += in.dy;
+    io.MousePos = ImVec2(mouse_x_, mouse_y_);
+    io.MouseDown[0] = in.button;
+    io.MouseWheel = in.wheel;
+  }
+
+  // Runs one action; true when it takes frames (the loop then draws them).
+  // `viewer` is null only for the actions that need none (needs_viewer).
+  bool run(const ScriptAction& a, Viewer* viewer, ImGuiIO& io) {
+    const auto& v = a.verb;
+    if (v == "seek") {
+      if (a.args[0] == "start") viewer->session().to_start();
+      else if (a.args[0] == "end") viewer->session().to_end();
+      else if (a.args[0] == "step") viewer->session().seek_step(std::strtoull(a.args[1].c_str(), nullptr, 10));
+      else viewer->session().seek(std::strtoull(a.args[1].c_str(), nullptr, 10));
+      return false;
+    }
+    if (v == "frames") {
+      frames_left_ = std::strtoull(a.args[0].c_str(), nullptr, 10);
+      return frames_left_ > 0;
+    }
+    if (v == "play") {
+      frames_left_ = std::strtoull(a.args[0].c_str(), nullptr, 10);
+      if (!viewer->session().playback().playing) viewer->session().toggle_play();
+      stop_playing_ = true;
+      return frames_left_ > 0;
+    }
+    if (v == "key") {
+      const Chord c = *parse_chord(a.args[0]);
+      pending_.push_back({c.key, c.shift, c.ctrl});
+      pending_.push_back({});  // released on the next frame
+      return true;
+    }
+    if (v == "toggle") {
+      viewer->toggle_layer(*scene::parse_layer(a.args[0]));
+      return false;
+    }
+    if (v == "color-by") {
+      viewer->session().set_color_by(*scene::parse_color_by(a.args[0]));
+      return false;
+    }
+    if (v == "speed") {
+      viewer->session().playback().speed = std::clamp(std::strtod(a.args[0].c_str(), nullptr), Playback::kMinSpeed, Playback::kMaxSpeed);
+      return false;
+    }
+    if (v == "unit") {
+      viewer->session().playback().unit = a.args[0] == "event" ? Unit::event : a.args[0] == "step" ? Unit::step : Unit::phase;
+      return false;
+    }
+    if (v == "mouse") {
+      mouse_x_ = std::strtof(a.args[0].c_str(), nullptr);
+      mouse_y_ = std::strtof(a.args[1].c_str(), nullptr);
+      pending_.push_back({});
+      return true;
+    }
+    if (v == "click") {
+      Input down;
+      down.button = true;
+      pending_.push_back(down);
+      pending_.push_back({});
+      return true;
+    }
+    if (v == "drag") {
+      const float dx = std::strtof(a.args[0].c_str(), nullptr), dy = std::strtof(a.args[1].c_str(), nullptr);
+      Input press;
+      press.button = true;
+      pending_.push_back(press);
+      for (int i = 0; i < 4; ++i) {
+        Input move = press;
+        move.dx = dx / 4.0f;
+        move.dy = dy / 4.0f;
+        pending_.push_back(move);
+      }
+      pending_.push_back({});
+      return true;
+    }
+    if (v == "wheel") {
+      Input turn;
+      turn.wheel = std::strtof(a.args[0].c_str(), nullptr);
+      pending_.push_back(turn);
+      return true;
+    }
+    if (v == "screenshot") {
+      capture_ = &a;
+      frames_left_ = 1;
+      return true;
+    }
+    if (v == "canvas") {
+      const std::string& file = a.args[0];
+      if (ends_with(file, ".svg")) io::write_file_atomically(file, scene::to_svg(viewer->session().scene(), viewer->camera()));
+      else scene::write_png(file, viewer->canvas_picture(), 6);
+      return false;
+    }
+    if (v == "state") {
+      io::write_file_atomically(a.args[0], state_json(*viewer));
+      return false;
+    }
+    if (v == "select") {
+      viewer->select_at({std::strtod(a.args[0].c_str(), nullptr), std::strtod(a.args[1].c_str(), nullptr)});
+      return false;
+    }
+    if (v == "wait") {
+      while (!viewer->history().ready() || !viewer->plots().ready())
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      return false;
+    }
+    if (v == "check") {
+      viewer->invariants().start(viewer->session().log() ? viewer->session().log()->path() : std::string());
+      viewer->invariants().wait();
+      return false;
+    }
+    if (v == "quit") {
+      quit_ = true;
+      return true;
+    }
+    (void)io;
+    throw InputError(path_, static_cast<std::size_t>(a.line), "cannot run '" + v + "'");
+  }
+
+  const std::vector<ScriptAction>& actions_;
+  std::string path_;
+  std::size_t next_ = 0;
+  std::uint64_t frames_left_ = 0;
+  bool stop_playing_ = false, pause_now_ = false;
+  bool quit_ = false;
+  std::vector<Input> pending_;
+  const ScriptAction* capture_ = nullptr;
+  int held_key_ = -1;
+  float mouse_x_ = 0, mouse_y_ = 0;
+};
+
+}  // namespace meshstep::viewer
