@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "sibling_program.hpp"
+
 extern char** environ;
 
 namespace meshstep::viewer {
@@ -18,11 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string meshstep_program() {
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? std::string("meshstep") : (self.parent_path() / "meshstep").string();
-}
 
 }  // namespace
 
@@ -32,7 +29,7 @@ std::string export_name(const std::string& log_path, unsigned long long step, co
   return (folder / (log.stem().string() + "_" + what + std::to_string(step) + extension)).string();
 }
 
-ExportJob::ExportJob(std::string meshstep) : meshstep_(meshstep.empty() ? meshstep_program() : std::move(meshstep)) {}
+ExportJob::ExportJob(std::string meshstep) : meshstep_(meshstep.empty() ? sibling_program("meshstep") : std::move(meshstep)) {}
 
 ExportJob::~ExportJob() {
   if (pid_ > 0) {

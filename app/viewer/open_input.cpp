@@ -11,6 +11,7 @@
 
 #include "../scene_source.hpp"
 #include "meshstep/error.hpp"
+#include "sibling_program.hpp"
 
 extern char** environ;
 
@@ -26,13 +27,6 @@ fs::path program_folder() {
   return ec ? fs::path() : self.parent_path();
 }
 
-// The meshstep program beside this one (both are built into the same folder).
-std::string sibling_meshstep() {
-  const fs::path here = program_folder();
-  for (const fs::path& candidate : {here / "meshstep", here.parent_path() / "meshstep"})
-    if (!here.empty() && fs::exists(candidate)) return candidate.string();
-  return "meshstep";
-}
 
 }  // namespace
 
@@ -46,7 +40,7 @@ std::string Opener::record_run(const std::string& input, const RefineOptions& r)
                                                         std::to_string(temporary_logs_.size()) + ".mslog"))
                               .string();
   temporary_logs_.push_back(log);
-  std::vector<std::string> args = {sibling_meshstep(), r.any() ? "refine" : "triangulate", input, "--record", log,
+  std::vector<std::string> args = {sibling_program("meshstep"), r.any() ? "refine" : "triangulate", input, "--record", log,
                                    "--no-output", "-q"};
   const auto pass = [&](const char* flag, const std::string& value) {
     if (!value.empty()) args.insert(args.end(), {flag, value});
