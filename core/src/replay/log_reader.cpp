@@ -250,6 +250,23 @@ std::uint64_t LogReader::step_of_event(std::uint64_t e) const {
   return static_cast<std::uint64_t>(it - step_starts_.begin()) - 1;
 }
 
+std::uint64_t LogReader::completed_steps_at(std::uint64_t position) const {
+  if (step_count() == 0 || position <= step_start(0)) return 0;
+  // Steps whose begin came before the position, minus the one still open (if any).
+  const std::uint64_t begun = step_of_event(position - 1) + 1;
+  return position == step_start(begun) ? begun : begun - 1;
+}
+
+std::uint64_t LogReader::next_step_boundary(std::uint64_t position) const {
+  if (position >= event_count_) return event_count_;
+  return step_start(position < step_start(0) ? 0 : step_of_event(position) + 1);
+}
+
+std::uint64_t LogReader::prev_step_boundary(std::uint64_t position) const {
+  if (position == 0 || step_count() == 0 || position <= step_start(0)) return 0;
+  return step_start(step_of_event(position - 1));  // the start of the step holding the last event
+}
+
 std::size_t LogReader::block_of_event(std::uint64_t e) const {
   const auto it = std::upper_bound(blocks_.begin(), blocks_.end(), e,
                                    [](std::uint64_t x, const BlockInfo& b) { return x < b.first_event; });

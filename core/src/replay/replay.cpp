@@ -24,13 +24,7 @@ std::string describe(const FaceRecord& r) {
 
 }  // namespace
 
-std::uint64_t Replay::completed_steps() const {
-  const LogReader& log = *log_;
-  if (log.step_count() == 0 || position_ <= log.step_start(0)) return 0;
-  // Steps whose begin came before the position, minus the one still open (if any).
-  std::uint64_t begun = log.step_of_event(position_ - 1) + 1;
-  return position_ == log.step_start(begun) ? begun : begun - 1;
-}
+std::uint64_t Replay::completed_steps() const { return log_->completed_steps_at(position_); }
 
 void Replay::write(const SlotWrite& w, bool forward, std::uint64_t event) {
   const FaceRecord& expected = forward ? w.before : w.after;
@@ -130,23 +124,14 @@ bool Replay::prev_event() {
 }
 
 bool Replay::next_step() {
-  const LogReader& log = *log_;
-  if (position_ >= log.event_count()) return false;
-  // The first step boundary after the position.
-  const std::uint64_t k = position_ < log.step_start(0) ? 0 : log.step_of_event(position_) + 1;
-  seek_event(log.step_start(k));
+  if (position_ >= log_->event_count()) return false;
+  seek_event(log_->next_step_boundary(position_));
   return true;
 }
 
 bool Replay::prev_step() {
-  const LogReader& log = *log_;
   if (position_ == 0) return false;
-  if (log.step_count() == 0 || position_ <= log.step_start(0)) {
-    seek_event(0);
-    return true;
-  }
-  const std::uint64_t k = log.step_of_event(position_ - 1);  // the step holding the last event
-  seek_event(log.step_start(k));
+  seek_event(log_->prev_step_boundary(position_));
   return true;
 }
 

@@ -75,6 +75,12 @@ class LogReader {
   // The step an event belongs to, or step_count() for events of the preamble (before the
   // first step).
   std::uint64_t step_of_event(std::uint64_t e) const;
+  // Step arithmetic on an event position (the mesh after that many events), without
+  // replaying anything: the steps completed there, and the step boundary after (before) it.
+  // A Replay cursor's completed_steps(), next_step() and prev_step() are these.
+  std::uint64_t completed_steps_at(std::uint64_t position) const;
+  std::uint64_t next_step_boundary(std::uint64_t position) const;
+  std::uint64_t prev_step_boundary(std::uint64_t position) const;
   // What step k does (its step_begin's kind).
   StepKind step_kind(std::uint64_t k) const { return step_kinds_[k]; }
   // The phases in the order they begin (a timeline's bands).
