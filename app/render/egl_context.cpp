@@ -1,6 +1,7 @@
 // The EGL surfaceless context: Mesa's EGL_PLATFORM_SURFACELESS_MESA display, a configless
 // OpenGL 3.3 core context and no surface at all (the renderer draws into its own
 // framebuffer object). libEGL is opened at run time; its header gives types and constants.
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -65,7 +66,11 @@ struct EglDriver {
       throw GlUnavailable(std::string("EGL: no desktop OpenGL (") + error_name(get_error()) + ")");
   }
 
-  explicit EglDriver(const std::string& name) : library(name) {
+  // Which display: Mesa's surfaceless platform display (one for the process), or a display
+  // of the software device (EGL_EXT_platform_device) with a rasterizer of its own.
+  enum class Display { surfaceless, own_device };
+
+  explicit EglDriver(const std::string& name, Display which = Display::surfaceless) : library(name) {
     get_proc_address = library.function<PFNEGLGETPROCADDRESSPROC>("eglGetProcAddress");
     get_error = library.function<PFNEGLGETERRORPROC>("eglGetError");
     make_current = library.function<PFNEGLMAKECURRENTPROC>("eglMakeCurrent");
@@ -86,11 +91,24 @@ struct EglDriver {
     const auto get_platform_display =
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(get_proc_address("eglGetPlatformDisplayEXT"));
     if (!get_platform_display) throw GlUnavailable("EGL: no eglGetPlatformDisplayEXT");
-    display = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-    if (display == EGL_NO_DISPLAY)
-      throw GlUnavailable(std::string("EGL: no surfaceless display (") + error_name(get_error()) + ")");
-    if (!initialize(display, nullptr, nullptr))
-      throw GlUnavailable(std::string("EGL: eglInitialize failed (") + error_name(get_error()) + ")");
+    if (which == Display::own_device) {
+      display = software_device_display(client, get_platform_display);
+      // Mesa's llvmpipe reads LP_NUM_THREADS when the display's screen is made (in
+      // eglInitialize): one rasterizer thread leaves the other core to the UI's thread.
+      const char* before = std::getenv("LP_NUM_THREADS");
+      const std::string kept = before ? before : "";
+      setenv("LP_NUM_THREADS", "1", 1);
+      const bool ok = initialize(display, nullptr, nullptr);
+      if (before) setenv("LP_NUM_THREADS", kept.c_str(), 1);
+      else unsetenv("LP_NUM_THREADS");
+      if (!ok) throw GlUnavailable(std::string("EGL: eglInitialize of the device failed (") + error_name(get_error()) + ")");
+    } else {
+      display = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+      if (display == EGL_NO_DISPLAY)
+        throw GlUnavailable(std::string("EGL: no surfaceless display (") + error_name(get_error()) + ")");
+      if (!initialize(display, nullptr, nullptr))
+        throw GlUnavailable(std::string("EGL: eglInitialize failed (") + error_name(get_error()) + ")");
+    }
 
     const char* extensions = query_string(display, EGL_EXTENSIONS);
     if (!has_extension(extensions, "EGL_KHR_surfaceless_context"))
@@ -100,6 +118,31 @@ struct EglDriver {
       throw GlUnavailable("EGL: no configless contexts (EGL_KHR_no_config_context)");
     use_desktop_gl();
   }
+
+  // The display of the software device (EGL_MESA_device_software), a display other than the
+  // surfaceless platform's: Mesa gives each display its own screen and rasterizer threads.
+  EGLDisplay software_device_display(const char* client, PFNEGLGETPLATFORMDISPLAYEXTPROC get_platform_display) {
+    if (!has_extension(client, "EGL_EXT_platform_device") || !has_extension(client, "EGL_EXT_device_enumeration"))
+      throw GlUnavailable("EGL: no device platform (EGL_EXT_platform_device)");
+    const auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(get_proc_address("eglQueryDevicesEXT"));
+    const auto device_string =
+        reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(get_proc_address("eglQueryDeviceStringEXT"));
+    if (!query_devices || !device_string) throw GlUnavailable("EGL: no eglQueryDevicesEXT");
+    EGLDeviceEXT devices[16];
+    EGLint count = 0;
+    if (!query_devices(16, devices, &count)) count = 0;
+    for (EGLint i = 0; i < count; ++i)
+      if (has_extension(device_string(devices[i], EGL_EXTENSIONS), "EGL_MESA_device_software")) {
+        const EGLDisplay d = get_platform_display(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+        if (d != EGL_NO_DISPLAY) return d;
+      }
+    throw GlUnavailable("EGL: no software device (EGL_MESA_device_software)");
+  }
+};
+
+// The same on the software device's display.
+struct EglWorkerDriver : EglDriver {
+  explicit EglWorkerDriver(const std::string& name) : EglDriver(name, Display::own_device) {}
 };
 
 class EglContext final : public GlContext {
@@ -141,6 +184,10 @@ class EglContext final : public GlContext {
 
 std::unique_ptr<GlContext> make_egl_context(const std::string& library) {
   return std::make_unique<EglContext>(driver_for<EglDriver>(library, "EGL"));
+}
+
+std::unique_ptr<GlContext> make_egl_worker_context(const std::string& library) {
+  return std::make_unique<EglContext>(driver_for<EglWorkerDriver>(library, "EGL"));
 }
 
 }  // namespace meshstep::render

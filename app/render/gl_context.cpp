@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cstdlib>
+#include <stdexcept>
 
 #include "gl.hpp"
 
@@ -11,7 +12,7 @@ namespace {
 
 std::atomic<unsigned long> next_serial{1};
 // The context whose functions fill glad's table (0: none yet).
-unsigned long loaded_serial = 0;
+std::atomic<unsigned long> loaded_serial{0};
 
 std::string text_of(GLenum what) {
   const auto* text = reinterpret_cast<const char*>(glGetString(what));
@@ -36,6 +37,11 @@ void GlContext::make_current() {
     throw GlUnavailable(std::string(name()) + ": OpenGL " + std::to_string(GLAD_VERSION_MAJOR(version)) + "." +
                         std::to_string(GLAD_VERSION_MINOR(version)) + ", 3.3 core is needed");
   loaded_serial = serial_;
+}
+
+void GlContext::make_current_with_loaded_functions() {
+  if (loaded_serial == 0) throw std::logic_error("no GL context has loaded the GL functions yet");
+  bind();
 }
 
 std::string GlContext::describe() const {

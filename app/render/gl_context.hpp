@@ -8,7 +8,8 @@
 // same names, and only the context's own functions reach the context.
 //
 // GL state is per thread and glad's function table per process: use one context at a time,
-// from the thread that made it current.
+// from the thread that made it current; a second thread may draw with a context of the same
+// GL library (make_current_with_loaded_functions).
 #pragma once
 
 #include <memory>
@@ -41,6 +42,14 @@ class GlContext {
   // when another context loaded them last). Throws GlUnavailable when it cannot, or when the
   // context lacks OpenGL 3.3.
   void make_current();
+
+  // Makes the context current on this thread with the GL functions another context loaded:
+  // a second context drawing on a worker thread while the first draws on its own. Both must
+  // come from a GL library whose entry points dispatch on the calling thread's current
+  // context: Mesa through libglvnd (a GLX window and EGL), or OSMesa with OSMesa. Throws
+  // std::logic_error when no context loaded the functions yet, GlUnavailable when the
+  // context cannot be made current.
+  void make_current_with_loaded_functions();
 
   // "OpenGL 4.5 (Core Profile) Mesa 22.3.6 · llvmpipe (LLVM 15.0.6, 256 bits)"; the context
   // must be current.
@@ -77,5 +86,10 @@ inline constexpr const char* kEglLibrary = "libEGL.so.1";
 inline constexpr const char* kOsmesaLibrary = "libOSMesa.so.8";
 std::unique_ptr<GlContext> make_egl_context(const std::string& library = kEglLibrary);
 std::unique_ptr<GlContext> make_osmesa_context(const std::string& library = kOsmesaLibrary);
+// An EGL context for a thread that draws beside another context (a viewer's canvas worker):
+// on a display of the software device, whose rasterizer is its own (contexts of one display
+// share theirs, and a big picture would hold up the other's small ones) and has one thread,
+// leaving the other core to the first. Not yet current.
+std::unique_ptr<GlContext> make_egl_worker_context(const std::string& library = kEglLibrary);
 
 }  // namespace meshstep::render
