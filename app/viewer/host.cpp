@@ -150,6 +150,7 @@ class OffscreenHost final : public Host {
   int height() const override { return height_; }
   std::string describe() const override { return std::string(context_->name()) + " (off screen): " + context_->describe(); }
   bool interactive() const override { return false; }
+  std::string gl_library() const override { return context_->name() == std::string("OSMesa") ? "osmesa" : "egl"; }
 
  private:
   std::unique_ptr<render::GlContext> context_;

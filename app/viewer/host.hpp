@@ -24,6 +24,9 @@ class Host {
   virtual int height() const = 0;
   // "GLFW window", "EGL (off screen)"...
   virtual std::string describe() const = 0;
+  // The GL library a second context must come from to share the loaded GL functions (a
+  // canvas worker's): "egl" (a window's GLX and EGL both go through libglvnd) or "osmesa".
+  virtual std::string gl_library() const { return "egl"; }
   // True when ImGui's input comes from the window's events.
   virtual bool interactive() const = 0;
   // The last file dropped on the window since the last call ("" if none).

@@ -1,7 +1,9 @@
 #include "inspector.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <tuple>
 #include <unordered_map>
 
 #include "meshstep/geometry/predicates.hpp"
@@ -55,6 +57,65 @@ Picked pick(const scene::MeshLayer& mesh, Point at, double radius) {
     }
   }
   return vertex.kind != Picked::Kind::none ? vertex : triangle;
+}
+
+namespace {
+
+// Two points as one key, the smaller first (an edge's key whichever way it runs).
+std::array<std::uint64_t, 4> point_pair_key(const Point& p, const Point& q) {
+  std::array<std::uint64_t, 4> k{std::bit_cast<std::uint64_t>(p.x), std::bit_cast<std::uint64_t>(p.y),
+                                 std::bit_cast<std::uint64_t>(q.x), std::bit_cast<std::uint64_t>(q.y)};
+  if (std::tie(k[2], k[3]) < std::tie(k[0], k[1])) std::swap(k[0], k[2]), std::swap(k[1], k[3]);
+  return k;
+}
+
+double distance2_to_segment(const Point& p, const Point& a, const Point& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+  const double t = l2 > 0.0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
+  return distance2(p, {a.x + t * dx, a.y + t * dy});
+}
+
+}  // namespace
+
+std::vector<MeshEdge> constrained_edges(const scene::Scene& scene) {
+  // The shape has coordinates only: its edges are found again among the triangles' edges
+  // by their points' exact coordinates (the scene copies them from the mesh's points).
+  std::vector<std::array<std::uint64_t, 4>> keys;
+  for (const scene::Shape& shape : scene.shapes)
+    if (shape.role == "segments")
+      for (std::size_t i = 0; i + 1 < shape.points.size(); i += 2)
+        keys.push_back(point_pair_key(shape.points[i], shape.points[i + 1]));
+  std::sort(keys.begin(), keys.end());
+  std::vector<MeshEdge> edges;
+  if (keys.empty()) return edges;
+  const scene::MeshLayer& mesh = scene.mesh;
+  for (const auto& t : mesh.triangles) {
+    if (!valid(mesh, t)) continue;
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>((i + 1) % 3)];
+      if (std::binary_search(keys.begin(), keys.end(), point_pair_key(mesh.points[a], mesh.points[b])))
+        edges.push_back({std::min(a, b), std::max(a, b)});
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+Picked pick(const scene::MeshLayer& mesh, std::span<const MeshEdge> edges, Point at, double vertex_radius,
+            double edge_radius) {
+  const Picked vertex_or_triangle = pick(mesh, at, vertex_radius);
+  if (vertex_or_triangle.kind == Picked::Kind::vertex) return vertex_or_triangle;
+  Picked edge;
+  double nearest = edge_radius * edge_radius;
+  for (const MeshEdge& e : edges) {
+    if (e[0] >= mesh.points.size() || e[1] >= mesh.points.size()) continue;
+    if (const double d = distance2_to_segment(at, mesh.points[e[0]], mesh.points[e[1]]); d <= nearest) {
+      nearest = d;
+      edge = {Picked::Kind::segment, e[0], e[1]};
+    }
+  }
+  return edge.kind != Picked::Kind::none ? edge : vertex_or_triangle;
 }
 
 TriangleFacts triangle_facts(const scene::MeshLayer& mesh, std::uint32_t triangle) {

@@ -1,5 +1,5 @@
-// The inspector's geometry, without GL or ImGui: which triangle or vertex of the picture is
-// under a world point, what a triangle measures, and its Lepp path (Rivara: from the
+// The inspector's geometry, without GL or ImGui: which vertex, segment or triangle of the
+// picture is under a world point, what a triangle measures, and its Lepp path (Rivara: from the
 // triangle across longest edges until the longest edge is shared by both its triangles, or
 // lies on the boundary).
 #pragma once
@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -15,14 +16,28 @@
 namespace meshstep::viewer {
 
 struct Picked {
-  enum class Kind { none, triangle, vertex } kind = Kind::none;
-  std::uint32_t index = 0;  // into mesh.triangles, or mesh.points
+  enum class Kind { none, triangle, vertex, segment } kind = Kind::none;
+  std::uint32_t index = 0;  // into mesh.triangles, or mesh.points (a segment: its piece's first end)
+  std::uint32_t other = 0;  // a segment: its piece's other end (a constrained edge of the mesh)
   friend bool operator==(const Picked&, const Picked&) = default;
 };
 
 // The vertex within `radius` (world units) of `at` that is nearest, else the triangle that
 // contains `at`, else nothing. Vertices count only when a triangle uses them.
 Picked pick(const scene::MeshLayer& mesh, Point at, double radius);
+
+// An edge of the mesh by its two points' indices.
+using MeshEdge = std::array<std::uint32_t, 2>;
+// The scene's constrained edges (its "segments" shape, which has their points' coordinates)
+// as edges of its mesh, each once, smaller index first.
+std::vector<MeshEdge> constrained_edges(const scene::Scene& scene);
+// As pick above, with the constrained edges between vertices and triangles: the nearest
+// vertex within vertex_radius, else the nearest edge within edge_radius, else the
+// triangle. A vertex comes first because it lies on its segments (a click on it means it);
+// a segment before the triangles either side of it, since a click within a few pixels of
+// a line means the line (a triangle has its whole inside to be clicked in).
+Picked pick(const scene::MeshLayer& mesh, std::span<const MeshEdge> edges, Point at, double vertex_radius,
+            double edge_radius);
 
 struct TriangleFacts {
   std::array<std::uint32_t, 3> vertices{};

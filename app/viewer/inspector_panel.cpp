@@ -1,5 +1,6 @@
-// The viewer's inspector: what the pointer is over, what a click selected (a triangle with
-// its Lepp path, a vertex with its history), drawn over the canvas and said in the panel.
+// The viewer's inspector: what the pointer is over, what a click selected (a vertex, a
+// segment, a triangle with its Lepp path), drawn over the canvas, and its history (from the
+// element index) as buttons in the panel. The words are in selection_words.cpp.
 #include <algorithm>
 #include <cstdio>
 
@@ -7,21 +8,26 @@
 
 namespace meshstep::viewer {
 
-std::vector<std::uint64_t> Viewer::selected_vertex_steps() const {
-  std::vector<std::uint64_t> steps;
-  const replay::LogReader* log = session_->log();
-  if (!log || selected_.kind != Picked::Kind::vertex) return steps;
-  for (const std::uint32_t e : history_.events_of_vertex(selected_.index)) {
-    const std::uint64_t k = log->step_of_event(e);
-    if (k < log->step_count() && (steps.empty() || steps.back() != k + 1)) steps.push_back(k + 1);
-  }
-  return steps;
-}
 Viewer::~Viewer() = default;
+
+// Made again only when the selection, the canvas's moment or the index's readiness changes
+// (an idle frame compares three values).
+const SelectionStory& Viewer::selection_story() {
+  const replay::LogReader* log = session_->log();
+  const std::tuple<Picked, std::uint64_t, bool> of{selected_, log ? session_->shown_position() : 0, history_.ready()};
+  if (of != story_of_) {
+    story_ = log ? viewer::selection_story(*log, history_, selected_, selected_vertices_, std::get<1>(of))
+                 : SelectionStory{};
+    story_of_ = of;
+    selection_text_of_ = {{}, SIZE_MAX};  // the words tell the story too
+  }
+  return story_;
+}
 
 void Viewer::select_at(Point world) {
   const scene::Scene& s = session_->scene();
-  selected_ = pick(s.mesh, world, 8.0 / camera_.pixels_per_unit());
+  const double pixel = 1.0 / camera_.pixels_per_unit();
+  selected_ = pick(s.mesh, constrained_edges(s), world, 8.0 * pixel, 5.0 * pixel);
   lepp_ = {};
   if (selected_.kind == Picked::Kind::triangle) {
     selected_vertices_ = s.mesh.triangles[selected_.index];
@@ -31,13 +37,14 @@ void Viewer::select_at(Point world) {
 }
 
 // After the scene changed: the selected triangle is looked for by its vertices (gone: the
-// selection goes); a vertex keeps its id, which the log gives it for the whole run.
+// selection goes); a vertex keeps its id, which the log gives it for the whole run, and a
+// segment its piece's ends (its input segment is the same at every moment).
 void Viewer::refresh_selection() {
   if (selected_.kind == Picked::Kind::none || selection_build_ == session_->scene_builds()) return;
   const scene::Scene& s = session_->scene();
   selection_build_ = session_->scene_builds();
   hovered_ = {};
-  if (selected_.kind == Picked::Kind::vertex) return;
+  if (selected_.kind != Picked::Kind::triangle) return;
   auto sorted = selected_vertices_;
   std::sort(sorted.begin(), sorted.end());
   for (std::uint32_t t = 0; t < s.mesh.triangles.size(); ++t) {
@@ -72,6 +79,7 @@ void Viewer::draw_selection_overlay(float x, float y) {
     const ImVec2 a = screen(v[0]), b = screen(v[1]), c = screen(v[2]);
     return ImVec2((a.x + b.x + c.x) / 3.0f, (a.y + b.y + c.y) / 3.0f);
   };
+  const ImU32 selected_colour = IM_COL32(213, 94, 0, 255);
   if (hovered_.kind == Picked::Kind::triangle && !(hovered_ == selected_)) outline(hovered_.index, IM_COL32(0, 114, 178, 200), 2.0f);
   if (hovered_.kind == Picked::Kind::vertex) draw.AddCircle(screen(hovered_.index), 7.0f, IM_COL32(0, 114, 178, 220), 0, 2.0f);
   if (selected_.kind == Picked::Kind::triangle) {
@@ -80,84 +88,78 @@ void Viewer::draw_selection_overlay(float x, float y) {
       draw.AddLine(centroid(lepp_.triangles[i]), centroid(lepp_.triangles[i + 1]), IM_COL32(204, 121, 167, 255), 2.5f);
     for (const std::uint32_t t : lepp_.triangles) draw.AddCircleFilled(centroid(t), 3.5f, IM_COL32(204, 121, 167, 255));
     if (!lepp_.triangles.empty()) draw.AddLine(screen(lepp_.a), screen(lepp_.b), IM_COL32(204, 121, 167, 255), 5.0f);
-    outline(selected_.index, IM_COL32(213, 94, 0, 255), 3.0f);
+    outline(selected_.index, selected_colour, 3.0f);
   }
   if (selected_.kind == Picked::Kind::vertex && selected_.index < s.mesh.points.size())
-    draw.AddCircle(screen(selected_.index), 9.0f, IM_COL32(213, 94, 0, 255), 0, 3.0f);
+    draw.AddCircle(screen(selected_.index), 9.0f, selected_colour, 0, 3.0f);
+  if (selected_.kind == Picked::Kind::segment) {
+    // The input segment's pieces at this moment, their ends ringed; the clicked piece alone
+    // until the index knows the segment.
+    const SegmentStory& story = selection_story().segment;
+    const auto piece = [&](VertexId a, VertexId b) {
+      if (a >= s.mesh.points.size() || b >= s.mesh.points.size()) return;
+      draw.AddLine(screen(a), screen(b), selected_colour, 4.0f);
+      draw.AddCircle(screen(a), 5.0f, selected_colour, 0, 2.0f);
+      draw.AddCircle(screen(b), 5.0f, selected_colour, 0, 2.0f);
+    };
+    if (story.segment == kNone) piece(selected_.index, selected_.other);
+    for (const auto& [a, b] : story.pieces) piece(a, b);
+  }
 }
 
-std::string Viewer::selection_text() {
-  const scene::Scene& s = session_->scene();
-  char buf[256];
-  if (selected_.kind == Picked::Kind::triangle) {
-    const TriangleFacts f = triangle_facts(s.mesh, selected_.index);
-    std::snprintf(buf, sizeof buf, "triangle %u %u %u: angles %.1f %.1f %.1f, area %.4g", f.vertices[0], f.vertices[1],
-                  f.vertices[2], f.angles[0], f.angles[1], f.angles[2], f.area);
-    std::string out = buf;
-    if (angle_bound_ > 0) {
-      std::snprintf(buf, sizeof buf, ", smallest angle %.1f %s %.4g (the bound)", f.min_angle,
-                    f.min_angle < angle_bound_ ? "<" : ">=", angle_bound_);
-      out += buf;
-    }
-    std::snprintf(buf, sizeof buf, "; Lepp path of %zu to edge %u-%u%s", lepp_.triangles.size(), lepp_.a, lepp_.b,
-                  lepp_.boundary ? " (on the boundary)" : "");
-    return out + buf;
+namespace {
+
+// A row of buttons, one a step, that move the cursor there.
+void step_buttons(const std::vector<std::uint64_t>& steps, Session& session) {
+  constexpr std::size_t kShown = 16;
+  for (std::size_t i = 0; i < std::min(steps.size(), kShown); ++i) {
+    char label[32];
+    std::snprintf(label, sizeof label, "%llu", static_cast<unsigned long long>(steps[i]));
+    if (i % 8) ImGui::SameLine();
+    if (ImGui::SmallButton(label)) session.seek_step(steps[i]);
   }
-  if (selected_.kind == Picked::Kind::vertex) {
-    const std::uint32_t v = selected_.index;
-    const Point& p = s.mesh.points[v];
-    std::snprintf(buf, sizeof buf, "vertex %u at (%.6g, %.6g)", v, p.x, p.y);
-    std::string out = buf;
-    const replay::LogReader* log = session_->log();
-    if (!log || v >= log->vertices().size()) return out + (log ? "" : ", of the mesh");
-    const replay::VertexInfo& info = log->vertices()[v];
-    const std::uint64_t inputs = std::strtoull(log->parameter("input_vertices", "0").c_str(), nullptr, 10);
-    const std::uint64_t step = log->step_of_event(info.event);
-    if (info.input_index < inputs) {
-      out += ": input vertex " + std::to_string(info.input_index + 1);
-    } else {
-      out += ": Steiner";
-    }
-    if (step < log->step_count()) {
-      std::string kind = replay::name(log->step_kind(step));
-      std::replace(kind.begin(), kind.end(), '_', ' ');
-      out += ", inserted by step " + std::to_string(step + 1) + " (" + kind + ")";
-    }
-    return out;
-  }
-  return "";
+  if (steps.size() > kShown) ImGui::TextDisabled("and %zu more", steps.size() - kShown);
 }
 
-// What is selected, in words, with a jump to the step that made a vertex.
+// A button to the end of the step of event e (1-based steps, as the caption counts).
+void event_button(const char* what, std::uint64_t e, Session& session) {
+  const replay::LogReader& log = *session.log();
+  if (e == kNoEvent || e >= log.event_count()) return;
+  const std::uint64_t step = log.step_of_event(e);
+  if (step >= log.step_count()) return;
+  char label[96];
+  std::snprintf(label, sizeof label, "Go to the step that %s it (%llu)", what, static_cast<unsigned long long>(step + 1));
+  if (ImGui::Button(label)) session.seek_step(step + 1);
+}
+
+}  // namespace
+
+// What is selected, in words, with jumps to the steps of its history.
 void Viewer::draw_selection_panel() {
   if (selected_.kind == Picked::Kind::none) return;
   if (!ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const SelectionStory& story = selection_story();
   if (selection_text_of_ != std::pair{selected_, session_->scene_builds()}) {
     selection_text_ = selection_text();
     selection_text_of_ = {selected_, session_->scene_builds()};
   }
   ImGui::TextWrapped("%s", selection_text_.c_str());
   const replay::LogReader* log = session_->log();
-  if (selected_.kind == Picked::Kind::vertex && log && selected_.index < log->vertices().size()) {
-    const std::uint64_t step = log->step_of_event(log->vertices()[selected_.index].event);
-    if (step < log->step_count() && ImGui::Button("Go to the step that inserted it")) session_->seek_step(step + 1);
-    // Its history: the steps that inserted it, flipped or split its edges, removed it.
+  if (log && selected_.kind == Picked::Kind::vertex && selected_.index < log->vertices().size())
+    event_button("inserted", log->vertices()[selected_.index].event, *session_);
+  if (log && selected_.kind == Picked::Kind::triangle) {
+    event_button("made", story.triangle.created, *session_);
+    event_button("replaced", story.triangle.removed, *session_);
+  }
+  if (log) {
+    // Its history: a vertex's insertion, the flips and splits of its edges, the cavities on
+    // it, its removal; a triangle's making, flags and replacement; a segment's constraint and
+    // splits.
     if (!history_.ready()) {
       ImGui::TextDisabled("indexing the run's history...");
     } else {
-      if (history_steps_of_ != std::pair{selected_, std::size_t{0}}) {
-        history_steps_ = selected_vertex_steps();
-        history_steps_of_ = {selected_, 0};
-      }
-      ImGui::Text("history: %zu steps (ticks on the timeline)", history_steps_.size());
-      constexpr std::size_t kShown = 16;
-      for (std::size_t i = 0; i < std::min(history_steps_.size(), kShown); ++i) {
-        char label[32];
-        std::snprintf(label, sizeof label, "%llu", static_cast<unsigned long long>(history_steps_[i]));
-        if (i % 8) ImGui::SameLine();
-        if (ImGui::SmallButton(label)) session_->seek_step(history_steps_[i]);
-      }
-      if (history_steps_.size() > kShown) ImGui::TextDisabled("and %zu more", history_steps_.size() - kShown);
+      ImGui::Text("history: %zu steps (ticks on the timeline)", story.steps.size());
+      step_buttons(story.steps, *session_);
     }
   }
   if (ImGui::Button("Clear the selection")) selected_ = {};

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "file_dialog.hpp"
 #include "viewer.hpp"
 
 namespace meshstep::viewer {
@@ -84,6 +85,7 @@ std::vector<KeyAction> make_actions() {
   add({GLFW_KEY_SLASH, true}, "?", "this list of keys", [](Viewer& v) { v.help_open = !v.help_open; });
   add({GLFW_KEY_F1}, "F1", "this list of keys", [](Viewer& v) { v.help_open = !v.help_open; });
   add({GLFW_KEY_ESCAPE}, "Esc", "close this list", [](Viewer& v) { v.help_open = false; });
+  add(open_file_chord(), "Ctrl+O", "open a file (a dialog)", [](Viewer&) { request_file_dialog(); });
   add({GLFW_KEY_Q, false, true}, "Ctrl+Q", "quit", [](Viewer& v) { v.quit_requested = true; });
   return a;
 }
@@ -110,6 +112,8 @@ std::string lower(std::string_view s) {
 }
 
 }  // namespace
+
+Chord open_file_chord() { return {GLFW_KEY_O, false, true}; }
 
 std::span<const KeyAction> key_actions() {
   static const std::vector<KeyAction> actions = make_actions();

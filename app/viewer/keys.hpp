@@ -29,6 +29,10 @@ struct KeyAction {
 // The table, in the order the help lists it.
 std::span<const KeyAction> key_actions();
 
+// The chord that opens the file dialog: in the table, and heard by the start page too
+// (which has no viewer to run the table's actions on).
+Chord open_file_chord();
+
 // "Space", "Shift+Right", "ctrl+3", "F2", "?" (case-insensitive), as scripts write keys.
 std::optional<Chord> parse_chord(std::string_view text);
 

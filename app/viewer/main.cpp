@@ -25,7 +25,7 @@ struct Args {
   std::int64_t step = -1, event = -1;
   std::string script, size = "1280x800", gl = "auto";
   bool offscreen = false, quiet = false;
-  std::string frame_log;
+  std::string frame_log, canvas = "auto";
   viewer::RefineOptions refine;  // of an input, as `meshstep refine` takes them
 };
 
@@ -58,6 +58,11 @@ int main(int argc, char** argv) {
   app.add_option("--max-area", a.refine.max_area, "Refine an input: every triangle's area at most A");
   app.add_option("--max-aspect", a.refine.max_aspect, "Refine an input: aspect ratio at most R");
   app.add_flag("-q,--quiet", a.quiet, "Print only errors");
+  app.add_option("--canvas", a.canvas,
+                 "Who draws the canvas: auto (a thread of its own for runs of more than 20,000 vertices, so\n"
+                 "that scrubbing never waits for a picture), main or worker")
+      ->check(CLI::IsMember({"auto", "main", "worker"}))
+      ->default_str("auto");
   app.add_option("--frame-log", a.frame_log,
                  "Write each frame's time and allocations to this file (for benchmarks)");
   app.footer(
@@ -84,6 +89,9 @@ int main(int argc, char** argv) {
   options.gl = a.gl;
   options.quiet = a.quiet;
   options.frame_log = a.frame_log;
+  options.canvas = a.canvas == "main"     ? viewer::CanvasMode::this_thread
+                   : a.canvas == "worker" ? viewer::CanvasMode::worker
+                                          : viewer::CanvasMode::automatic;
   // A person's viewer starts where they left it; a script's starts from the defaults, so
   // that it sees the same thing on every machine.
   viewer::Settings settings;
@@ -105,7 +113,14 @@ int main(int argc, char** argv) {
       options.script_path = a.script;
     }
     std::unique_ptr<viewer::Session> session;
-    if (!a.input.empty()) {
+    if (viewer::is_input(a.input)) {
+      if (std::FILE* f = std::fopen(a.input.c_str(), "rb")) std::fclose(f);
+      else throw InputError(a.input, 0, "cannot be read");
+      options.live_input = a.input;  // run live: the window shows it as it goes
+      options.live_refine = a.refine;
+      options.start_step = a.step;
+      options.start_event = a.event;
+    } else if (!a.input.empty()) {
       session = opener.open(a.input, a.refine);
       if (a.step >= 0) session->seek_step(static_cast<std::uint64_t>(a.step));
       if (a.event >= 0) session->seek(static_cast<std::uint64_t>(a.event));

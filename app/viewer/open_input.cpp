@@ -11,7 +11,7 @@
 
 #include "../scene_source.hpp"
 #include "meshstep/error.hpp"
-#include "sibling_program.hpp"
+#include "live_run.hpp"
 
 extern char** environ;
 
@@ -35,21 +35,17 @@ Opener::~Opener() {
   for (const std::string& log : temporary_logs_) fs::remove(log, ec);
 }
 
-std::string Opener::record_run(const std::string& input, const RefineOptions& r) {
+std::string Opener::temporary_log() {
   const std::string log = (fs::temp_directory_path() / ("meshstep-view-" + std::to_string(::getpid()) + "-" +
                                                         std::to_string(temporary_logs_.size()) + ".mslog"))
                               .string();
   temporary_logs_.push_back(log);
-  std::vector<std::string> args = {sibling_program("meshstep"), r.any() ? "refine" : "triangulate", input, "--record", log,
-                                   "--no-output", "-q"};
-  const auto pass = [&](const char* flag, const std::string& value) {
-    if (!value.empty()) args.insert(args.end(), {flag, value});
-  };
-  pass("--algorithm", r.algorithm);
-  pass("--min-angle", r.min_angle);
-  pass("--max-angle", r.max_angle);
-  pass("--max-area", r.max_area);
-  pass("--max-aspect", r.max_aspect);
+  return log;
+}
+
+std::string Opener::record_run(const std::string& input, const RefineOptions& r) {
+  const std::string log = temporary_log();
+  std::vector<std::string> args = run_arguments(input, r, log);
   std::vector<char*> argv;
   for (std::string& s : args) argv.push_back(s.data());
   argv.push_back(nullptr);
@@ -63,9 +59,16 @@ std::string Opener::record_run(const std::string& input, const RefineOptions& r)
   return log;
 }
 
+std::unique_ptr<LiveRun> Opener::start_live(const std::string& input, const RefineOptions& refine,
+                                            const std::string& backend) {
+  return std::make_unique<LiveRun>(input, refine, temporary_log(), backend);
+}
+
+bool is_input(const std::string& path) { return path.ends_with(".poly") || path.ends_with(".node"); }
+
 std::unique_ptr<Session> Opener::open(const std::string& path, const RefineOptions& refine) {
   if (app::is_replay_log(path)) return Session::open_log(path);
-  if (path.ends_with(".poly") || path.ends_with(".node")) {
+  if (is_input(path)) {
     auto session = Session::open_log(record_run(path, refine));
     session->set_title(path);
     return session;

@@ -11,6 +11,11 @@
 
 namespace meshstep::viewer {
 
+class LiveRun;
+
+// Whether the viewer opens this path as an input to triangulate (.poly, .node).
+bool is_input(const std::string& path);
+
 struct RefineOptions {
   std::string algorithm, min_angle, max_angle, max_area, max_aspect;
   bool any() const {
@@ -27,10 +32,15 @@ class Opener {
   Opener& operator=(const Opener&) = delete;
 
   // Throws InputError ("FILE: what is wrong") when it cannot be opened or its run fails.
+  // An input is recorded first, the window waiting (a live run does not wait: start_live).
   std::unique_ptr<Session> open(const std::string& path, const RefineOptions& refine = {});
+  // Starts the run of an input (.poly, .node) that the window watches as it goes; its log
+  // is a temporary one, removed with the opener.
+  std::unique_ptr<LiveRun> start_live(const std::string& input, const RefineOptions& refine, const std::string& backend);
 
  private:
   std::string record_run(const std::string& input, const RefineOptions& refine);
+  std::string temporary_log();
 
   bool quiet_;
   std::vector<std::string> temporary_logs_;

@@ -15,6 +15,7 @@
 #include <cstdlib>
 
 #include "allocations.hpp"
+#include "file_dialog.hpp"
 #include "host.hpp"
 #include "start_page.hpp"
 #include "meshstep/error.hpp"
@@ -24,6 +25,7 @@
 #include "state_json.hpp"
 #include "viewer.hpp"
 #include "keys.hpp"
+#include "live_page.hpp"
 
 namespace meshstep::viewer {
 
@@ -77,7 +79,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     Settings carried = options.settings ? *options.settings : Settings{};
     if (viewer) viewer->capture(carried);
     const std::string path = next->title();
-    viewer = std::make_unique<Viewer>(std::move(next));
+    viewer = std::make_unique<Viewer>(std::move(next), CanvasOptions{options.canvas, host->gl_library()});
     if (options.settings || carried != Settings{}) viewer->apply(carried);
     if (options.settings) {
       std::error_code ec;
@@ -85,21 +87,54 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     }
     problem.clear();
   };
+  // An input (.poly, .node) runs live: the window shows the mesh as the run makes it, and
+  // opens the whole log when it ends.
+  std::unique_ptr<LiveView> live;
+  int status = 0;
   const auto open = [&](const std::string& path, const RefineOptions& refine) {
     try {
-      show(opener.open(path, refine));
+      if (is_input(path)) {
+        live.reset();  // a run still going is stopped
+        live = std::make_unique<LiveView>(opener.start_live(path, refine, host->gl_library()));
+        problem.clear();
+      } else {
+        show(opener.open(path, refine));
+      }
     } catch (const InputError& e) {
       problem = e.what();
     }
   };
+  // When the live run has ended: its log opens, or the window says why it failed.
+  const auto end_live = [&] {
+    if (!live || live->run->running()) return;
+    LiveRun& run = *live->run;
+    if (run.succeeded()) {
+      try {
+        std::unique_ptr<Session> s = Session::open_log(run.log());
+        s->set_title(run.input());
+        if (options.start_step >= 0) s->seek_step(static_cast<std::uint64_t>(options.start_step));
+        if (options.start_event >= 0) s->seek(static_cast<std::uint64_t>(options.start_event));
+        show(std::move(s));
+      } catch (const InputError& e) {
+        problem = e.what();
+      }
+    } else if (!run.cancelled()) {
+      const std::string said = run.messages();
+      problem = said.empty() ? run.input() + ": its run failed" : said;
+      if (!options.quiet || !host->interactive()) std::fprintf(stderr, "%s\n", problem.c_str());
+      if (!host->interactive()) status = 1;  // a script's input that cannot run: an error
+    }
+    live.reset();
+  };
   if (session) show(std::move(session));
+  if (!options.live_input.empty()) open(options.live_input, options.live_refine);
 
   ScriptPlayer script(options.script, options.script_path);
   const bool scripted = !options.script.empty();
 
   struct FrameRecord {
     double end_ms, frame_ms;
-    std::uint64_t allocations, position;
+    std::uint64_t allocations, position, shown;
   };
   std::vector<FrameRecord> frames;
   frames.reserve(1 << 16);  // recording a frame must not allocate (it is one of the measured)
@@ -108,7 +143,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   Clock::time_point last = Clock::now();
   std::string picked;
   RefineOptions picked_refine;
-  while (!(viewer && viewer->quit_requested) && !g_interrupted) {
+  while (!(viewer && viewer->quit_requested) && !g_interrupted && status == 0) {
     // Scripts run on a fixed frame time, so that what they see does not depend on the
     // machine's speed; people get the wall clock.
     const Clock::time_point now = Clock::now();
@@ -119,6 +154,13 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     if (!host->begin_frame(seconds)) break;
     // Between frames: a file dropped on the window, or picked on the start page.
     if (const std::string dropped = host->take_dropped(); !dropped.empty()) open(dropped, {});
+    // A script's actions look at the run once it has ended (all but `frames`, `peek` and
+    // `quit`), so that what they see does not depend on the machine's speed.
+    if (live && scripted && script.waits_for_live())
+      while (live->run->running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    end_live();
+    if (status != 0) break;
+    if (scripted) script.set_live_state(live ? live_state_json(*live) : std::string());
     const bool wants_capture = scripted && !script.done() && script.before_frame(viewer.get(), picked, problem);
     if (script.quit()) break;
     if (!picked.empty()) {
@@ -127,8 +169,11 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
       picked_refine = {};
     }
     ImGui::NewFrame();
-    if (viewer) viewer->frame(host->width(), host->height(), seconds);
+    if (live) draw_live_page(*live, host->width(), host->height());
+    else if (viewer) viewer->frame(host->width(), host->height(), seconds);
     else draw_start_page(host->width(), host->height(), options.settings, picked, picked_refine);
+    // The file dialog (Ctrl+O, the Open... buttons): its pick opens as the start page's does.
+    draw_file_dialog(viewer ? std::string_view(viewer->session().title()) : std::string_view(), picked);
     if (!problem.empty()) draw_problem(problem);
     ImGui::Render();
     const bool capture_window = viewer && !viewer->window_capture_path.empty();
@@ -143,15 +188,19 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
       viewer->window_capture_path.clear();
     }
     const std::uint64_t position = viewer ? viewer->session().cursor_info().position : 0;
+    const std::uint64_t shown = viewer ? viewer->session().shown_position() : 0;
     if (!options.frame_log.empty() && frames.size() < frames.capacity()) {
       const Clock::time_point end = Clock::now();
       frames.push_back({std::chrono::duration<double, std::milli>(end - options.started).count(),
                         std::chrono::duration<double, std::milli>(end - now).count(),
-                        allocations() - allocations_before, position});
+                        allocations() - allocations_before, position, shown});
     }
     if (!host->interactive() && (!scripted || script.done())) break;
-    const bool playing = viewer && viewer->session().playback().playing;
-    if (host->interactive() && !scripted && !playing && picked.empty()) glfwWaitEventsTimeout(0.1);
+    // An idle window sleeps until an event; one with something to show soon does not.
+    const bool busy = live || (viewer && (viewer->session().playback().playing || viewer->canvas_drawing()));
+    if (host->interactive() && !scripted && !busy && picked.empty()) glfwWaitEventsTimeout(0.1);
+    else if (host->interactive() && !scripted && busy && !(viewer && viewer->session().playback().playing))
+      glfwWaitEventsTimeout(1.0 / 60.0);
   }
   if (options.settings) {
     if (viewer) viewer->capture(*options.settings);
@@ -159,17 +208,18 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     options.settings->window_height = host->height();
   }
   if (!options.frame_log.empty()) {
-    std::string text = "# frame end_ms frame_ms allocations position\n";
+    std::string text = "# frame end_ms frame_ms allocations position shown\n";
     char line[128];
     for (std::size_t i = 0; i < frames.size(); ++i) {
-      std::snprintf(line, sizeof line, "%zu %.3f %.3f %llu %llu\n", i, frames[i].end_ms, frames[i].frame_ms,
+      std::snprintf(line, sizeof line, "%zu %.3f %.3f %llu %llu %lld\n", i, frames[i].end_ms, frames[i].frame_ms,
                     static_cast<unsigned long long>(frames[i].allocations),
-                    static_cast<unsigned long long>(frames[i].position));
+                    static_cast<unsigned long long>(frames[i].position),
+                    frames[i].shown == UINT64_MAX ? -1LL : static_cast<long long>(frames[i].shown));
       text += line;
     }
     io::write_file_atomically(options.frame_log, text);
   }
-  return 0;
+  return status;
 }
 
 }  // namespace meshstep::viewer

@@ -11,6 +11,7 @@
 #include "script.hpp"
 #include "session.hpp"
 #include "settings.hpp"
+#include "viewer.hpp"
 
 namespace meshstep::viewer {
 
@@ -22,9 +23,17 @@ struct RunOptions {
   std::string script_path;  // for messages
   bool quiet = false;
   // Where to write one line per frame: its index, milliseconds from the program's start to
-  // the frame's end, the frame's own milliseconds, its allocations, the cursor's position
-  // (the responsiveness benchmark and the tests read it).
+  // the frame's end, the frame's own milliseconds, its allocations, the cursor's position,
+  // the position the canvas shows (-1: nothing yet); the responsiveness benchmark and the
+  // tests read it.
   std::string frame_log;
+  // An input to run live at the start (.poly, .node), with its refinement; the log opens
+  // when the run ends, at this step or event (-1: the end).
+  std::string live_input;
+  RefineOptions live_refine;
+  std::int64_t start_step = -1, start_event = -1;
+  // Who draws the canvas (viewer.hpp): automatic, this thread or a worker.
+  CanvasMode canvas = CanvasMode::automatic;
   // Options to start from and to keep (nullptr: the defaults, nothing kept: scripts).
   Settings* settings = nullptr;
   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();

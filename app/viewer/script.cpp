@@ -6,6 +6,7 @@
 #include "keys.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/scene/scene.hpp"
+#include "timeline_marks.hpp"
 
 namespace meshstep::viewer {
 
@@ -70,8 +71,16 @@ std::string check(const ScriptAction& a) {
     if (n == 1 && is_number(a.args[0], true, true)) return "";
     return "expected: wheel N";
   }
-  if (v == "click" || v == "quit" || v == "check" || v == "wait") return count(0, v.c_str());
-  if (v == "screenshot" || v == "canvas" || v == "state" || v == "open") return count(1, (v + " FILE").c_str());
+  if (v == "toggle-marks") {
+    if (n != 1) return "expected: toggle-marks KIND";
+    if (parse_mark(a.args[0])) return "";
+    std::string known;
+    for (std::size_t i = 0; i < kMarkCount; ++i) known.append(i ? ", " : "").append(name(static_cast<Mark>(i)));
+    return std::string("unknown kind of mark '").append(a.args[0]).append("' (").append(known).append(")");
+  }
+  if (v == "type") return n == 1 && !a.args[0].empty() ? "" : "expected: type TEXT";
+  if (v == "click" || v == "quit" || v == "check" || v == "wait" || v == "settle" || v == "watch") return count(0, v.c_str());
+  if (v == "screenshot" || v == "canvas" || v == "state" || v == "peek" || v == "open") return count(1, (v + " FILE").c_str());
   return "unknown action '" + v + "'";
 }
 
@@ -88,7 +97,15 @@ std::vector<ScriptAction> read_script(const std::string& path) {
     ScriptAction a;
     a.line = line;
     if (!(words >> a.verb)) continue;
-    for (std::string w; words >> w;) a.args.push_back(w);
+    if (a.verb == "type") {
+      // The rest of the line as it is (a path may hold spaces), without the blanks round it.
+      std::string rest;
+      std::getline(words, rest);
+      const std::size_t begin = rest.find_first_not_of(" \t"), end = rest.find_last_not_of(" \t\r");
+      if (begin != std::string::npos) a.args.push_back(rest.substr(begin, end - begin + 1));
+    } else {
+      for (std::string w; words >> w;) a.args.push_back(w);
+    }
     if (const std::string why = check(a); !why.empty()) throw InputError(path, line, why);
     actions.push_back(std::move(a));
   }

@@ -5,10 +5,14 @@
 //   frames N            draw N frames, touching nothing
 //   play N              play for N frames, then pause
 //   key CHORD           press a key for one frame: Space, Shift+Right, Ctrl+3, F2, ?
+//   type TEXT           type the rest of the line into the ImGui field that has the keyboard
+//                       (the file dialog's path, say), in one frame
 //   toggle LAYER        switch a layer (fill, edges, highlight, overlay, segments, ...)
 //   color-by NAME       none, angle, quality, area, region, age
 //   speed X             steps (or events, phases) per second, 0.25 to 1000
 //   unit event|step|phase
+//   toggle-marks KIND   mark a kind on the timeline, or stop: splits, rejected, cavities,
+//                       flips, refine, triangulate (timeline_marks.hpp)
 //   mouse X Y           move the pointer to pixel X, Y of the window
 //   click               press and release the left button where the pointer is
 //   select X Y          select what is at world point X, Y, as a click there does

@@ -27,6 +27,18 @@ class ScriptPlayer {
  public:
   ScriptPlayer(const std::vector<ScriptAction>& actions, const std::string& path) : actions_(actions), path_(path) {}
 
+  // Whether the next action must wait for a live run to end: all but `frames`, `peek` and
+  // `quit` look at the run, and a script sees the same whatever the machine's speed.
+  bool waits_for_live() const {
+    if (frames_left_ > 0 || !pending_.empty() || next_ >= actions_.size()) return false;
+    const std::string& v = actions_[next_].verb;
+    return !(v == "frames" || v == "peek" || v == "quit" || v == "screenshot" || v == "watch");
+  }
+  // (A screenshot does not wait: it shows the live page, for teaching material; what it
+  // shows depends on the machine's speed.)
+  // What `peek` writes while a live run goes (live_page.hpp); cleared when it ends.
+  void set_live_state(std::string json) { live_state_ = std::move(json); }
+
   bool done() const { return next_ >= actions_.size() && frames_left_ == 0 && pending_.empty() && !pause_now_; }
   bool quit() const { return quit_; }
 
@@ -37,19 +49,27 @@ class ScriptPlayer {
   bool before_frame(Viewer* viewer, std::string& open, const std::string& problem) {
     ImGuiIO& io = ImGui::GetIO();
     release(io);
+    // `watch`: frames, touching nothing, for as long as a live run goes.
+    if (watching_ && !live_state_.empty()) return false;
+    watching_ = false;
     // `play N` pauses after its N-th frame has played, not before.
     if (pause_now_ && viewer) {
       viewer->session().playback().playing = false;
       pause_now_ = false;
     }
     while (frames_left_ == 0 && pending_.empty() && next_ < actions_.size() && !quit_ && open.empty()) {
+      if (!live_state_.empty() && waits_for_live()) break;  // the loop waits for the run first
       const ScriptAction& a = actions_[next_++];
       if (a.verb == "open") {
         open = a.args[0];
         pending_.push_back({});  // the frame that shows it
         break;
       }
-      if (a.verb == "state" && !viewer) {
+      if (a.verb == "peek" && !live_state_.empty()) {
+        io::write_file_atomically(a.args[0], live_state_);
+        continue;
+      }
+      if ((a.verb == "state" || a.verb == "peek") && !viewer) {
         io::write_file_atomically(a.args[0], "{\n  \"page\": \"start\",\n  \"problem\": \"" + escaped(problem) + "\"\n}\n");
         continue;
       }
@@ -68,7 +88,7 @@ class ScriptPlayer {
         stop_playing_ = false;
       }
     }
-    return capture_ != nullptr;
+    return capture_ != nullptr && frames_left_ == 0;  // the screenshot's last frame
   }
 
   void after_frame(const scene::Image& captured) {
@@ -84,8 +104,8 @@ class ScriptPlayer {
   }
 
   static bool needs_viewer(const std::string& verb) {
-    return !(verb == "frames" || verb == "key" || verb == "mouse" || verb == "click" || verb == "drag" ||
-             verb == "wheel" || verb == "screenshot" || verb == "quit");
+    return !(verb == "frames" || verb == "key" || verb == "type" || verb == "mouse" || verb == "click" || verb == "drag" ||
+             verb == "wheel" || verb == "screenshot" || verb == "quit" || verb == "watch");
   }
 
   static std::string escaped(const std::string& s) {
@@ -102,6 +122,7 @@ class ScriptPlayer {
     bool shift = false, ctrl = false;
     bool button = false;  // left button held this frame
     float dx = 0, dy = 0, wheel = 0;
+    const std::string* text = nullptr;  // typed this frame (the action's text)
   };
 
   void release(ImGuiIO& io) {
@@ -124,18 +145,35 @@ class ScriptPlayer {
     io.MousePos = ImVec2(mouse_x_, mouse_y_);
     io.MouseDown[0] = in.button;
     io.MouseWheel = in.wheel;
+    if (in.text) io.AddInputCharactersUTF8(in.text->c_str());
+  }
+
+  static void wait_for_background(Viewer& viewer) {
+    if (!viewer.session().log()) return;
+    while (!viewer.history().ready() || !viewer.plots().ready()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
 
   // Runs one action; true when it takes frames (the loop then draws them).
   // `viewer` is null only for the actions that need none (needs_viewer).
   bool run(const ScriptAction& a, Viewer* viewer, ImGuiIO& io) {
     const auto& v = a.verb;
+    // What a script looks at is the cursor's moment, even when a worker draws the canvas.
+    // A screenshot also waits for the background work (the history's index, the plots), so
+    // that the window it takes does not depend on the machine's speed.
+    if (viewer && (v == "screenshot" || v == "canvas" || v == "state" || v == "select" || v == "wait" ||
+                   v == "settle"))
+      viewer->settle_canvas();
+    if (viewer && (v == "screenshot" || v == "wait")) wait_for_background(*viewer);
     if (v == "seek") {
       if (a.args[0] == "start") viewer->session().to_start();
       else if (a.args[0] == "end") viewer->session().to_end();
       else if (a.args[0] == "step") viewer->session().seek_step(std::strtoull(a.args[1].c_str(), nullptr, 10));
       else viewer->session().seek(std::strtoull(a.args[1].c_str(), nullptr, 10));
       return false;
+    }
+    if (v == "watch") {
+      watching_ = !live_state_.empty();
+      return watching_;
     }
     if (v == "frames") {
       frames_left_ = std::strtoull(a.args[0].c_str(), nullptr, 10);
@@ -152,6 +190,16 @@ class ScriptPlayer {
       pending_.push_back({c.key, c.shift, c.ctrl});
       pending_.push_back({});  // released on the next frame
       return true;
+    }
+    if (v == "type") {
+      Input typing;
+      typing.text = &a.args[0];
+      pending_.push_back(typing);
+      return true;
+    }
+    if (v == "toggle-marks") {
+      viewer->timeline_marks.toggle(*parse_mark(a.args[0]));
+      return false;
     }
     if (v == "toggle") {
       viewer->toggle_layer(*scene::parse_layer(a.args[0]));
@@ -203,8 +251,10 @@ class ScriptPlayer {
       return true;
     }
     if (v == "screenshot") {
+      // Two frames: ImGui lays out what changed (a panel grown by the background work) on
+      // the first, and the second is the one taken.
       capture_ = &a;
-      frames_left_ = 1;
+      frames_left_ = 2;
       return true;
     }
     if (v == "canvas") {
@@ -213,7 +263,7 @@ class ScriptPlayer {
       else scene::write_png(file, viewer->canvas_picture(), 6);
       return false;
     }
-    if (v == "state") {
+    if (v == "state" || v == "peek") {
       io::write_file_atomically(a.args[0], state_json(*viewer));
       return false;
     }
@@ -221,11 +271,7 @@ class ScriptPlayer {
       viewer->select_at({std::strtod(a.args[0].c_str(), nullptr), std::strtod(a.args[1].c_str(), nullptr)});
       return false;
     }
-    if (v == "wait") {
-      while (!viewer->history().ready() || !viewer->plots().ready())
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
-      return false;
-    }
+    if (v == "wait" || v == "settle") return false;
     if (v == "check") {
       viewer->invariants().start(viewer->session().log() ? viewer->session().log()->path() : std::string());
       viewer->invariants().wait();
@@ -243,6 +289,8 @@ class ScriptPlayer {
   std::string path_;
   std::size_t next_ = 0;
   std::uint64_t frames_left_ = 0;
+  std::string live_state_;
+  bool watching_ = false;
   bool stop_playing_ = false, pause_now_ = false;
   bool quit_ = false;
   std::vector<Input> pending_;

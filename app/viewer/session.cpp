@@ -19,7 +19,7 @@ std::unique_ptr<Session> Session::open_log(const std::string& path) {
   s->title_ = path;
   s->log_ = std::make_unique<replay::LogReader>(path);
   s->cursor_ = std::make_unique<replay::Replay>(*s->log_);
-  s->cursor_->seek_event(s->log_->event_count());
+  s->position_ = s->log_->event_count();  // the end of the run; replayed when first drawn
   return s;
 }
 
@@ -42,9 +42,9 @@ Session::~Session() = default;
 CursorInfo Session::cursor_info() const {
   CursorInfo info;
   if (!log_) return info;
-  info.position = cursor_->position();
+  info.position = position_;
   info.event_count = log_->event_count();
-  info.step = cursor_->completed_steps();
+  info.step = log_->completed_steps_at(position_);
   info.step_count = log_->step_count();
   // Phases nest: the last one begun before the cursor that has not ended is the innermost.
   for (const replay::PhaseSpan& p : log_->phases())
@@ -59,16 +59,18 @@ void Session::moved() {
 void Session::seek(std::uint64_t position) {
   if (!log_) return;
   position = std::min(position, log_->event_count());
-  if (position == cursor_->position()) return;
-  cursor_->seek_event(position);
+  if (position == position_) return;
+  position_ = position;
   moved();
 }
 
 void Session::seek_step(std::uint64_t steps) {
-  if (!log_) return;
-  const std::uint64_t before = cursor_->position();
-  cursor_->seek_step(steps);
-  if (cursor_->position() != before) moved();
+  if (log_) seek(log_->step_start(std::min(steps, log_->step_count())));
+}
+
+const replay::Replay* Session::cursor() {
+  if (cursor_ && cursor_->position() != position_) cursor_->seek_event(position_);
+  return cursor_.get();
 }
 
 void Session::to_end() {
@@ -77,19 +79,15 @@ void Session::to_end() {
 
 void Session::move(Unit unit, int direction) {
   if (!log_ || direction == 0) return;
-  const std::uint64_t at = cursor_->position();
+  const std::uint64_t at = position_;
   switch (unit) {
     case Unit::event:
       if (direction > 0) seek(at + 1);
       else if (at > 0) seek(at - 1);
       return;
-    case Unit::step: {
-      const std::uint64_t before = at;
-      if (direction > 0) cursor_->next_step();
-      else cursor_->prev_step();
-      if (cursor_->position() != before) moved();
+    case Unit::step:
+      seek(direction > 0 ? log_->next_step_boundary(at) : log_->prev_step_boundary(at));
       return;
-    }
     case Unit::phase: {
       // To the next phase boundary (a begin or an end) past the cursor, or the one before it.
       std::uint64_t target = direction > 0 ? log_->event_count() : 0;
@@ -107,17 +105,17 @@ void Session::move(Unit unit, int direction) {
 bool Session::find_step(replay::StepKind kind, int direction) {
   if (!log_) return false;
   const std::uint64_t steps = log_->step_count();
-  const std::uint64_t done = cursor_->completed_steps();
+  const std::uint64_t done = log_->completed_steps_at(position_);
   // The cursor stands at the end of step done - 1 (or inside step done).
   if (direction > 0) {
     for (std::uint64_t k = done; k < steps; ++k)
-      if (log_->step_kind(k) == kind && log_->step_start(k + 1) > cursor_->position()) {
+      if (log_->step_kind(k) == kind && log_->step_start(k + 1) > position_) {
         seek(log_->step_start(k + 1));
         return true;
       }
   } else {
     for (std::uint64_t k = std::min(done, steps); k-- > 0;)
-      if (log_->step_kind(k) == kind && log_->step_start(k + 1) < cursor_->position()) {
+      if (log_->step_kind(k) == kind && log_->step_start(k + 1) < position_) {
         seek(log_->step_start(k + 1));
         return true;
       }
@@ -127,7 +125,7 @@ bool Session::find_step(replay::StepKind kind, int direction) {
 
 bool Session::find_event(const std::function<bool(const replay::Event&)>& wanted, int direction) {
   if (!log_) return false;
-  const std::uint64_t at = cursor_->position(), n = log_->event_count();
+  const std::uint64_t at = position_, n = log_->event_count();
   if (direction > 0) {
     for (std::uint64_t e = at; e < n; ++e)
       if (wanted(log_->event(e))) {
@@ -159,7 +157,7 @@ bool is_big_cavity(const replay::Event& e) {
 void Session::toggle_play() {
   if (!log_) return;
   // Play at the end starts again from the beginning, as a video player does.
-  if (!playback_.playing && cursor_->position() == log_->event_count()) seek(0);
+  if (!playback_.playing && position_ == log_->event_count()) seek(0);
   playback_.playing = !playback_.playing;
   playback_.owed = 0.0;
 }
@@ -174,13 +172,13 @@ void Session::advance(double seconds) {
   const auto units = static_cast<std::uint64_t>(whole);
   if (units == 0) return;
   if (playback_.unit == Unit::event) {
-    seek(cursor_->position() + units);
+    seek(position_ + units);
   } else if (playback_.unit == Unit::step) {
-    seek_step(cursor_->completed_steps() + units);
+    seek_step(log_->completed_steps_at(position_) + units);
   } else {
     for (std::uint64_t i = 0; i < units; ++i) move(Unit::phase, +1);
   }
-  if (cursor_->position() == log_->event_count()) playback_.playing = false;
+  if (position_ == log_->event_count()) playback_.playing = false;
 }
 
 void Session::scale_speed(double factor) {
@@ -188,7 +186,7 @@ void Session::scale_speed(double factor) {
 }
 
 void Session::set_bookmark(int slot) {
-  if (log_ && slot >= 1 && slot <= 9) bookmarks_[static_cast<std::size_t>(slot)] = cursor_->position();
+  if (log_ && slot >= 1 && slot <= 9) bookmarks_[static_cast<std::size_t>(slot)] = position_;
 }
 
 bool Session::go_to_bookmark(int slot) {
@@ -221,8 +219,9 @@ void Session::set_layer(scene::Layer layer, bool on) {
 }
 
 const scene::Scene& Session::scene() {
-  if (!scene_stale_) return scene_;
+  if (!scene_stale_ || pictures_deferred_) return scene_;
   if (log_) {
+    cursor();  // brought to the position
     if (options_.color_by == scene::ColorBy::age) {
       ages_.update(*cursor_);
       scene_ = scene::build_scene(*cursor_, options_, &ages_);
@@ -240,15 +239,38 @@ const scene::Scene& Session::scene() {
 }
 
 const scene::Explanation& Session::explanation() {
-  if (!explanation_stale_) return explanation_;
+  if (!explanation_stale_ || pictures_deferred_) return explanation_;
   if (log_) {
-    explanation_ = scene::explain_step(*cursor_);
+    explanation_ = scene::explain_step(*cursor());
   } else {
     explanation_ = {title_, {mesh_ ? "a mesh: " + std::to_string(mesh_->triangles.size()) + " triangles"
                                    : "an input: " + std::to_string(input_ ? input_->points.size() : 0) + " vertices"}};
   }
   explanation_stale_ = false;
   return explanation_;
+}
+
+void Session::defer_pictures(bool on) {
+  pictures_deferred_ = on;
+  scene_stale_ = explanation_stale_ = true;  // built here again when no longer deferred
+  adopted_serial_ = SIZE_MAX;
+}
+
+void Session::adopt(Moment& moment) {
+  if (moment.serial == adopted_serial_ && moment.position == shown_position_) return;
+  adopted_serial_ = moment.serial;
+  std::swap(scene_, moment.scene);
+  std::swap(explanation_, moment.explanation);
+  shown_position_ = moment.position;
+  scene_.visible = options_.layers;
+  ++scene_builds_;
+}
+
+void Session::build_moment(Moment& moment) {
+  moment.position = position_;
+  moment.scene = scene();
+  moment.explanation = explanation();
+  moment.serial = scene_builds_;
 }
 
 }  // namespace meshstep::viewer

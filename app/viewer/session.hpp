@@ -2,8 +2,10 @@
 // a still mesh or input; playback, bookmarks and the drawing options. No GL and no ImGui:
 // the UI reads and drives it, and the tests drive it directly.
 //
-// The canvas always shows the exact mesh at the cursor: scene() is rebuilt from the replay
-// cursor whenever the position or the options change, never approximated.
+// The canvas always shows the exact mesh at a position of the run: scene() is rebuilt from
+// the replay cursor whenever the position or the options change, never approximated. Moving
+// only sets the position (the step and phase come from the log's index); the cursor replays
+// to it when a picture or the words are asked for.
 #pragma once
 
 #include <array>
@@ -59,7 +61,8 @@ class Session {
   const replay::LogReader* log() const { return log_.get(); }
   bool has_timeline() const { return log_ != nullptr; }
   CursorInfo cursor_info() const;
-  const replay::Replay* cursor() const { return cursor_.get(); }
+  // The replay cursor, brought to the position (a seek, replayed on this thread).
+  const replay::Replay* cursor();
 
   // Moving. All clamp to the run and mark the scene stale when the position changes.
   void seek(std::uint64_t position);
@@ -96,8 +99,26 @@ class Session {
   // The picture at the cursor (rebuilt if stale), and the words for it.
   const scene::Scene& scene();
   const scene::Explanation& explanation();
-  // Times the scene was built: stays put while nothing changes (an idle viewer).
+  // Times the scene was built (or adopted): stays put while nothing changes (an idle viewer).
   std::size_t scene_builds() const { return scene_builds_; }
+
+  // Pictures made on another thread (the canvas worker, for big runs): once deferred,
+  // scene() and explanation() never build on this thread; they return the last moment
+  // adopted, which shows shown_position() while the cursor may already stand elsewhere.
+  struct Moment {
+    std::uint64_t position = 0;
+    std::size_t serial = 0;  // the builder's scene_builds(): the same for the same content
+    scene::Scene scene;
+    scene::Explanation explanation;
+  };
+  void defer_pictures(bool on);
+  bool pictures_deferred() const { return pictures_deferred_; }
+  // Takes the moment's scene and words (swapped, so that its buffers are reused), unless it
+  // is the moment shown already (a picture of it from another camera).
+  void adopt(Moment& moment);
+  std::uint64_t shown_position() const { return pictures_deferred_ ? shown_position_ : position_; }
+  // The worker's side: the moment at the position, built here.
+  void build_moment(Moment& moment);
 
  private:
   Session() = default;
@@ -105,7 +126,8 @@ class Session {
 
   std::string title_;
   std::unique_ptr<replay::LogReader> log_;
-  std::unique_ptr<replay::Replay> cursor_;
+  std::unique_ptr<replay::Replay> cursor_;  // follows position_ when a picture is asked for
+  std::uint64_t position_ = 0;
   std::optional<TriMesh> mesh_;
   std::optional<Pslg> input_;
 
@@ -118,6 +140,9 @@ class Session {
   scene::Explanation explanation_;
   bool scene_stale_ = true, explanation_stale_ = true;
   std::size_t scene_builds_ = 0;
+  bool pictures_deferred_ = false;
+  std::uint64_t shown_position_ = UINT64_MAX;  // none yet
+  std::size_t adopted_serial_ = SIZE_MAX;
 };
 
 }  // namespace meshstep::viewer

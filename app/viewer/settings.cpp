@@ -276,6 +276,18 @@ Problem apply(Settings& s, std::string_view key, std::string_view value) {
   if (key == "follow") return parse_bool(key, value, s.follow);
   if (key == "speed") return parse_real(key, value, Playback::kMinSpeed, Playback::kMaxSpeed, s.speed);
   if (key == "layers") return parse_layers(value, s.layers);
+  if (key == "timeline_marks") {
+    std::string bad;
+    const std::optional<MarkSet> marks = parse_marks(value, bad);
+    if (!marks) {
+      std::string known;
+      for (std::size_t i = 0; i < kMarkCount; ++i) known.append(i ? ", " : "").append(name(static_cast<Mark>(i)));
+      if (bad.empty()) return std::string("timeline_marks: an empty kind");
+      return std::string("timeline_marks: unknown kind '").append(shown(bad)).append("' (").append(known).append(")");
+    }
+    s.timeline_marks = *marks;
+    return std::nullopt;
+  }
   if (key == "color_by") {
     const std::optional<scene::ColorBy> c = scene::parse_color_by(value);
     if (!c) {
@@ -458,6 +470,7 @@ std::string format_settings(const Settings& s) {
   line("speed", format_real(s.speed));
   line("unit", file_name(s.unit));
   line("follow", boolean(s.follow));
+  line("timeline_marks", format_marks(s.timeline_marks));
   // As load_settings would keep them: no empty paths, no duplicates, the first ten.
   std::vector<std::string> written;
   for (const std::string& path : s.recent_files) {

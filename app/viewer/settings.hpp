@@ -16,6 +16,7 @@
 //   speed = 4
 //   unit = step
 //   follow = false
+//   timeline_marks = splits, rejected
 //   recent = /home/me/runs/square log.msl
 //   recent = /home/me/runs/key.msl
 //
@@ -31,6 +32,7 @@
 
 #include "meshstep/scene/scene.hpp"
 #include "session.hpp"
+#include "timeline_marks.hpp"
 
 namespace meshstep::viewer {
 
@@ -49,6 +51,7 @@ struct Settings {
   double speed = 4.0;  // Playback::kMinSpeed..Playback::kMaxSpeed
   Unit unit = Unit::step;
   bool follow = false;
+  MarkSet timeline_marks = MarkSet::defaults();  // the kinds the timeline marks
   std::vector<std::string> recent_files;  // most recent first, at most kMaxRecent, no duplicates
 
   // Puts `path` first (moving it there if it is already in the list) and drops the oldest

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "file_dialog.hpp"
 #include "meshstep/io/atomic_file.hpp"
 #include "meshstep/refine/quality.hpp"
 #include "meshstep/scene/svg.hpp"
@@ -55,33 +56,9 @@ void Viewer::draw_run_plots(float width) {
 }
 
 const Stats& Viewer::stats() {
-  const scene::Scene& s = session_->scene();
   if (stats_of_build_ == session_->scene_builds()) return stats_;
-  stats_ = Stats{};
-  std::vector<bool> used(s.mesh.points.size(), false);
-  stats_.min_angle = 180.0;
-  for (const auto& t : s.mesh.triangles) {
-    if (t[0] >= used.size() || t[1] >= used.size() || t[2] >= used.size()) continue;
-    const auto q = quality::shape(s.mesh.points[t[0]], s.mesh.points[t[1]], s.mesh.points[t[2]]);
-    const double smallest = q.min_angle_deg();
-    stats_.min_angle = std::min(stats_.min_angle, smallest);
-    stats_.max_angle = std::max(stats_.max_angle, q.max_angle_deg());
-    const auto bin = static_cast<std::size_t>(std::clamp(smallest / 60.0 * 18.0, 0.0, 17.0));
-    stats_.histogram[bin] += 1.0f;
-    for (const std::uint32_t v : t) used[v] = true;
-  }
-  stats_.triangles = s.mesh.triangles.size();
-  // A log numbers the input's vertices first (its input_vertices parameter counts them);
-  // a mesh file lists them first too (input_vertex_count is not known here: all count).
-  const replay::LogReader* log = session_->log();
-  const std::uint64_t inputs =
-      log ? std::strtoull(log->parameter("input_vertices", "0").c_str(), nullptr, 10) : used.size();
-  for (std::size_t v = 0; v < used.size(); ++v) {
-    if (!used[v]) continue;
-    ++stats_.vertices;
-    if (log && v < log->vertices().size()) stats_.steiner += log->vertices()[v].input_index >= inputs;
-  }
-  if (stats_.triangles == 0) stats_.min_angle = 0.0;
+  // A worker's picture brings the numbers of its moment (show_worker_picture).
+  if (!worker_) stats_ = measure(session_->scene().mesh, session_->log());
   stats_of_build_ = session_->scene_builds();
   return stats_;
 }
@@ -92,6 +69,9 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
   // The file's name: its folder is in the window's title.
   const std::string& title = session_->title();
   const std::size_t slash = title.rfind('/');
+  // Another file (Ctrl+O); a small button, so that the line is no taller than its text.
+  if (ImGui::SmallButton("Open...")) request_file_dialog();
+  ImGui::SameLine();
   ImGui::TextWrapped("%s", title.c_str() + (slash == std::string::npos ? 0 : slash + 1));
   ImGui::Separator();
 
@@ -152,9 +132,10 @@ void Viewer::draw_pseudocode() {
   if (!log) return;
   ImGui::SetNextItemOpen(code_open_);
   if (!(code_open_ = ImGui::CollapsingHeader("Pseudo-code"))) return;
-  const std::uint64_t at = session_->cursor_info().position;
+  // The moment the canvas and the explanation show (the cursor's, unless a worker draws).
+  const std::uint64_t at = session_->shown_position();
   if (at != code_position_) {
-    code_ = pseudocode_at(*log, *session_->cursor());
+    code_ = pseudocode_at(*log, at);
     code_position_ = at;
   }
   if (!code_.code) return;

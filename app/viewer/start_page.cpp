@@ -5,6 +5,9 @@
 #include <filesystem>
 #include <vector>
 
+#include "file_dialog.hpp"
+#include "keys.hpp"
+
 namespace meshstep::viewer {
 
 void draw_start_page(int width, int height, const Settings* settings, std::string& picked, RefineOptions& refine) {
@@ -73,6 +76,13 @@ void draw_start_page(int width, int height, const Settings* settings, std::strin
     picked = path;
     refine = RefineOptions{};
   }
+  // Or look for it: the file dialog (drawn over this page by the window; its pick opens as
+  // these do). Its key works here too, though the page has no viewer to run the key table.
+  const Chord open = open_file_chord();
+  const ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::Button("Open... (Ctrl+O)") ||
+      (ImGui::IsKeyPressed(open.key, false) && io.KeyCtrl == open.ctrl && io.KeyShift == open.shift))
+    request_file_dialog();
   ImGui::End();
 }
 

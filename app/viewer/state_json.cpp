@@ -26,6 +26,38 @@ std::string number(double v) {
   return buf;
 }
 
+// An event as {"step": K, "event": E}, its step counted from 1 as the caption does.
+std::string event_json(std::uint64_t e, const replay::LogReader& log) {
+  if (e == kNoEvent) return "null";
+  return std::string("{\"step\": ").append(std::to_string(log.step_of_event(e) + 1)).append(", \"event\": ").append(std::to_string(e)).append("}");
+}
+
+// The selection's story on one line: a triangle's making and replacement, a segment's input
+// segment, pieces and splits (null for a vertex, whose history is selection_history).
+std::string story_json(const SelectionStory& story, const replay::LogReader* log) {
+  if (!log) return "null";
+  if (story.triangle.created != kNoEvent) {
+    std::string out = std::string("{\"created\": ").append(event_json(story.triangle.created, *log));
+    out.append(", \"removed\": ").append(event_json(story.triangle.removed, *log));
+    return out.append(", \"slot\": ").append(std::to_string(story.triangle.slot)).append("}");
+  }
+  const SegmentStory& g = story.segment;
+  if (g.segment == kNone) return "null";
+  std::string out = std::string("{\"input\": [").append(std::to_string(g.a)).append(", ").append(std::to_string(g.b));
+  out.append("], \"pieces\": [");
+  for (std::size_t i = 0; i < g.pieces.size(); ++i)
+    out.append(i ? ", [" : "[").append(std::to_string(g.pieces[i].first)).append(", ").append(std::to_string(g.pieces[i].second)).append("]");
+  out.append("], \"splits\": [");
+  for (std::size_t i = 0; i < g.splits.size(); ++i) {
+    const SegmentStory::Split& x = g.splits[i];
+    out.append(i ? ", " : "").append("{\"step\": ").append(std::to_string(log->step_of_event(x.event) + 1));
+    out.append(", \"event\": ").append(std::to_string(x.event)).append(", \"vertex\": ").append(std::to_string(x.vertex));
+    out.append(", \"piece\": [").append(std::to_string(x.a)).append(", ").append(std::to_string(x.b)).append("]");
+    out.append(", \"at\": ").append(quoted(split_place(x))).append("}");
+  }
+  return out.append("]}");
+}
+
 }  // namespace
 
 std::string state_json(Viewer& v) {
@@ -62,6 +94,9 @@ std::string state_json(Viewer& v) {
   const scene::Camera& cam = v.camera();
   field("camera", "{\"x\": " + number(cam.center().x) + ", \"y\": " + number(cam.center().y) +
                       ", \"pixels_per_unit\": " + number(cam.pixels_per_unit()) + "}");
+  // Who drew the canvas, and which moment it shows (the cursor's, once settled).
+  field("canvas", v.canvas_on_worker() ? "\"worker\"" : "\"main\"");
+  field("shown_position", std::to_string(s.shown_position()));
   field("caption", quoted(s.scene().caption));
   const scene::Explanation& e = s.explanation();
   field("explain_heading", quoted(e.heading));
@@ -69,7 +104,7 @@ std::string state_json(Viewer& v) {
   for (const std::string& line : e.lines) lines += std::string(lines.size() > 1 ? ",\n    " : "\n    ") + quoted(line);
   field("explain", lines + "\n  ]");
   if (const replay::LogReader* log = s.log()) {
-    const CodeAt code = pseudocode_at(*log, *s.cursor());
+    const CodeAt code = pseudocode_at(*log, s.shown_position());
     field("code_title", code.code ? quoted(code.code->title) : "null");
     std::string current;
     for (int i = code.line; code.code && i >= 0 && i < code.line + std::max(1, code.lines) &&
@@ -85,12 +120,21 @@ std::string state_json(Viewer& v) {
   const auto& invariants = v.invariants().report();
   field("invariants", invariants ? quoted(describe(*invariants))
                                  : v.invariants().error().empty() ? "null" : quoted(v.invariants().error()));
+  const SelectionStory& story = v.selection_story();
   std::string steps = "[";
-  for (const std::uint64_t k : v.selected_vertex_steps()) steps += (steps.size() > 1 ? ", " : "") + std::to_string(k);
+  for (const std::uint64_t k : story.steps) steps += (steps.size() > 1 ? ", " : "") + std::to_string(k);
   field("selection_history", steps + "]");
-  field("history_index", v.history().ready() ? "{\"seconds\": " + number(v.history().build_seconds()) +
-                                                  ", \"bytes\": " + std::to_string(v.history().bytes()) + "}"
-                                            : "null");
+  field("selection_story", story_json(story, s.log()));
+  const ElementIndex& index = v.history();
+  std::string built = "null";
+  if (index.ready()) {
+    built = std::string("{\"seconds\": ").append(number(index.build_seconds()));
+    built.append(", \"bytes\": ").append(std::to_string(index.bytes()));
+    built.append(", \"vertex_bytes\": ").append(std::to_string(index.vertex_bytes()));
+    built.append(", \"slot_bytes\": ").append(std::to_string(index.slot_bytes()));
+    built.append(", \"segment_bytes\": ").append(std::to_string(index.segment_bytes())).append("}");
+  }
+  field("history_index", built);
   const std::string selected = v.selection_text();
   field("selection", selected.empty() ? "null" : quoted(selected));
   if (v.plots().ready() && !v.plots().triangles().empty()) {
@@ -99,6 +143,18 @@ std::string state_json(Viewer& v) {
                                  ", \"smallest_angle\": " + number(v.plots().smallest_angle()[k]) +
                                  ", \"bad\": " + number(v.plots().bad()[k]) + ", \"steps\": " +
                                  std::to_string(v.plots().triangles().size()) + "}");
+  }
+  if (s.log()) {
+    // The kinds the timeline marks, each with how many the last frame counted (null when it
+    // has not counted that kind yet).
+    std::string marks_shown = "{";
+    for (std::size_t m = 0; m < kMarkCount; ++m) {
+      const auto mark = static_cast<Mark>(m);
+      if (!v.timeline_marks.has(mark)) continue;
+      marks_shown.append(marks_shown.size() > 1 ? ", \"" : "\"").append(name(mark)).append("\": ");
+      marks_shown.append(v.timeline().counted(mark) ? std::to_string(v.timeline().total_marks[m]) : "null");
+    }
+    field("timeline_marks", marks_shown + "}");
   }
   field("scene_builds", std::to_string(s.scene_builds()));
   out += "  \"canvas_renders\": " + std::to_string(v.canvas_renders()) + "\n}\n";

@@ -23,25 +23,84 @@ int column_of(std::uint64_t position, std::uint64_t event_count, int columns) {
   return std::clamp(c, 0, columns - 1);
 }
 
-void TimelineCache::update(const replay::LogReader& reader, int width) {
-  if (log == &reader && columns == width) return;
+void TimelineCache::scan_events(const replay::LogReader& reader) {
+  for (std::vector<std::uint64_t>& p : event_positions) p.clear();
+  const std::uint64_t events = reader.event_count();
+  for (std::size_t b = 0; b < reader.blocks().size(); ++b) {
+    const replay::DecodedEvents& block = reader.block_events(b);
+    const std::uint64_t first = reader.blocks()[b].first_event;
+    for (std::size_t i = 0; i < block.size() && first + i < events; ++i) {
+      // Only these types can be marked: the others are passed over without building them.
+      const replay::EventType type = block.heads[i].type;
+      if (type != replay::EventType::flip && type != replay::EventType::encroached && type != replay::EventType::cavity)
+        continue;
+      const replay::Event e = block[i];
+      for (std::size_t m = 0; m < kMarkCount; ++m)
+        if (!marks_steps(static_cast<Mark>(m)) && marks_event(static_cast<Mark>(m), e))
+          event_positions[m].push_back(first + i + 1);
+    }
+  }
+  events_scanned = true;
+}
+
+void TimelineCache::update(const replay::LogReader& reader, int width, MarkSet wanted) {
+  const bool new_log = log != &reader;
+  const bool scan = wanted.any_event_kind() && (new_log || !events_scanned);
+  if (!new_log && columns == width && !scan) return;
+  if (new_log) {
+    events_scanned = false;
+    for (std::vector<std::uint64_t>& p : event_positions) std::vector<std::uint64_t>().swap(p);
+  }
   log = &reader;
   columns = width;
-  steps.assign(static_cast<std::size_t>(width), 0);
-  splits.assign(static_cast<std::size_t>(width), 0);
+  if (scan) scan_events(reader);
+
+  const auto w = static_cast<std::size_t>(std::max(0, width));
+  steps.assign(w, 0);
+  for (std::size_t m = 0; m < kMarkCount; ++m) {
+    const bool countable = marks_steps(static_cast<Mark>(m)) || events_scanned;
+    if (countable) marks[m].assign(w, 0);
+    else marks[m].clear();
+  }
   const std::uint64_t events = reader.event_count();
-  for (std::uint64_t k = 0; k < reader.step_count(); ++k) {
-    const auto c = static_cast<std::size_t>(column_of(reader.step_start(k + 1), events, width));
-    ++steps[c];
-    splits[c] += reader.step_kind(k) == replay::StepKind::split_segment;
+  if (w > 0) {
+    for (std::uint64_t k = 0; k < reader.step_count(); ++k) {
+      const auto c = static_cast<std::size_t>(column_of(reader.step_start(k + 1), events, width));
+      ++steps[c];
+      for (std::size_t m = 0; m < kMarkCount; ++m)
+        if (marks_steps(static_cast<Mark>(m))) marks[m][c] += marks_step(static_cast<Mark>(m), reader.step_kind(k));
+    }
+    if (events_scanned)
+      for (std::size_t m = 0; m < kMarkCount; ++m)
+        for (const std::uint64_t position : event_positions[m])
+          ++marks[m][static_cast<std::size_t>(column_of(position, events, width))];
   }
   most_steps = steps.empty() ? 0 : *std::max_element(steps.begin(), steps.end());
+  for (std::size_t m = 0; m < kMarkCount; ++m) {
+    most_marks[m] = marks[m].empty() ? 0 : *std::max_element(marks[m].begin(), marks[m].end());
+    total_marks[m] = 0;
+    for (const std::uint32_t n : marks[m]) total_marks[m] += n;
+  }
+}
+
+ImU32 mark_color(Mark mark) {
+  // Okabe-Ito: the splits keep the vermillion they always had; reddish purple is left to
+  // the selected vertex's history.
+  static constexpr ImU32 kColors[kMarkCount] = {
+      IM_COL32(213, 94, 0, 255),    // splits: vermillion
+      IM_COL32(240, 228, 66, 255),  // rejected points: yellow
+      IM_COL32(86, 180, 233, 255),  // cavities: sky blue
+      IM_COL32(0, 114, 178, 255),   // flips: blue
+      IM_COL32(0, 158, 115, 255),   // refinement steps: bluish green
+      IM_COL32(230, 159, 0, 255),   // triangulation steps: orange
+  };
+  return kColors[static_cast<std::size_t>(mark)];
 }
 
 void draw_timeline_picture(ImDrawList& draw, const replay::LogReader& log, TimelineCache& cache, const Session& session,
-                           ImVec2 origin, ImVec2 size) {
+                           ImVec2 origin, ImVec2 size, MarkSet shown) {
   const int width = static_cast<int>(size.x);
-  cache.update(log, width);
+  cache.update(log, width, shown);
   const std::uint64_t events = std::max<std::uint64_t>(1, log.event_count());
   const auto x_of = [&](std::uint64_t position) {
     return origin.x + static_cast<float>(static_cast<double>(position) / static_cast<double>(events)) * size.x;
@@ -61,6 +120,17 @@ void draw_timeline_picture(ImDrawList& draw, const replay::LogReader& log, Timel
     if (text.x + 8.0f < x1 - x0) draw.AddText(ImVec2(x0 + 4.0f, top + 2.0f), IM_COL32(255, 255, 255, 230), label);
   }
 
+  // The chosen kinds' marks, a row each from the bar's bottom up, in Mark order; the step
+  // ticks stand above them. Rows are 8 pixels high, less when many would leave the ticks
+  // no room.
+  std::size_t rows = 0;
+  for (std::size_t m = 0; m < kMarkCount; ++m)
+    rows += shown.has(static_cast<Mark>(m)) && cache.counted(static_cast<Mark>(m));
+  const float below_bands = bottom - band_bottom - 2.0f;
+  const float row_height =
+      rows == 0 ? 0.0f : std::clamp((below_bands - 8.0f) / static_cast<float>(rows), 3.0f, 8.0f);
+  const float ticks_bottom = bottom - 2.0f - static_cast<float>(rows) * row_height;
+
   // Steps: one tick each when they have room, else their density per column.
   const bool ticks = log.step_count() > 0 && static_cast<double>(log.step_count()) * 3.0 < size.x;
   for (int c = 0; c < cache.columns; ++c) {
@@ -68,10 +138,25 @@ void draw_timeline_picture(ImDrawList& draw, const replay::LogReader& log, Timel
     if (n == 0) continue;
     const float x = origin.x + static_cast<float>(c) + 0.5f;
     const float strength = ticks ? 1.0f : 0.25f + 0.75f * static_cast<float>(n) / static_cast<float>(cache.most_steps);
-    draw.AddLine(ImVec2(x, band_bottom + 2.0f), ImVec2(x, bottom - 10.0f),
+    draw.AddLine(ImVec2(x, band_bottom + 2.0f), ImVec2(x, ticks_bottom),
                  IM_COL32(220, 220, 220, static_cast<int>(255 * strength)));
-    if (cache.splits[static_cast<std::size_t>(c)])
-      draw.AddRectFilled(ImVec2(x - 1.5f, bottom - 9.0f), ImVec2(x + 1.5f, bottom - 2.0f), IM_COL32(213, 94, 0, 255));
+  }
+  std::size_t row = 0;
+  for (std::size_t m = 0; m < kMarkCount; ++m) {
+    const auto mark = static_cast<Mark>(m);
+    if (!shown.has(mark) || !cache.counted(mark)) continue;
+    const float y1 = bottom - 2.0f - static_cast<float>(row++) * row_height, y0 = y1 - (row_height - 1.0f);
+    const ImU32 color = mark_color(mark);
+    const std::vector<std::uint32_t>& counts = cache.marks[m];
+    for (int c = 0; c < cache.columns; ++c) {
+      const std::uint32_t n = counts[static_cast<std::size_t>(c)];
+      if (n == 0) continue;
+      // A column with more of them is stronger: a density, as the ticks have.
+      const float strength = 0.4f + 0.6f * static_cast<float>(n) / static_cast<float>(cache.most_marks[m]);
+      const float x = origin.x + static_cast<float>(c) + 0.5f;
+      draw.AddRectFilled(ImVec2(x - 1.5f, y0), ImVec2(x + 1.5f, y1),
+                         (color & ~IM_COL32_A_MASK) | (static_cast<ImU32>(255 * strength) << IM_COL32_A_SHIFT));
+    }
   }
 
   // Bookmarks and the cursor.

@@ -1,35 +1,58 @@
 // The timeline: one bar over the whole run. Phases are coloured bands, steps are ticks (or,
-// when there are more steps than pixels, a density: how many steps each column holds),
-// segment splits are marked, and the cursor and the bookmarks stand over it.
+// when there are more steps than pixels, a density: how many steps each column holds), the
+// kinds of step and event a person chose are marked (timeline_marks.hpp: segment splits
+// unless chosen otherwise), each kind in a row of its own colour along the bar's bottom,
+// and the cursor and the bookmarks stand over it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
 #include <imgui.h>
 
 #include "meshstep/replay/log_reader.hpp"
+#include "timeline_marks.hpp"
 
 namespace meshstep::viewer {
 
 class Session;
 
 // The columns of the bar, counted once per log and width (a million steps take a few
-// milliseconds to count; a frame then only draws).
+// milliseconds to count; a frame then only draws). The kinds that mark events need one pass
+// over the log's events: it is made the first time one of them is wanted (not when the log
+// opens, so that a person who never asks for them never waits for it), and it keeps the
+// positions of all of them so that a new width is counted without reading the log again.
 struct TimelineCache {
   const replay::LogReader* log = nullptr;
   int columns = 0;
-  std::vector<std::uint32_t> steps, splits;  // step ends per column; segment splits among them
+  std::vector<std::uint32_t> steps;  // step ends per column
   std::uint32_t most_steps = 0;
+  // Per kind: its marks per column (empty until counted), the most in one column, and all.
+  std::array<std::vector<std::uint32_t>, kMarkCount> marks;
+  std::array<std::uint32_t, kMarkCount> most_marks{};
+  std::array<std::uint64_t, kMarkCount> total_marks{};
+  // The event kinds' positions (just after each event), once the pass has been made.
+  bool events_scanned = false;
+  std::array<std::vector<std::uint64_t>, kMarkCount> event_positions;
 
-  // Counts again when the log or the width changed.
-  void update(const replay::LogReader& log, int columns);
+  // Counts again when the log or the width changed, or when `wanted` asks for event kinds
+  // whose pass has not been made yet.
+  void update(const replay::LogReader& log, int columns, MarkSet wanted);
+  // Whether kind `m` has been counted (an event kind: once its pass was made).
+  bool counted(Mark m) const { return !marks[static_cast<std::size_t>(m)].empty(); }
+
+ private:
+  void scan_events(const replay::LogReader& log);
 };
 
 // The bar's column of an event position (0 .. columns - 1).
 int column_of(std::uint64_t position, std::uint64_t event_count, int columns);
 
+// The colour of a kind's marks (Okabe-Ito, as the phases are).
+ImU32 mark_color(Mark mark);
+
 void draw_timeline_picture(ImDrawList& draw, const replay::LogReader& log, TimelineCache& cache, const Session& session,
-                           ImVec2 origin, ImVec2 size);
+                           ImVec2 origin, ImVec2 size, MarkSet shown);
 
 }  // namespace meshstep::viewer

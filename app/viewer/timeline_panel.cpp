@@ -1,12 +1,41 @@
-// The viewer's timeline panel: the transport buttons and the bar (timeline.hpp draws it).
+// The viewer's timeline panel: the transport buttons, the choice of marks, and the bar
+// (timeline.hpp draws it).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include "panel_style.hpp"
 #include "viewer.hpp"
 
 namespace meshstep::viewer {
+
+namespace {
+
+// Which kinds the bar marks: a checkbox each, with its colour and how many the run has.
+void draw_marks_choice(MarkSet& shown, const TimelineCache& cache) {
+  if (ImGui::Button("marks")) ImGui::OpenPopup("timeline marks");
+  if (!ImGui::BeginPopup("timeline marks")) return;
+  ImGui::TextDisabled("marked along the bar's bottom, a row each");
+  for (std::size_t m = 0; m < kMarkCount; ++m) {
+    const auto mark = static_cast<Mark>(m);
+    ImGui::PushID(static_cast<int>(m));
+    ImGui::ColorButton("##colour", ImGui::ColorConvertU32ToFloat4(mark_color(mark)),
+                       ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop, ImVec2(12, 12));
+    ImGui::SameLine();
+    bool on = shown.has(mark);
+    char text[96];
+    if (cache.counted(mark))
+      std::snprintf(text, sizeof text, "%s (%llu)", label(mark), static_cast<unsigned long long>(cache.total_marks[m]));
+    else
+      std::snprintf(text, sizeof text, "%s", label(mark));
+    if (ImGui::Checkbox(text, &on)) shown.set(mark, on);
+    ImGui::PopID();
+  }
+  ImGui::EndPopup();
+}
+
+}  // namespace
 
 void Viewer::draw_transport() {
   Session& s = *session_;
@@ -25,13 +54,14 @@ void Viewer::draw_transport() {
   ImGui::SameLine();
   if (ImGui::Button(">|")) s.to_end();
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(150);
+  // Narrow enough for the row to hold the marks button in a 1024-pixel window.
+  ImGui::SetNextItemWidth(112);
   float speed = static_cast<float>(s.playback().speed);
   if (ImGui::SliderFloat("##speed", &speed, static_cast<float>(Playback::kMinSpeed),
                          static_cast<float>(Playback::kMaxSpeed), "%.2f /s", ImGuiSliderFlags_Logarithmic))
     s.playback().speed = speed;
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(90);
+  ImGui::SetNextItemWidth(84);
   int unit = static_cast<int>(s.playback().unit);
   static const char* const kUnits[] = {"events", "steps", "phases"};
   if (ImGui::Combo("##unit", &unit, kUnits, 3)) s.playback().unit = static_cast<Unit>(unit);
@@ -42,6 +72,8 @@ void Viewer::draw_transport() {
     s.seek_step(std::strtoull(goto_text_, nullptr, 10));
     goto_text_[0] = '\0';
   }
+  ImGui::SameLine();
+  draw_marks_choice(timeline_marks, timeline_cache_);
   (void)c;  // the bar itself says where the cursor is (timeline.cpp)
 }
 
@@ -64,15 +96,28 @@ void Viewer::draw_timeline_bar(float height) {
     const double t = std::clamp((ImGui::GetIO().MousePos.x - origin.x) / width, 0.0f, 1.0f);
     session_->seek(static_cast<std::uint64_t>(std::llround(t * static_cast<double>(events))));
   }
-  draw_timeline_picture(*ImGui::GetWindowDrawList(), log, timeline_cache_, *session_, origin, ImVec2(width, height));
-  // The selected vertex's history as ticks along the bar's bottom.
-  if (selected_.kind == Picked::Kind::vertex) {
+  draw_timeline_picture(*ImGui::GetWindowDrawList(), log, timeline_cache_, *session_, origin, ImVec2(width, height),
+                        timeline_marks);
+  // The selection's history (a vertex's, a triangle's, a segment's) as ticks along the bar's
+  // bottom.
+  if (selected_.kind != Picked::Kind::none) {
     ImDrawList& draw = *ImGui::GetWindowDrawList();
     const float bottom = origin.y + height;
-    for (const std::uint32_t e : history_.events_of_vertex(selected_.index)) {
+    // A click within a few pixels of a tick goes to the end of its step, as its button does
+    // (the bar itself would land on the pixel's event).
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool clicked = ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f &&
+                         io.MousePos.y >= origin.y && io.MousePos.y <= bottom && io.MousePos.x >= origin.x &&
+                         io.MousePos.x <= origin.x + width;
+    std::uint64_t nearest = kNoEvent;
+    float nearest_px = 4.0f;
+    for (const std::uint64_t e : selection_story().events) {
       const float x = origin.x + static_cast<float>(static_cast<double>(e) / static_cast<double>(events)) * width;
       draw.AddLine(ImVec2(x, bottom - 16.0f), ImVec2(x, bottom), IM_COL32(204, 121, 167, 255), 2.0f);
+      if (clicked && std::abs(io.MousePos.x - x) <= nearest_px) nearest = e, nearest_px = std::abs(io.MousePos.x - x);
     }
+    if (nearest != kNoEvent && log.step_of_event(nearest) < log.step_count())
+      session_->seek_step(log.step_of_event(nearest) + 1);
   }
 }
 

@@ -28,12 +28,26 @@ BBox run_box(Session& session) {
 
 }  // namespace
 
-Viewer::Viewer(std::unique_ptr<Session> session) : session_(std::move(session)) {
-  if (const replay::LogReader* log = session_->log()) {
-    angle_bound_ = std::strtod(log->parameter("min_angle", "0").c_str(), nullptr);
-    history_.build(log->path());
-    plots_.build(log->path(), angle_bound_);
+Viewer::Viewer(std::unique_ptr<Session> session, const CanvasOptions& canvas) : session_(std::move(session)) {
+  const replay::LogReader* log = session_->log();
+  if (!log) return;
+  angle_bound_ = std::strtod(log->parameter("min_angle", "0").c_str(), nullptr);
+  const bool big = log->vertices().size() > kCanvasWorkerVertices;
+  if (canvas.mode == CanvasMode::worker || (canvas.mode == CanvasMode::automatic && big)) {
+    worker_ = std::make_unique<CanvasWorker>(log->path(), canvas.backend);
+    session_->defer_pictures(true);
+  } else {
+    start_background_jobs();
   }
+}
+
+// The history's index and the plots read the whole log on threads of their own. With a
+// canvas worker they wait for its first picture: on two cores, they would slow it down.
+void Viewer::start_background_jobs() {
+  if (background_started_) return;
+  background_started_ = true;
+  history_.build(session_->log()->path());
+  plots_.build(session_->log()->path(), angle_bound_);
 }
 
 void Viewer::apply(const Settings& s) {
@@ -44,6 +58,7 @@ void Viewer::apply(const Settings& s) {
   session_->playback().speed = std::clamp(s.speed, Playback::kMinSpeed, Playback::kMaxSpeed);
   session_->playback().unit = s.unit;
   follow = s.follow;
+  timeline_marks = s.timeline_marks;
   side_panel_width_ = s.side_panel_width;
   explain_open_ = s.explain_open;
   layers_open_ = s.layers_open;
@@ -58,6 +73,7 @@ void Viewer::capture(Settings& s) const {
   s.speed = session_->playback().speed;
   s.unit = session_->playback().unit;
   s.follow = follow;
+  s.timeline_marks = timeline_marks;
   s.side_panel_width = side_panel_width_;
   s.explain_open = explain_open_;
   s.layers_open = layers_open_;
@@ -77,6 +93,7 @@ void Viewer::fit_camera(int width, int height) {
   const scene::Scene& s = session_->scene();
   camera_ = scene::Camera::fit(run_box(*session_), width, height, scene::layout(s, width, height).margins);
   fit_pending_ = false;
+  camera_moved_ = false;
 }
 
 // Keeps the faces the current step changed in view: pans when they leave the middle 80% of
@@ -125,6 +142,43 @@ void Viewer::frame(int width, int height, double seconds) {
   if (help_open) draw_help();
 }
 
+void Viewer::post_canvas_request() {
+  const scene::SceneOptions& o = session_->options();
+  worker_->request({session_->cursor_info().position, o.color_by, o.theme, o.layers, camera_.center(),
+                    camera_.pixels_per_unit(), camera_.width(), camera_.height()});
+}
+
+// A finished picture: its moment becomes the session's scene and words, its pixels the
+// canvas's texture.
+void Viewer::show_worker_picture() {
+  session_->adopt(picture_.moment);
+  stats_ = picture_.stats;
+  picture_texture_.upload(picture_.image);
+  ++canvas_renders_;
+  if (!has_picture_) {
+    has_picture_ = true;
+    // The first fit had no caption or legend to leave room for.
+    if (!camera_moved_) fit_pending_ = true;
+    start_background_jobs();
+  }
+}
+
+void Viewer::settle_canvas() {
+  if (!worker_) return;
+  if (camera_.width() <= 1) {  // no frame yet: there is no canvas to wait for
+    start_background_jobs();
+    return;
+  }
+  // The first picture may ask for a new fit (its caption and legend take room): once more.
+  for (int round = 0; round < 2; ++round) {
+    post_canvas_request();
+    worker_->wait_until_drawn();
+    if (worker_->take(picture_)) show_worker_picture();
+    if (!fit_pending_) return;
+    fit_camera(camera_.width(), camera_.height());
+  }
+}
+
 void Viewer::draw_canvas(float x, float y, float w, float h) {
   place(x, y, w, h);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
@@ -140,28 +194,56 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
   if (follow && session_->playback().playing) follow_step();
 
   const scene::Scene& s = session_->scene();
-  const Drawn now{session_->scene_builds(), s.visible.bits(), camera_.center().x, camera_.center().y,
-                  camera_.pixels_per_unit(), width, height};
-  if (!(now == drawn_)) {
-    renderer_.render(s, camera_);
-    drawn_ = now;
-    ++canvas_renders_;
+  if (worker_) {
+    if (const std::string why = worker_->error(); !why.empty()) {
+      // The worker could not start or draw: this thread draws from now on.
+      std::fprintf(stderr, "meshstep view: %s; drawing on the main thread\n", why.c_str());
+      worker_.reset();
+      session_->defer_pictures(false);
+      start_background_jobs();
+    }
   }
-  ImGui::Image(texture_id(renderer_.texture()), ImVec2(w, h));
+  if (worker_) {
+    post_canvas_request();
+    if (worker_->take(picture_)) show_worker_picture();
+    if (has_picture_) ImGui::Image(picture_texture_.id(), ImVec2(w, h));
+    else ImGui::InvisibleButton("##canvas", ImVec2(w, h));
+  } else {
+    const Drawn now{session_->scene_builds(), s.visible.bits(), camera_.center().x, camera_.center().y,
+                    camera_.pixels_per_unit(), width, height};
+    if (!(now == drawn_)) {
+      renderer_.render(s, camera_);
+      drawn_ = now;
+      ++canvas_renders_;
+    }
+    ImGui::Image(texture_id(renderer_.texture()), ImVec2(w, h));
+  }
+  const bool canvas_hovered = ImGui::IsItemHovered();
+  if (worker_ && worker_->drawing()) draw_drawing_badge(x, y);
 
   // Pan by dragging, zoom at the pointer with the wheel.
   const ImGuiIO& io = ImGui::GetIO();
   refresh_selection();
-  if (ImGui::IsItemHovered()) {
+  if (canvas_hovered) {
     const ImVec2 mouse = io.MousePos;
     const Point world = camera_.to_world({mouse.x - x, mouse.y - y});
-    if (io.MouseWheel != 0.0f)
+    if (io.MouseWheel != 0.0f) {
       camera_.zoom_at({mouse.x - x, mouse.y - y}, std::pow(1.2, static_cast<double>(io.MouseWheel)));
-    if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
+      camera_moved_ = true;
+    }
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
       camera_.pan(io.MouseDelta.x, io.MouseDelta.y);
+      camera_moved_ = true;
+    }
     // Hover: looked up again only when the pointer moves, and not in huge meshes (a scan).
-    if ((io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) && s.mesh.triangles.size() <= 200000)
-      hovered_ = pick(s.mesh, world, 8.0 / camera_.pixels_per_unit());
+    if ((io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) && s.mesh.triangles.size() <= 200000) {
+      if (hover_edges_build_ != session_->scene_builds()) {  // the segments, found once per scene
+        hover_edges_ = constrained_edges(s);
+        hover_edges_build_ = session_->scene_builds();
+      }
+      const double pixel = 1.0 / camera_.pixels_per_unit();
+      hovered_ = pick(s.mesh, hover_edges_, world, 8.0 * pixel, 5.0 * pixel);
+    }
     // A click (pressed and released without a drag) selects.
     if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f) select_at(world);
   } else {
@@ -170,6 +252,28 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
   draw_selection_overlay(x, y);
   ImGui::End();
   ImGui::PopStyleVar(2);
+}
+
+// While the worker draws: which step the canvas shows and which it is drawing, in the
+// canvas's corner (or its middle before the first picture).
+void Viewer::draw_drawing_badge(float x, float y) {
+  const replay::LogReader& log = *session_->log();
+  const std::uint64_t wanted = log.completed_steps_at(session_->cursor_info().position);
+  char text[96];
+  if (has_picture_) {
+    std::snprintf(text, sizeof text, "showing step %llu, drawing step %llu...",
+                  static_cast<unsigned long long>(log.completed_steps_at(session_->shown_position())),
+                  static_cast<unsigned long long>(wanted));
+  } else {
+    std::snprintf(text, sizeof text, "replaying the run to step %llu...", static_cast<unsigned long long>(wanted));
+  }
+  ImDrawList& draw = *ImGui::GetWindowDrawList();
+  const ImVec2 size = ImGui::CalcTextSize(text);
+  const ImVec2 at = has_picture_ ? ImVec2(x + 10.0f, y + 10.0f)
+                                 : ImVec2(x + 0.5f * (canvas_rect_.z - size.x), y + 0.5f * canvas_rect_.w);
+  draw.AddRectFilled(ImVec2(at.x - 6.0f, at.y - 4.0f), ImVec2(at.x + size.x + 6.0f, at.y + size.y + 4.0f),
+                     IM_COL32(30, 30, 30, 200), 4.0f);
+  draw.AddText(at, IM_COL32(255, 255, 255, 255), text);
 }
 
 void Viewer::draw_help() {
@@ -195,6 +299,10 @@ void Viewer::draw_help() {
 }
 
 scene::Image Viewer::canvas_picture() {
+  if (worker_) {
+    settle_canvas();
+    return picture_.image;
+  }
   renderer_.render(session_->scene(), camera_);
   drawn_ = Drawn{};
   return renderer_.read_pixels();

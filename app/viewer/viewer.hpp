@@ -8,17 +8,23 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include <imgui.h>
 
 #include "meshstep/scene/camera.hpp"
+#include "render/gl_objects.hpp"
 #include "render/renderer.hpp"
+#include "canvas_worker.hpp"
 #include "element_index.hpp"
+#include "element_story.hpp"
 #include "export_job.hpp"
 #include "inspector.hpp"
+#include "mesh_stats.hpp"
 #include "invariant_job.hpp"
+#include "picture_texture.hpp"
 #include "pseudocode.hpp"
 #include "run_plots.hpp"
 #include "session.hpp"
@@ -27,15 +33,18 @@
 
 namespace meshstep::viewer {
 
-struct Stats {
-  std::size_t vertices = 0, triangles = 0, steiner = 0;
-  double min_angle = 0.0, max_angle = 0.0;
-  std::array<float, 18> histogram{};  // smallest angles, 0-60 degrees in 18 bins
+// Who draws the canvas: this thread, or a worker of its own (canvas_worker.hpp), which the
+// viewer chooses for runs of more than kCanvasWorkerVertices vertices (automatic).
+enum class CanvasMode { automatic, this_thread, worker };
+inline constexpr std::size_t kCanvasWorkerVertices = 20000;
+struct CanvasOptions {
+  CanvasMode mode = CanvasMode::automatic;
+  std::string backend = "egl";  // the GL library of the UI's context: "egl" or "osmesa"
 };
 
 class Viewer {
  public:
-  explicit Viewer(std::unique_ptr<Session> session);
+  explicit Viewer(std::unique_ptr<Session> session, const CanvasOptions& canvas = {});
   ~Viewer();
 
   // One frame of UI for a window of width x height pixels; `seconds` since the last one.
@@ -58,16 +67,21 @@ class Viewer {
   bool help_open = false;
   bool follow = false;
   bool quit_requested = false;
+  MarkSet timeline_marks = MarkSet::defaults();  // the kinds the timeline marks
   void request_fit() { fit_pending_ = true; }
   void cycle_color_by(int direction);
   void toggle_layer(scene::Layer layer);
 
-  // Selects what is under a world point (a vertex within 8 pixels, else the triangle), as a
-  // click on the canvas does; nothing there clears the selection.
+  // Selects what is under a world point (a vertex within 8 pixels, else a segment within 5,
+  // else the triangle), as a click on the canvas does; nothing there clears the selection.
   void select_at(Point world);
   // "triangle 12 40 7: angles 31.2 58.8 90.0, area 0.5, Lepp path of 3 to edge 4-9",
-  // "vertex 33: Steiner, inserted by step 45 (refine)", or "" when nothing is selected.
+  // "vertex 33: Steiner, inserted by step 45 (refine)", "segment 14-9: ...", or "" when
+  // nothing is selected.
   std::string selection_text();
+  // What the element history's index says about the selection at the canvas's moment (its
+  // events are the timeline's ticks); empty until the index is ready.
+  const SelectionStory& selection_story();
 
   // Checks every step boundary of the log in the background ("check every step").
   InvariantJob& invariants() { return invariants_; }
@@ -75,14 +89,22 @@ class Viewer {
   const ElementIndex& history() const { return history_; }
   // The plots over the whole run (built in the background when the log opens).
   const RunPlots& plots() const { return plots_; }
-  // The steps (1-based, as the caption counts) whose events name the selected vertex.
-  std::vector<std::uint64_t> selected_vertex_steps() const;
+
+  // The timeline's columns and marks, as the last frame counted them.
+  const TimelineCache& timeline() const { return timeline_cache_; }
 
   // The canvas's rectangle in the window (pixels), as the last frame laid it out.
   ImVec4 canvas_rect() const { return canvas_rect_; }
   // Renders the canvas alone (no UI) into an image, as `meshstep render` would.
   scene::Image canvas_picture();
   std::size_t canvas_renders() const { return canvas_renders_; }
+  // True when a worker draws the canvas; the canvas may then show an earlier moment than
+  // the cursor's for a while (session().shown_position() says which).
+  bool canvas_on_worker() const { return worker_ != nullptr; }
+  bool canvas_drawing() const { return worker_ && worker_->drawing(); }
+  // Waits until the canvas shows the cursor with the current options and camera (scripts
+  // do, before they look). Returns at once when this thread draws the canvas.
+  void settle_canvas();
 
  private:
   void handle_keys();
@@ -100,6 +122,10 @@ class Viewer {
   void draw_help();
   void fit_camera(int width, int height);
   void follow_step();
+  void start_background_jobs();
+  void post_canvas_request();
+  void show_worker_picture();
+  void draw_drawing_badge(float x, float y);
 
   std::unique_ptr<Session> session_;
   render::Renderer renderer_;
@@ -128,12 +154,15 @@ class Viewer {
   // The inspector: what the pointer is over, and what was clicked (a triangle by its
   // vertices, found again in each new scene; a vertex by its id, which a log keeps).
   Picked hovered_, selected_;
+  std::vector<MeshEdge> hover_edges_;  // the scene's constrained edges, for hovering
+  std::size_t hover_edges_build_ = SIZE_MAX;
   std::array<std::uint32_t, 3> selected_vertices_{};
   LeppPath lepp_;
   std::size_t selection_build_ = SIZE_MAX;
   std::string selection_text_;  // made again only when the selection or the scene changes
-  std::vector<std::uint64_t> history_steps_;  // of the selected vertex
-  std::pair<Picked, std::size_t> history_steps_of_{{}, SIZE_MAX};
+  // The selection's story, of the selection at a position with the index ready or not.
+  SelectionStory story_;
+  std::tuple<Picked, std::uint64_t, bool> story_of_{{}, UINT64_MAX, false};
   std::pair<Picked, std::size_t> selection_text_of_{{}, SIZE_MAX};  // the selection and scene it says
   InvariantJob invariants_;
   ElementIndex history_;
@@ -146,6 +175,12 @@ class Viewer {
   std::string invariants_text_;  // the finished job's line, made once
   std::uint64_t code_position_ = UINT64_MAX;
   TimelineCache timeline_cache_;
+  // The canvas's worker (big runs), its last picture and the texture that shows it.
+  std::unique_ptr<CanvasWorker> worker_;
+  CanvasPicture picture_;
+  PictureTexture picture_texture_;
+  bool has_picture_ = false, background_started_ = false;
+  bool camera_moved_ = false;  // by the person, since the last fit
 };
 
 }  // namespace meshstep::viewer

@@ -1,12 +1,20 @@
 // bench_viewer: how the viewer responds, measured in its scripted mode (meshstep-view
 // --offscreen --script, with --frame-log: each frame's time and allocations). For each size
 // N, the log of a recorded triangulation of N uniform random points:
-//   open    from the program's start to the end of its first frame (the log opened, its
-//           timeline and the mesh at the end of the run shown), 1280x800;
+//   open    from the program's start to the end of its first frame (the log opened and
+//           its timeline shown), 1280x800;
+//   picture from the start to the first frame that shows the mesh at the end of the run
+//           (the same frame as `open` when the canvas is drawn on the main thread; with
+//           the canvas's worker thread, for runs of more than 20,000 vertices, later);
 //   scrub   61 seeks spread over the whole run, one frame each, as a drag along the
-//           timeline does: the frames' median and worst time, and the frames per second
-//           the median gives;
-//   idle    30 frames with nothing changing: their median time and their allocations.
+//           timeline does: the frames' median and worst time, the frames per second the
+//           median gives, and how many new pictures of the mesh the canvas showed per
+//           second meanwhile (every frame's, when the main thread draws);
+//   idle    30 frames with nothing changing: their median time and their allocations;
+//   live    the viewer opened on the N points themselves: it runs the triangulation live
+//           (the meshstep program beside it, recording) and draws frames until it ends
+//           (`watch`): the run's time, the frames drawn meanwhile, their median, 99th
+//           percentile and worst time.
 // Repeated R times (alternating sizes); medians over the repetitions.
 //
 //   bench_viewer --view PATH --meshstep PATH --make-points PATH [--sizes 1e5,1e6] [--repeat R]
@@ -35,6 +43,7 @@ constexpr const char* kUsage =
 struct Frame {
   double end_ms = 0, ms = 0;
   unsigned long long allocations = 0, position = 0;
+  long long shown = -1;  // the position the canvas shows
 };
 
 int run(const std::string& command) {
@@ -50,7 +59,7 @@ std::vector<Frame> read_frames(const fs::path& path) {
     std::istringstream f(line);
     unsigned long long index = 0;
     Frame fr;
-    f >> index >> fr.end_ms >> fr.ms >> fr.allocations >> fr.position;
+    f >> index >> fr.end_ms >> fr.ms >> fr.allocations >> fr.position >> fr.shown;
     frames.push_back(fr);
   }
   return frames;
@@ -62,8 +71,13 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+struct Live {
+  double seconds = 0, median_ms = 0, p99_ms = 0, max_ms = 0;
+  std::size_t frames = 0;
+};
+
 struct Run {
-  double open_ms = 0, scrub_median_ms = 0, scrub_max_ms = 0, idle_ms = 0;
+  double open_ms = 0, picture_ms = 0, scrub_median_ms = 0, scrub_max_ms = 0, pictures_per_s = 0, idle_ms = 0;
   unsigned long long idle_allocations = 0;
 };
 
@@ -99,7 +113,7 @@ int main(int argc, char** argv) {
   const fs::path dir = fs::temp_directory_path() / "bench_viewer";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  std::vector<std::string> logs;
+  std::vector<std::string> logs, nodes;
   std::vector<unsigned long long> events;
   for (const std::size_t n : sizes) {
     const std::string node = (dir / ("p" + std::to_string(n) + ".node")).string();
@@ -109,7 +123,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "bench_viewer: recording %zu points failed\n", n);
       return 1;
     }
-    fs::remove(node);
+    nodes.push_back(node);
     logs.push_back(log);
   }
 
@@ -121,10 +135,11 @@ int main(int argc, char** argv) {
     for (std::size_t s = 0; s < sizes.size(); ++s) {
       {
         std::ofstream out(script);
-        out << "frames 1\n";
+        // `settle` holds the script until the canvas shows the cursor (no frame passes).
+        out << "frames 1\nsettle\nframes 1\n";
         const unsigned long long approx_events = 7ULL * sizes[s];
         for (int k = 0; k <= 60; ++k) out << "seek event " << approx_events * static_cast<unsigned long long>(k) / 60 << "\nframes 1\n";
-        out << "frames 30\nquit\n";
+        out << "wait\nframes 30\nquit\n";  // the canvas and the background work done
       }
       const fs::path frames_file = dir / "frames.txt";
       if (run(view + " " + logs[s] + " --offscreen --size 1280x800 -q --script " + script.string() + " --frame-log " +
@@ -133,17 +148,24 @@ int main(int argc, char** argv) {
         return 1;
       }
       const std::vector<Frame> f = read_frames(frames_file);
-      if (f.size() < 92) {
-        std::fprintf(stderr, "bench_viewer: %zu frames logged, expected 92\n", f.size());
+      if (f.size() < 93) {
+        std::fprintf(stderr, "bench_viewer: %zu frames logged, expected 93\n", f.size());
         return 1;
       }
       Run result;
       result.open_ms = f[0].end_ms;
+      const auto shows_cursor = [](const Frame& fr) { return fr.shown == static_cast<long long>(fr.position); };
+      result.picture_ms = shows_cursor(f[0]) ? f[0].end_ms : f[1].end_ms;
       std::vector<double> scrub, idle;
-      for (std::size_t i = 1; i <= 61; ++i) scrub.push_back(f[i].ms);
-      for (std::size_t i = 62; i < f.size(); ++i) {
+      std::size_t pictures = 0;
+      for (std::size_t i = 2; i <= 62; ++i) {
+        scrub.push_back(f[i].ms);
+        pictures += f[i].shown != f[i - 1].shown;
+      }
+      result.pictures_per_s = 1000.0 * static_cast<double>(pictures) / std::max(1e-3, f[62].end_ms - f[1].end_ms);
+      for (std::size_t i = 63; i < f.size(); ++i) {
         idle.push_back(f[i].ms);
-        if (i > 63) result.idle_allocations += f[i].allocations;  // after 2 warm-up frames
+        if (i > 64) result.idle_allocations += f[i].allocations;  // after 2 warm-up frames
       }
       result.scrub_median_ms = median(scrub);
       result.scrub_max_ms = *std::max_element(scrub.begin(), scrub.end());
@@ -152,20 +174,63 @@ int main(int argc, char** argv) {
     }
   }
 
-  std::printf("| log of N points | open, first frame (ms) | scrub frame median / worst (ms) | scrub frames/s | idle frame (ms) | idle allocations |\n");
-  std::printf("|--:|--:|--:|--:|--:|--:|\n");
+  // Live runs: the viewer on the points, drawing while the run goes.
+  std::vector<std::vector<Live>> lives(sizes.size());
+  for (int r = 0; r < repeat; ++r) {
+    for (std::size_t s = 0; s < sizes.size(); ++s) {
+      std::ofstream(script) << "watch\nquit\n";
+      const fs::path frames_file = dir / "live_frames.txt";
+      if (run(view + " " + nodes[s] + " --offscreen --size 1280x800 -q --script " + script.string() + " --frame-log " +
+              frames_file.string()) != 0) {
+        std::fprintf(stderr, "bench_viewer: the live run of %s failed\n", nodes[s].c_str());
+        return 1;
+      }
+      const std::vector<Frame> f = read_frames(frames_file);
+      if (f.size() < 2) continue;
+      std::vector<double> ms;
+      for (std::size_t i = 1; i < f.size(); ++i) ms.push_back(f[i].ms);  // the first frame starts the run
+      std::sort(ms.begin(), ms.end());
+      Live l;
+      l.seconds = f.back().end_ms / 1000.0;
+      l.frames = f.size();
+      l.median_ms = ms[ms.size() / 2];
+      l.p99_ms = ms[std::min(ms.size() - 1, ms.size() * 99 / 100)];
+      l.max_ms = ms.back();
+      lives[s].push_back(l);
+    }
+  }
+
+  std::printf("| log of N points | open: timeline shown (ms) | mesh shown (ms) | scrub frame median / worst (ms) | scrub frames/s | new pictures/s while scrubbing | idle frame (ms) | idle allocations |\n");
+  std::printf("|--:|--:|--:|--:|--:|--:|--:|--:|\n");
   for (std::size_t s = 0; s < sizes.size(); ++s) {
-    std::vector<double> open, med, worst, idle;
+    std::vector<double> open, picture, med, worst, pictures, idle;
     unsigned long long allocations = 0;
     for (const Run& r : runs[s]) {
       open.push_back(r.open_ms);
+      picture.push_back(r.picture_ms);
+      pictures.push_back(r.pictures_per_s);
       med.push_back(r.scrub_median_ms);
       worst.push_back(r.scrub_max_ms);
       idle.push_back(r.idle_ms);
       allocations += r.idle_allocations;
     }
-    std::printf("| %zu | %.0f | %.1f / %.0f | %.1f | %.1f | %llu |\n", sizes[s], median(open), median(med), median(worst),
-                1000.0 / std::max(1e-3, median(med)), median(idle), allocations);
+    std::printf("| %zu | %.0f | %.0f | %.1f / %.0f | %.1f | %.1f | %.1f | %llu |\n", sizes[s], median(open), median(picture),
+                median(med), median(worst), 1000.0 / std::max(1e-3, median(med)), median(pictures), median(idle),
+                allocations);
+  }
+  std::printf("\n| N points, run live | run (s) | frames drawn meanwhile | frame median / p99 / worst (ms) |\n");
+  std::printf("|--:|--:|--:|--:|\n");
+  for (std::size_t s = 0; s < sizes.size(); ++s) {
+    std::vector<double> seconds, med, p99, worst, frames;
+    for (const Live& l : lives[s]) {
+      seconds.push_back(l.seconds);
+      med.push_back(l.median_ms);
+      p99.push_back(l.p99_ms);
+      worst.push_back(l.max_ms);
+      frames.push_back(static_cast<double>(l.frames));
+    }
+    std::printf("| %zu | %.2f | %.0f | %.1f / %.1f / %.0f |\n", sizes[s], median(seconds), median(frames), median(med),
+                median(p99), median(worst));
   }
   fs::remove_all(dir);
   return 0;

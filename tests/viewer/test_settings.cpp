@@ -102,6 +102,7 @@ Settings unusual() {
   s.speed = 0.1 + 0.2 + 12.0;  // not a short decimal: written exactly all the same
   s.unit = Unit::phase;
   s.follow = true;
+  s.timeline_marks = MarkSet::none().set(Mark::rejected).set(Mark::flips).set(Mark::triangulate);
   s.recent_files = {"/home/me/runs/square with spaces.msl",
                     " leading and trailing blanks\t",
                     "/a\nnewline, a \"quote\", a back\\slash, a tab\t and \x01 a control",
@@ -134,6 +135,7 @@ TEST_F(ViewerSettings, EveryFieldRoundTrips) {
   EXPECT_NE(s.speed, d.speed);
   EXPECT_NE(s.unit, d.unit);
   EXPECT_NE(s.follow, d.follow);
+  EXPECT_NE(s.timeline_marks, d.timeline_marks);
   EXPECT_NE(s.recent_files, d.recent_files);
 
   const std::string p = path("viewer.ini");
@@ -155,6 +157,7 @@ TEST_F(ViewerSettings, EveryFieldRoundTrips) {
   EXPECT_EQ(back.speed, s.speed);  // exactly
   EXPECT_EQ(back.unit, s.unit);
   EXPECT_EQ(back.follow, s.follow);
+  EXPECT_EQ(back.timeline_marks, s.timeline_marks);
   EXPECT_EQ(back.recent_files, s.recent_files);
   EXPECT_TRUE(back == s);
 
@@ -165,9 +168,10 @@ TEST_F(ViewerSettings, EveryFieldRoundTrips) {
   EXPECT_NE(text.find("\ntheme = dark\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nunit = phase\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nlayers = fill, edges, overlay, segments, vertices, holes, caption\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\ntimeline_marks = rejected, flips, triangulate\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nrecent = /home/me/runs/square with spaces.msl\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nrecent = /ünïcödé/ðata.msl\n"), std::string::npos) << text;
-  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 15 + 6) << text;  // one line each
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 16 + 6) << text;  // one line each
 
   // Saving what was loaded gives the same file.
   save_settings(back, p);
@@ -285,6 +289,7 @@ TEST_F(ViewerSettings, EveryKindOfBadValueFallsBackToTheDefault) {
       "follow = TRUE",                "color_by = colour",
       "theme = purple",               "unit = seconds",
       "layers = fill,,edges",         "layers = Fill",
+      "timeline_marks = flips, sparks", "timeline_marks = splits,,flips",
       "recent = \"unterminated",      "recent = \"bad \\q escape\"",
       "recent = \"x\" trailing",      "recent = \"\"",
       "= 12",                         "[viewer]",
@@ -305,6 +310,7 @@ TEST_F(ViewerSettings, EveryKindOfBadValueFallsBackToTheDefault) {
                               "speed = 1000\n"
                               "unit = events\n"
                               "layers =  \n"
+                              "timeline_marks =\n"
                               "recent =   /spaced out/path.msl   \n");
   std::vector<std::string> warnings;
   const Settings s = load_settings(p, warnings);
@@ -315,6 +321,7 @@ TEST_F(ViewerSettings, EveryKindOfBadValueFallsBackToTheDefault) {
   EXPECT_EQ(s.speed, 1000.0);
   EXPECT_EQ(s.unit, Unit::event);
   EXPECT_EQ(s.layers, LayerSet::none());
+  EXPECT_EQ(s.timeline_marks, MarkSet::none());  // no marks at all is a choice too
   EXPECT_EQ(s.recent_files, std::vector<std::string>{"/spaced out/path.msl"});
 }
 

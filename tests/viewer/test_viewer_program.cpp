@@ -213,6 +213,58 @@ TEST_P(ViewerProgram, WindowScreenshotMatchesItsGolden) {
   EXPECT_GT(scene::compare_images(actual, scene::read_png(other.string()), 5).differing_pixels, allowed);
 }
 
+// With the canvas drawn by a worker thread (as for runs of more than 20,000 vertices), a
+// script sees the same moment, words and window as with the canvas drawn on the main
+// thread; and once the worker's picture is in, idle frames allocate nothing.
+TEST_P(ViewerProgram, WorkerCanvasShowsTheSameMomentAndWindow) {
+  const fs::path frames = dir_ / "frames.txt";
+  const auto script = [&](const std::string& name) {
+    return "seek step 45\nframes 3\nstate " + (dir_ / (name + "45.json")).string() + "\nscreenshot " +
+           (dir_ / (name + ".png")).string() + "\nseek step 20\nstate " + (dir_ / (name + "20.json")).string() +
+           "\nframes 20\nquit\n";
+  };
+  VIEW_OR_SKIP(r, script("worker"), "--canvas worker --frame-log " + frames.string());
+  VIEW_OR_SKIP(m, script("main"), "--canvas main");
+  const std::string at45 = read_text(dir_ / "worker45.json"), at20 = read_text(dir_ / "worker20.json");
+  EXPECT_TRUE(has(at45, "\"canvas\": \"worker\"")) << at45;
+  EXPECT_TRUE(has(read_text(dir_ / "main45.json"), "\"canvas\": \"main\""));
+  EXPECT_EQ(field(at45, "position"), static_cast<long long>(log_->step_start(45)));
+  EXPECT_EQ(field(at45, "shown_position"), static_cast<long long>(log_->step_start(45)));
+  EXPECT_EQ(field(at20, "shown_position"), static_cast<long long>(log_->step_start(20)));
+  // The words, the caption and the statistics are those of the main thread's run.
+  const auto from = [](const std::string& json, const std::string& key) {
+    const auto at = json.find("\"" + key + "\"");
+    return at == std::string::npos ? std::string() : json.substr(at, json.find('\n', at) - at);
+  };
+  for (const char* key : {"caption", "explain_heading", "code_line", "stats", "camera"}) {
+    EXPECT_EQ(from(at45, key), from(read_text(dir_ / "main45.json"), key)) << key;
+    EXPECT_EQ(from(at20, key), from(read_text(dir_ / "main20.json"), key)) << key;
+  }
+  EXPECT_TRUE(has(at20, "\"caption\": \"recover segments \u00B7 step 20 of ")) << at20;
+
+  // The same window, pixel for pixel within the golden tolerance.
+  const scene::Image worker = scene::read_png((dir_ / "worker.png").string());
+  const scene::Image main = scene::read_png((dir_ / "main.png").string());
+  const scene::ImageDiff diff = scene::compare_images(main, worker, 5);
+  EXPECT_TRUE(diff.same_size);
+  EXPECT_LE(diff.differing_pixels, static_cast<std::size_t>(worker.width) * worker.height / 1000);
+
+  // The last 15 frames come after the picture of step 20 was taken in: idle.
+  std::ifstream in(frames);
+  std::vector<unsigned long long> allocations;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream f(line);
+    unsigned long long index = 0, count = 0;
+    double end_ms = 0, frame_ms = 0;
+    f >> index >> end_ms >> frame_ms >> count;
+    allocations.push_back(count);
+  }
+  ASSERT_GE(allocations.size(), 24u);
+  for (std::size_t i = allocations.size() - 15; i < allocations.size(); ++i)
+    EXPECT_EQ(allocations[i], 0u) << "idle frame " << i;
+}
+
 INSTANTIATE_TEST_SUITE_P(Modes, ViewerProgram, ::testing::Values("egl", "osmesa", "window"),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 

@@ -1,0 +1,140 @@
+#include "canvas_worker.hpp"
+
+#include <memory>
+#include <utility>
+
+#include "render/gl_context.hpp"
+#include "render/renderer.hpp"
+#include "meshstep/scene/layout.hpp"
+
+namespace meshstep::viewer {
+
+CanvasWorker::CanvasWorker(std::string log_path, std::string backend, Follow follow)
+    : log_path_(std::move(log_path)), backend_(std::move(backend)), follow_(follow), thread_([this] { run(); }) {}
+
+CanvasWorker::~CanvasWorker() {
+  {
+    const std::lock_guard lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+}
+
+void CanvasWorker::request(const CanvasRequest& wanted) {
+  {
+    const std::lock_guard lock(mutex_);
+    if (has_request_ && wanted == wanted_) return;
+    wanted_ = wanted;
+    has_request_ = true;
+    ++asked_;
+  }
+  wake_.notify_one();
+}
+
+bool CanvasWorker::take(CanvasPicture& picture) {
+  const std::lock_guard lock(mutex_);
+  if (!ready_fresh_) return false;
+  std::swap(picture, ready_);
+  ready_fresh_ = false;
+  return true;
+}
+
+bool CanvasWorker::drawing() const {
+  const std::lock_guard lock(mutex_);
+  return error_.empty() && (finished_ != asked_ || ready_fresh_);
+}
+
+void CanvasWorker::wait_until_drawn() {
+  std::unique_lock lock(mutex_);
+  drawn_.wait(lock, [&] { return finished_ == asked_ || !error_.empty(); });
+}
+
+std::string CanvasWorker::error() const {
+  const std::lock_guard lock(mutex_);
+  return error_;
+}
+
+void CanvasWorker::draw(const CanvasRequest& wanted, Session& session, render::Renderer& renderer, CanvasPicture& out) {
+  session.seek(wanted.position);
+  session.set_color_by(wanted.color_by);
+  session.set_theme(wanted.theme);
+  // Copied into the buffers the picture had before (their capacity is reused).
+  session.build_moment(out.moment);
+  if (out.moment.serial != stats_serial_) {  // measured once per moment, not per pan
+    stats_ = measure(out.moment.scene.mesh, session.log());
+    stats_serial_ = out.moment.serial;
+  }
+  out.stats = stats_;
+  out.moment.scene.visible = wanted.layers;
+  out.request = wanted;
+  const scene::Camera camera =
+      wanted.fit ? scene::Camera::fit(out.moment.scene.bounds, wanted.width, wanted.height,
+                                      scene::layout(out.moment.scene, wanted.width, wanted.height).margins)
+                 : wanted.camera();
+  renderer.render(out.moment.scene, camera);
+  renderer.read_pixels(out.image);
+}
+
+void CanvasWorker::run() {
+  std::unique_ptr<render::GlContext> context;
+  std::unique_ptr<render::Renderer> renderer;
+  std::unique_ptr<Session> session;
+  const auto fail = [&](const char* what, const std::exception& e) {
+    {
+      const std::lock_guard lock(mutex_);
+      error_ = std::string(what).append(e.what());
+    }
+    drawn_.notify_all();
+  };
+  try {
+    context = backend_ == "osmesa" ? render::make_osmesa_context() : render::make_egl_worker_context();
+    context->make_current_with_loaded_functions();
+    renderer = std::make_unique<render::Renderer>();
+    if (follow_ == Follow::fixed_log) session = Session::open_log(log_path_);
+  } catch (const std::exception& e) {
+    fail("the canvas's worker could not start: ", e);
+    return;
+  }
+
+  CanvasPicture out;
+  for (;;) {
+    CanvasRequest wanted;
+    std::uint64_t number = 0;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stop_ || (has_request_ && finished_ != asked_); });
+      if (stop_) break;
+      wanted = wanted_;
+      number = asked_;
+    }
+    bool drawn = true;
+    try {
+      if (follow_ == Follow::growing_log) {
+        // What the run has written so far; not yet readable (no header, no whole block)
+        // or gone (renamed when the run ended): no picture this time.
+        try {
+          session = Session::open_log(log_path_);
+        } catch (const std::exception&) {
+          drawn = false;
+        }
+      }
+      if (drawn) draw(wanted, *session, *renderer, out);
+    } catch (const std::exception& e) {
+      fail("the canvas could not be drawn: ", e);
+      break;
+    }
+    {
+      const std::lock_guard lock(mutex_);
+      if (drawn) {
+        std::swap(out, ready_);
+        ready_fresh_ = true;
+      }
+      finished_ = number;
+    }
+    drawn_.notify_all();
+  }
+  renderer.reset();  // while its context is current
+}
+
+}  // namespace meshstep::viewer

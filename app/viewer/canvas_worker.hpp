@@ -1,0 +1,97 @@
+// The canvas of a big run, drawn on a thread of its own, so that the window never waits for
+// a seek, a scene or a picture of a million triangles.
+//
+// The UI asks for a picture (a position of the run, the drawing options, the camera) every
+// frame; the worker draws the latest one asked for, skipping those that were overtaken, with
+// its own reader of the log, its own replay cursor and its own off-screen GL context, and
+// hands back the picture with the exact scene and words of that position. Meanwhile the
+// canvas keeps showing the last picture finished: an exact mesh of the run, labelled with
+// its own step, never an approximation of the one asked for.
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "meshstep/scene/camera.hpp"
+#include "meshstep/scene/image.hpp"
+#include "mesh_stats.hpp"
+#include "session.hpp"
+
+namespace meshstep::render {
+class Renderer;
+}
+
+namespace meshstep::viewer {
+
+struct CanvasRequest {
+  std::uint64_t position = 0;
+  scene::ColorBy color_by = scene::ColorBy::none;
+  scene::Theme theme = scene::Theme::light;
+  scene::LayerSet layers = scene::LayerSet::all();
+  Point center{0, 0};
+  double pixels_per_unit = 1.0;
+  int width = 0, height = 0;
+  bool fit = false;              // the camera fitted to the picture's scene instead
+  std::uint32_t generation = 0;  // a new one asks again for the same (a log that grew)
+  friend bool operator==(const CanvasRequest&, const CanvasRequest&) = default;
+
+  scene::Camera camera() const { return scene::Camera(center, pixels_per_unit, width, height); }
+};
+
+struct CanvasPicture {
+  CanvasRequest request;
+  Session::Moment moment;  // the scene and words of request.position
+  Stats stats;             // of the moment's mesh
+  scene::Image image;      // rows top to bottom, request.width x request.height
+};
+
+class CanvasWorker {
+ public:
+  // fixed_log: the log is opened once. growing_log: a log still being written (a live
+  // run's LOG.partial), opened again for every picture as the prefix written so far; while
+  // it cannot be read yet, no picture is made (and no error reported).
+  enum class Follow { fixed_log, growing_log };
+
+  // Starts the thread; it opens LOG_PATH and an off-screen context of `backend` ("egl" or
+  // "osmesa": the GL library the UI's context uses, whose functions are loaded already).
+  CanvasWorker(std::string log_path, std::string backend, Follow follow = Follow::fixed_log);
+  ~CanvasWorker();
+  CanvasWorker(const CanvasWorker&) = delete;
+  CanvasWorker& operator=(const CanvasWorker&) = delete;
+
+  // The picture wanted now (the last call wins). Allocates nothing.
+  void request(const CanvasRequest& wanted);
+  // The newest picture finished since the last take, swapped into `picture` (whose old
+  // buffers go back to the worker, to be reused). False when there is none.
+  bool take(CanvasPicture& picture);
+  // True while the last request is not yet drawn and taken.
+  bool drawing() const;
+  // Waits until the last request is drawn (scripts, before they look).
+  void wait_until_drawn();
+  // Why the worker stopped ("" while it works): the log or the context failed.
+  std::string error() const;
+
+ private:
+  void run();
+  void draw(const CanvasRequest& wanted, Session& session, render::Renderer& renderer, CanvasPicture& out);
+
+  const std::string log_path_, backend_;
+  const Follow follow_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_, drawn_;
+  CanvasRequest wanted_;
+  bool has_request_ = false;
+  std::uint64_t asked_ = 0, finished_ = 0;  // requests counted as asked and as drawn
+  CanvasPicture ready_;       // the newest finished picture
+  bool ready_fresh_ = false;  // not taken yet
+  bool stop_ = false;
+  std::string error_;
+  Stats stats_;  // the worker's own: of the moment it drew last
+  std::size_t stats_serial_ = SIZE_MAX;
+  std::thread thread_;  // last: starts once everything above exists
+};
+
+}  // namespace meshstep::viewer

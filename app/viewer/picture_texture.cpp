@@ -1,0 +1,22 @@
+#include "picture_texture.hpp"
+
+namespace meshstep::viewer {
+
+void PictureTexture::upload(const scene::Image& image) {
+  current_ = current_ == 0 ? 1 : 0;
+  const auto at = static_cast<std::size_t>(current_);
+  textures_[at].bind();
+  std::array<int, 2>& size = sizes_[at];
+  if (size[0] != image.width || size[1] != image.height) {
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    size = {image.width, image.height};
+  } else {
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  }
+}
+
+}  // namespace meshstep::viewer

@@ -1,0 +1,135 @@
+// The inspector's words for the selection: a triangle's measures and its life, a vertex's
+// origin, a segment's input segment, pieces and splits (the panel shows them, scripts'
+// `state` reads them).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string_view>
+
+#include "viewer.hpp"
+
+namespace meshstep::viewer {
+
+namespace {
+
+std::string step_name(const replay::LogReader& log, std::uint64_t step) {
+  std::string kind = replay::name(log.step_kind(step));
+  std::replace(kind.begin(), kind.end(), '_', ' ');
+  return std::string("step ").append(std::to_string(step + 1)).append(" (").append(kind).append(")");
+}
+
+// "step 45 (refine), a flip": the step of event e and what the event was.
+std::string event_name(const replay::LogReader& log, std::uint64_t e) {
+  const std::uint64_t step = log.step_of_event(e);
+  std::string what = replay::name(log.event(e).type);
+  std::replace(what.begin(), what.end(), '_', ' ');
+  if (step >= log.step_count()) return "event " + std::to_string(e + 1) + " (" + what + ")";
+  return step_name(log, step).append(" by ").append(what);
+}
+
+std::string input_vertex_name(const replay::LogReader& log, VertexId v) {
+  const std::uint64_t inputs = std::strtoull(log.parameter("input_vertices", "0").c_str(), nullptr, 10);
+  if (v >= log.vertices().size() || log.vertices()[v].input_index >= inputs) return "vertex " + std::to_string(v);
+  return "input vertex " + std::to_string(log.vertices()[v].input_index + 1);
+}
+
+std::string length_text(const scene::MeshLayer& mesh, VertexId a, VertexId b) {
+  if (a >= mesh.points.size() || b >= mesh.points.size()) return "?";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", std::hypot(mesh.points[a].x - mesh.points[b].x, mesh.points[a].y - mesh.points[b].y));
+  return buf;
+}
+
+// Where a split put its vertex, in words.
+const char* split_words(const SegmentStory::Split& split) {
+  const std::string_view place = split_place(split);
+  if (place == "midpoint") return "at the midpoint";
+  if (place == "shell") return "on a concentric shell";
+  if (place == "crossing") return "where another segment crosses";
+  if (place == "insert") return "a vertex inserted on it";
+  return "bisected";
+}
+
+}  // namespace
+
+std::string Viewer::selection_text() {
+  const scene::Scene& s = session_->scene();
+  const replay::LogReader* log = session_->log();
+  const SelectionStory& story = selection_story();
+  const bool indexed = log && history_.ready();
+  char buf[256];
+  if (selected_.kind == Picked::Kind::triangle) {
+    const TriangleFacts f = triangle_facts(s.mesh, selected_.index);
+    std::snprintf(buf, sizeof buf, "triangle %u %u %u: angles %.1f %.1f %.1f, area %.4g", f.vertices[0], f.vertices[1],
+                  f.vertices[2], f.angles[0], f.angles[1], f.angles[2], f.area);
+    std::string out = buf;
+    if (angle_bound_ > 0) {
+      std::snprintf(buf, sizeof buf, ", smallest angle %.1f %s %.4g (the bound)", f.min_angle,
+                    f.min_angle < angle_bound_ ? "<" : ">=", angle_bound_);
+      out += buf;
+    }
+    std::snprintf(buf, sizeof buf, "; Lepp path of %zu to edge %u-%u%s", lepp_.triangles.size(), lepp_.a, lepp_.b,
+                  lepp_.boundary ? " (on the boundary)" : "");
+    out += buf;
+    const TriangleStory& t = story.triangle;
+    if (indexed && t.created != kNoEvent) {
+      out.append("; made by ").append(event_name(*log, t.created));
+      if (const std::size_t n = t.reflagged.size(); n > 0)
+        out.append(", its edges' constraints changed ").append(n == 1 ? "once" : std::to_string(n) + " times");
+      out.append(t.removed != kNoEvent ? "; replaced by " + event_name(*log, t.removed) : "; it lasts to the end of the run");
+    }
+    return out;
+  }
+  if (selected_.kind == Picked::Kind::vertex) {
+    const std::uint32_t v = selected_.index;
+    const Point& p = s.mesh.points[v];
+    std::snprintf(buf, sizeof buf, "vertex %u at (%.6g, %.6g)", v, p.x, p.y);
+    std::string out = buf;
+    if (!log || v >= log->vertices().size()) return out + (log ? "" : ", of the mesh");
+    const replay::VertexInfo& info = log->vertices()[v];
+    const std::uint64_t inputs = std::strtoull(log->parameter("input_vertices", "0").c_str(), nullptr, 10);
+    const std::uint64_t step = log->step_of_event(info.event);
+    out += info.input_index < inputs ? ": input vertex " + std::to_string(info.input_index + 1) : ": Steiner";
+    if (step < log->step_count()) out.append(", inserted by ").append(step_name(*log, step));
+    return out;
+  }
+  if (selected_.kind == Picked::Kind::segment) {
+    const VertexId a = selected_.index, b = selected_.other;
+    std::string out = "segment " + std::to_string(a) + "-" + std::to_string(b) + " (length " +
+                      length_text(s.mesh, a, b) + ")";
+    if (!log) return out;
+    if (!indexed) return out + "; indexing the run's history...";
+    const SegmentStory& g = story.segment;
+    if (g.segment == kNone) return out + ": a constrained edge the log does not trace to an input segment";
+    const bool now = std::any_of(g.pieces.begin(), g.pieces.end(), [&](const auto& p) {
+      return (p.first == a && p.second == b) || (p.first == b && p.second == a);
+    });
+    out.append(now ? ": a piece of input segment " : ", not a piece at this moment, of input segment ");
+    out.append(std::to_string(g.a)).append("-").append(std::to_string(g.b));
+    out.append(" (").append(input_vertex_name(*log, g.a)).append(" to ").append(input_vertex_name(*log, g.b)).append(")");
+    out.append("; ").append(std::to_string(g.pieces.size())).append(g.pieces.size() == 1 ? " piece" : " pieces");
+    out.append(" at this moment, lengths");
+    constexpr std::size_t kLengths = 8;
+    for (std::size_t i = 0; i < std::min(g.pieces.size(), kLengths); ++i)
+      out.append(i ? ", " : " ").append(length_text(s.mesh, g.pieces[i].first, g.pieces[i].second));
+    if (g.pieces.size() > kLengths) out.append(", ...");
+    if (g.splits.empty()) return out + "; never split";
+    // The splits of the whole run, and how many of them the moment shown has seen.
+    const std::uint64_t position = session_->shown_position();
+    const auto done = std::count_if(g.splits.begin(), g.splits.end(), [&](const auto& x) { return x.event < position; });
+    out.append("; split ").append(std::to_string(g.splits.size())).append(g.splits.size() == 1 ? " time" : " times");
+    out.append(" in the run (").append(std::to_string(done)).append(" by this moment)");
+    constexpr std::size_t kSplits = 6;
+    for (std::size_t i = 0; i < std::min(g.splits.size(), kSplits); ++i) {
+      const SegmentStory::Split& x = g.splits[i];
+      const std::uint64_t step = log->step_of_event(x.event);
+      out.append(i ? "; " : ": ").append("step ").append(std::to_string(step + 1)).append(" at vertex ");
+      out.append(std::to_string(x.vertex)).append(", ").append(split_words(x));
+    }
+    return out + (g.splits.size() > kSplits ? "; ..." : "");
+  }
+  return "";
+}
+
+}  // namespace meshstep::viewer

@@ -1,0 +1,175 @@
+// A live run: an input opened in the viewer runs in the meshstep program while the window
+// keeps drawing (the live page, with the mesh written so far), and its whole log opens when
+// it ends. The preview worker reads a log still being written as its prefix; an input that
+// cannot run is an error with the program's own FILE:LINE message.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "canvas_worker.hpp"
+#include "meshstep/replay/log_reader.hpp"
+#include "render/gl_context.hpp"
+
+namespace meshstep::viewer {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = -1;
+  std::string output;
+};
+
+Result run(const std::string& command) {
+  Result r;
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return r;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) r.output.append(buf, n);
+  const int status = ::pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+long long field(const std::string& json, const std::string& key) {
+  const std::string tag = "\"" + key + "\": ";
+  const auto at = json.find(tag);
+  return at == std::string::npos ? -1 : std::atoll(json.c_str() + at + tag.size());
+}
+
+class LiveRunProgram : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("viewer_live_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  // N points, uniform in the unit square: a run long enough (a few tenths of a second) to
+  // be watched while it goes.
+  fs::path points(int n) {
+    const fs::path node = dir_ / "points.node";
+    std::ofstream out(node);
+    out << n << " 2 0 0\n";
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    out.precision(17);
+    for (int i = 0; i < n; ++i) out << i << ' ' << unit(random) << ' ' << unit(random) << '\n';
+    return node;
+  }
+  Result view(const std::string& input, const std::string& script) {
+    const fs::path file = dir_ / "script.txt";
+    std::ofstream(file) << script;
+    Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + input + " --offscreen --gl egl --size 800x600 -q --script " +
+                   file.string());
+    if (r.status != 0 && has(r.output, "cannot open a window or draw")) r.status = 77;
+    return r;
+  }
+  fs::path dir_;
+};
+
+TEST_F(LiveRunProgram, ShowsTheRunAsItGoesThenOpensItsWholeLog) {
+  const fs::path node = points(200000);
+  const fs::path during = dir_ / "during.json", after = dir_ / "after.json";
+  const Result r = view(node.string(), "frames 3\npeek " + during.string() + "\nstate " + after.string() + "\nquit\n");
+  if (r.status == 77) GTEST_SKIP() << r.output;
+  ASSERT_EQ(r.status, 0) << r.output;
+  // Three frames after the start the run is still going: the window drew them.
+  const std::string live = read_text(during);
+  EXPECT_TRUE(has(live, "\"page\": \"live\"")) << live;
+  EXPECT_TRUE(has(live, "\"running\": true")) << live;
+  // `state` waited for the end: the whole log is open, at its end, as a recording of the
+  // same run made apart shows it.
+  const std::string opened = read_text(after);
+  const fs::path log = dir_ / "apart.mslog";
+  ASSERT_EQ(run(std::string(MESHSTEP_BINARY) + " triangulate " + node.string() + " --record " + log.string() +
+                " --no-output -q")
+                .status,
+            0);
+  const replay::LogReader apart(log.string());
+  EXPECT_TRUE(has(opened, "\"title\": \"" + node.string() + "\"")) << opened;
+  EXPECT_EQ(field(opened, "event_count"), static_cast<long long>(apart.event_count())) << opened;
+  EXPECT_EQ(field(opened, "position"), static_cast<long long>(apart.event_count())) << opened;
+  EXPECT_EQ(field(opened, "step_count"), static_cast<long long>(apart.step_count())) << opened;
+}
+
+TEST_F(LiveRunProgram, AnInputThatCannotRunIsAnErrorWithItsLine) {
+  const fs::path bad = dir_ / "bad.poly";
+  std::ofstream(bad) << "3 2 0 0\n0 0 0\n1 1 zero\n2 0 1\n0 0\n0\n";
+  const Result r = view(bad.string(), "state " + (dir_ / "s.json").string() + "\nquit\n");
+  if (r.status == 77) GTEST_SKIP() << r.output;
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_TRUE(has(r.output, bad.string() + ":3:")) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "s.json")) << "nothing is looked at after the failure";
+}
+
+// The preview worker on a log still being written: the prefix written so far, at its end.
+TEST_F(LiveRunProgram, PreviewDrawsTheEndOfWhatALogStillBeingWrittenHolds) {
+  std::unique_ptr<render::GlContext> context;
+  try {
+    context = render::make_offscreen_context("egl");
+  } catch (const render::GlUnavailable& e) {
+    GTEST_SKIP() << e.what();
+  }
+  // A log of several blocks: half of it holds whole blocks.
+  const fs::path log = dir_ / "whole.mslog";
+  ASSERT_EQ(run(std::string(MESHSTEP_BINARY) + " triangulate " + points(30000).string() + " --record " + log.string() +
+                " --no-output -q")
+                .status,
+            0);
+  const auto whole = std::make_unique<replay::LogReader>(log.string());
+  ASSERT_GT(whole->blocks().size(), 4u);
+  const fs::path partial = dir_ / "growing.mslog.partial";
+  CanvasWorker worker(partial.string(), "egl", CanvasWorker::Follow::growing_log);
+  CanvasRequest wanted;
+  wanted.position = UINT64_MAX;
+  wanted.fit = true;
+  wanted.width = 320;
+  wanted.height = 240;
+  // Not there yet: no picture and no error.
+  worker.request(wanted);
+  worker.wait_until_drawn();
+  CanvasPicture picture;
+  EXPECT_FALSE(worker.take(picture));
+  EXPECT_EQ(worker.error(), "");
+  // Its first half written: the picture of that prefix's end.
+  const std::string bytes = read_text(whole->path());
+  std::ofstream(partial, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size() / 2));
+  const replay::LogReader prefix(partial.string());
+  ASSERT_GT(prefix.event_count(), 0u);
+  ASSERT_LT(prefix.event_count(), whole->event_count());
+  wanted.generation = 1;
+  worker.request(wanted);
+  worker.wait_until_drawn();
+  ASSERT_TRUE(worker.take(picture));
+  EXPECT_EQ(picture.moment.position, prefix.event_count());
+  EXPECT_GT(picture.moment.scene.mesh.triangles.size(), 0u);
+  // All of it: the next picture shows the end of the run.
+  std::ofstream(partial, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  wanted.generation = 2;
+  worker.request(wanted);
+  worker.wait_until_drawn();
+  ASSERT_TRUE(worker.take(picture));
+  EXPECT_EQ(picture.moment.position, whole->event_count());
+}
+
+}  // namespace
+}  // namespace meshstep::viewer
