@@ -120,6 +120,13 @@ class LogReader {
  private:
   void read_header();
   void scan_blocks();
+ public:
+  struct BlockSlot;  // (log_reader.cpp)
+  struct Decoded;
+
+ private:
+  // Indexes one block (scan_blocks decoded it); true at the end block.
+  bool index_block(const BlockSlot& slot, const Decoded& decoded);
   void index_events(std::size_t block, const DecodedEvents& events);
   void read_end_block(const std::uint8_t* payload, std::size_t stored, std::size_t raw);
 
