@@ -3,7 +3,7 @@
 namespace meshstep::viewer {
 
 void PictureTexture::upload(const scene::Image& image) {
-  current_ = current_ == 0 ? 1 : 0;
+  current_ = (current_ + 1) % static_cast<int>(textures_.size());
   const auto at = static_cast<std::size_t>(current_);
   textures_[at].bind();
   std::array<int, 2>& size = sizes_[at];
@@ -15,6 +15,7 @@ void PictureTexture::upload(const scene::Image& image) {
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
     size = {image.width, image.height};
   } else {
+    // Into the storage it has: no allocation on the UI thread.
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
   }
 }
