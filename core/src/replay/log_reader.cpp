@@ -157,6 +157,9 @@ void decode_block(const std::uint8_t* file, const BlockSlot& slot, std::uint32_t
 // Blocks decoded at a time: half of them on a helper thread. Their events are held until
 // indexed (a few MB), never the whole log's.
 constexpr std::size_t kBatch = 8;
+// Below this size one thread decodes every block: a thread per batch would cost more than
+// it saves (and the tests open small logs of many tiny blocks thousands of times).
+constexpr std::size_t kBytesForTwoThreads = std::size_t{4} << 20;
 
 }  // namespace
 
@@ -198,15 +201,15 @@ void LogReader::scan_blocks() {
   std::vector<std::uint8_t> helper_raw;
   for (std::size_t first = 0; first < slots.size(); first += kBatch) {
     const std::size_t n = std::min(kBatch, slots.size() - first);
-    const auto decode_every_other = [&](std::size_t start, format::Decompressor& d, std::vector<std::uint8_t>& raw) {
-      for (std::size_t i = start; i < n; i += 2) decode_block(file_.data(), slots[first + i], format_version_, d, raw, decoded[i]);
+    const auto decode = [&](std::size_t start, std::size_t step, format::Decompressor& d, std::vector<std::uint8_t>& raw) {
+      for (std::size_t i = start; i < n; i += step) decode_block(file_.data(), slots[first + i], format_version_, d, raw, decoded[i]);
     };
-    if (n > 1) {
-      std::thread helper(decode_every_other, 1, std::ref(helper_decompressor), std::ref(helper_raw));
-      decode_every_other(0, cache_->decompressor, cache_->raw);
+    if (n > 1 && file_.size() >= kBytesForTwoThreads) {
+      std::thread helper(decode, 1, 2, std::ref(helper_decompressor), std::ref(helper_raw));
+      decode(0, 2, cache_->decompressor, cache_->raw);
       helper.join();
     } else {
-      decode_every_other(0, cache_->decompressor, cache_->raw);
+      decode(0, 1, cache_->decompressor, cache_->raw);
     }
     for (std::size_t i = 0; i < n; ++i)
       if (index_block(slots[first + i], decoded[i])) return;  // the end block
