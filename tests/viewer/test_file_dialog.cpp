@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "program_support.hpp"
 #include "file_dialog.hpp"
 #include "keys.hpp"
 #include "meshstep/error.hpp"
@@ -22,6 +23,11 @@
 
 namespace meshstep::viewer {
 namespace {
+
+using testing::has;
+using testing::read_text;
+using testing::Result;
+using testing::run;
 
 namespace fs = std::filesystem;
 using Kind = FileEntry::Kind;
@@ -212,30 +218,8 @@ TEST(FileDialogScript, TypeTakesTheRestOfTheLine) {
 
 // --- The program ----------------------------------------------------------------------
 
-struct Result {
-  int status = -1;
-  std::string output;
-};
 
-Result run(const std::string& command) {
-  Result r;
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) r.output.append(buf, n);
-  const int status = ::pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 class FileDialogProgram : public ::testing::Test {
  protected:

@@ -19,6 +19,7 @@
 #include <string>
 #include <thread>
 
+#include "program_support.hpp"
 #include "element_index.hpp"
 #include "element_story.hpp"
 #include "golden_runs.hpp"
@@ -29,6 +30,9 @@
 
 namespace meshstep::viewer {
 namespace {
+
+using testing::has;
+using testing::read_text;
 
 namespace fs = std::filesystem;
 using Edge = std::pair<VertexId, VertexId>;
@@ -316,14 +320,7 @@ std::string run_program(const std::string& command) {
   return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? "" : out.empty() ? "failed" : out;
 }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 // The part of the state's line for `key` (one field per line).
 std::string line_of(const std::string& json, const std::string& key) {

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "program_support.hpp"
 #include "canvas_worker.hpp"
 #include "meshstep/replay/log_reader.hpp"
 #include "render/gl_context.hpp"
@@ -20,38 +21,17 @@
 namespace meshstep::viewer {
 namespace {
 
+using testing::field;
+using testing::has;
+using testing::read_text;
+using testing::Result;
+using testing::run;
+
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string output;
-};
 
-Result run(const std::string& command) {
-  Result r;
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) r.output.append(buf, n);
-  const int status = ::pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-long long field(const std::string& json, const std::string& key) {
-  const std::string tag = "\"" + key + "\": ";
-  const auto at = json.find(tag);
-  return at == std::string::npos ? -1 : std::atoll(json.c_str() + at + tag.size());
-}
 
 class LiveRunProgram : public ::testing::Test {
  protected:

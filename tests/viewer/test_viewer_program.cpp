@@ -16,6 +16,7 @@
 #include <sstream>
 #include <string>
 
+#include "program_support.hpp"
 #include "golden_runs.hpp"
 #include "meshstep/replay/replay.hpp"
 #include "meshstep/scene/image.hpp"
@@ -23,42 +24,19 @@
 namespace meshstep::viewer {
 namespace {
 
+using testing::field;
+using testing::has;
+using testing::read_text;
+using testing::Result;
+using testing::run;
+
 namespace fs = std::filesystem;
 
 constexpr const char* kOffcenter = "--algorithm offcenter --min-angle 30";
 
-struct Result {
-  int status = -1;
-  std::string output;
-};
 
-Result run(const std::string& command) {
-  Result r;
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) r.output.append(buf, n);
-  const int status = ::pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
-// The number after "KEY": in the state file (one field per line).
-long long field(const std::string& json, const std::string& key) {
-  const std::string tag = "\"" + key + "\": ";
-  const auto at = json.find(tag);
-  if (at == std::string::npos) return -1;
-  return std::atoll(json.c_str() + at + tag.size());
-}
-
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 class ViewerProgram : public ::testing::TestWithParam<std::string> {
  protected:
