@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
     }
     options.settings = &settings;
   }
-  viewer::Opener opener(a.quiet);
+  viewer::Opener opener;
   try {
     if (!a.script.empty()) {
       options.script = viewer::read_script(a.script);
@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
       options.start_step = a.step;
       options.start_event = a.event;
     } else if (!a.input.empty()) {
-      session = opener.open(a.input, a.refine);
+      session = opener.open(a.input);
       if (a.step >= 0) session->seek_step(static_cast<std::uint64_t>(a.step));
       if (a.event >= 0) session->seek(static_cast<std::uint64_t>(a.event));
     }

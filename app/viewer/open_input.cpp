@@ -1,7 +1,5 @@
 #include "open_input.hpp"
 
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,7 +11,6 @@
 #include "meshstep/error.hpp"
 #include "live_run.hpp"
 
-extern char** environ;
 
 namespace meshstep::viewer {
 
@@ -43,22 +40,6 @@ std::string Opener::temporary_log() {
   return log;
 }
 
-std::string Opener::record_run(const std::string& input, const RefineOptions& r) {
-  const std::string log = temporary_log();
-  std::vector<std::string> args = run_arguments(input, r, log);
-  std::vector<char*> argv;
-  for (std::string& s : args) argv.push_back(s.data());
-  argv.push_back(nullptr);
-  if (!quiet_) std::fprintf(stderr, "meshstep view: recording %s %s ...\n", args[1].c_str(), input.c_str());
-  pid_t pid = -1;
-  if (::posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0)
-    throw InputError(input, 0, "cannot run " + args[0] + " to triangulate it");
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw InputError(input, 0, "its run failed (see above)");
-  return log;
-}
-
 std::unique_ptr<LiveRun> Opener::start_live(const std::string& input, const RefineOptions& refine,
                                             const std::string& backend) {
   return std::make_unique<LiveRun>(input, refine, temporary_log(), backend);
@@ -66,13 +47,8 @@ std::unique_ptr<LiveRun> Opener::start_live(const std::string& input, const Refi
 
 bool is_input(const std::string& path) { return path.ends_with(".poly") || path.ends_with(".node"); }
 
-std::unique_ptr<Session> Opener::open(const std::string& path, const RefineOptions& refine) {
+std::unique_ptr<Session> Opener::open(const std::string& path) {
   if (app::is_replay_log(path)) return Session::open_log(path);
-  if (is_input(path)) {
-    auto session = Session::open_log(record_run(path, refine));
-    session->set_title(path);
-    return session;
-  }
   std::vector<std::string> warnings;
   app::SceneSource source = app::open_scene_source(path, &warnings);
   for (const std::string& w : warnings) std::fprintf(stderr, "%s\n", w.c_str());

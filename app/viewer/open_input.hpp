@@ -26,23 +26,21 @@ struct RefineOptions {
 // Owns the temporary logs of recorded inputs and removes them when it goes.
 class Opener {
  public:
-  explicit Opener(bool quiet) : quiet_(quiet) {}
+  Opener() = default;
   ~Opener();
   Opener(const Opener&) = delete;
   Opener& operator=(const Opener&) = delete;
 
-  // Throws InputError ("FILE: what is wrong") when it cannot be opened or its run fails.
-  // An input is recorded first, the window waiting (a live run does not wait: start_live).
-  std::unique_ptr<Session> open(const std::string& path, const RefineOptions& refine = {});
+  // A log or a mesh PREFIX (an input given here is shown as it is, not run: inputs run
+  // live, through start_live). Throws InputError ("FILE: what is wrong").
+  std::unique_ptr<Session> open(const std::string& path);
   // Starts the run of an input (.poly, .node) that the window watches as it goes; its log
   // is a temporary one, removed with the opener.
   std::unique_ptr<LiveRun> start_live(const std::string& input, const RefineOptions& refine, const std::string& backend);
 
  private:
-  std::string record_run(const std::string& input, const RefineOptions& refine);
   std::string temporary_log();
 
-  bool quiet_;
   std::vector<std::string> temporary_logs_;
 };
 

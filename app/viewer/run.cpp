@@ -98,7 +98,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
         live = std::make_unique<LiveView>(opener.start_live(path, refine, host->gl_library()));
         problem.clear();
       } else {
-        show(opener.open(path, refine));
+        show(opener.open(path));
       }
     } catch (const InputError& e) {
       problem = e.what();
