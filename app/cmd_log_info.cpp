@@ -35,6 +35,7 @@ int run_info(const InfoArgs& args) {
           .field("parameters", h.parameters)
           .field("data_structure", h.data_structure)
           .field("insertion", h.insertion)
+          .field("regions", h.regions.size())
           .field("complete", log.complete())
           .field("events", static_cast<std::size_t>(log.event_count()))
           .field("steps", static_cast<std::size_t>(log.step_count()))
@@ -53,6 +54,7 @@ int run_info(const InfoArgs& args) {
                   h.input_hash.c_str());
       std::printf("  parameters: %s\n", h.parameters.c_str());
       std::printf("  mesh:       %s, insertion by %s\n", h.data_structure.c_str(), h.insertion.c_str());
+      if (!h.regions.empty()) std::printf("  regions:    %zu region points (the input's)\n", h.regions.size());
       std::printf("  events:     %llu in %llu steps\n", static_cast<unsigned long long>(log.event_count()),
                   static_cast<unsigned long long>(log.step_count()));
       for (std::size_t t = 0; t < replay::kEventTypeCount; ++t)

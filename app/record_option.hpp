@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/replay/log_writer.hpp"
@@ -18,11 +19,13 @@ inline void add_record_option(CLI::App& cmd, std::string& path) {
       ->type_name("LOG");
 }
 
-// Opens the log for a run of `algorithm` on `input`. Throws InputError.
+// Opens the log for a run of `algorithm` on `input` (whose region points it keeps, for the
+// viewer's regional attributes). Throws InputError.
 inline std::unique_ptr<replay::LogWriter> open_log(const std::string& path, const std::string& input,
                                                    const std::string& algorithm,
                                                    const std::string& parameters,
-                                                   DataStructure ds, Insertion insertion) {
+                                                   DataStructure ds, Insertion insertion,
+                                                   std::vector<Region> regions) {
   replay::LogHeader header;
   header.input = input;
   header.input_hash = replay::file_hash(input);
@@ -30,6 +33,7 @@ inline std::unique_ptr<replay::LogWriter> open_log(const std::string& path, cons
   header.parameters = parameters;
   header.data_structure = to_string(ds);
   header.insertion = to_string(insertion);
+  header.regions = std::move(regions);
   return std::make_unique<replay::LogWriter>(path, header);
 }
 

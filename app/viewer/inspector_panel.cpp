@@ -26,7 +26,12 @@ const SelectionStory& Viewer::selection_story() {
 
 void Viewer::select_at(Point world) {
   const scene::Scene& s = session_->scene();
-  const double pixel = 1.0 / camera_.pixels_per_unit();
+  // The pick's tolerance is a few pixels of the canvas as it will be drawn: a pending fit is
+  // done first, and before the first frame (a script's select) no pixel has a size yet,
+  // so only an exact hit picks a vertex or a segment.
+  const bool canvas_known = camera_.width() > 1;
+  if (fit_pending_ && canvas_known) fit_camera(camera_.width(), camera_.height());
+  const double pixel = canvas_known ? 1.0 / camera_.pixels_per_unit() : 0.0;
   selected_ = pick(s.mesh, constrained_edges(s), world, 8.0 * pixel, 5.0 * pixel);
   lepp_ = {};
   if (selected_.kind == Picked::Kind::triangle) {

@@ -69,6 +69,10 @@ std::string Viewer::selection_text() {
                     f.min_angle < angle_bound_ ? "<" : ">=", angle_bound_);
       out += buf;
     }
+    if (selected_.index < s.mesh.region.size()) {
+      std::snprintf(buf, sizeof buf, ", region %g", s.mesh.region[selected_.index]);
+      out += buf;
+    }
     std::snprintf(buf, sizeof buf, "; Lepp path of %zu to edge %u-%u%s", lepp_.triangles.size(), lepp_.a, lepp_.b,
                   lepp_.boundary ? " (on the boundary)" : "");
     out += buf;

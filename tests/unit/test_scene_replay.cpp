@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <map>
+#include <tuple>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -18,6 +20,7 @@
 
 #include "meshstep/check/quality.hpp"
 #include "meshstep/delaunay/triangulate.hpp"
+#include "meshstep/error.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/refine/refine.hpp"
 #include "meshstep/refine/registry.hpp"
@@ -946,6 +949,122 @@ TEST(SceneReplayBounds, HugeCirclesDoNotBlowTheFit) {
       for (const double r : c->radii) huge += r > 10 * side;
   }
   EXPECT_GT(huge, 0u) << "the test no longer makes a huge circle";
+}
+
+
+// A square cut in two by a segment, with region points in both halves: on the left an
+// earlier point (attribute 7) overwritten by a later one (1), on the right 2 then 5, and one
+// point outside the domain. The output's attributes say which wins where.
+Pslg two_regions() {
+  Pslg in;
+  in.points = {{0, 0}, {2, 0}, {4, 0}, {4, 4}, {2, 4}, {0, 4}};
+  in.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 0}, {1, 4}};
+  in.regions = {{{1, 3}, 7, -1}, {{1, 2}, 1, -1}, {{3, 2}, 2, -1}, {{3, 1}, 5, 0.25}, {{10, 10}, 9, -1}};
+  return in;
+}
+
+// Each triangle's corners, sorted, as the key that finds it in another numbering.
+std::array<Point, 3> corner_key(std::span<const Point> points, const std::array<std::uint32_t, 3>& t) {
+  std::array<Point, 3> key{points[t[0]], points[t[1]], points[t[2]]};
+  std::sort(key.begin(), key.end(), [](const Point& a, const Point& b) { return std::tie(a.x, a.y) < std::tie(b.x, b.y); });
+  return key;
+}
+
+// The log keeps the input's region points exactly, and every moment's triangles carry the
+// attribute the run's output gives them: at the end, each triangle's equals the written
+// mesh's; before that, every triangle is in the half its attribute names.
+TEST(SceneReplayRegions, TrianglesCarryTheRegionalAttributeOfTheOutput) {
+  testing::TempDir dir("meshstep_scene_");
+  const Pslg in = two_regions();
+  const std::string path = dir.file("regions.mslog");
+  TriMesh out;
+  {
+    replay::LogHeader h;
+    h.parameters = "input_vertices=" + std::to_string(in.points.size());
+    h.regions = in.regions;
+    h.regions[0].point.x = 1.0 / 3.0;  // a number whose text must carry every bit
+    replay::LogWriter writer(path, h);
+    RefineOptions o = options_for(*find_algorithm("circumcenter"));
+    o.criteria.min_angle_deg = 30.0;
+    o.triangulate.record = &writer;
+    Pslg copy = in;
+    copy.regions[0].point.x = 1.0 / 3.0;
+    out = refine(copy, o);
+    writer.finish();
+  }
+  const replay::LogReader log(path);
+  ASSERT_EQ(log.header().regions.size(), in.regions.size());
+  EXPECT_EQ(log.header().regions[0].point.x, 1.0 / 3.0);
+  EXPECT_EQ(log.header().regions[3].max_area, 0.25);
+  EXPECT_EQ(log.header().regions[4].attribute, 9.0);
+
+  std::map<std::array<Point, 3>, double, decltype([](const auto& a, const auto& b) {
+             return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), [](const Point& p, const Point& q) {
+               return std::tie(p.x, p.y) < std::tie(q.x, q.y);
+             });
+           })>
+      expected;
+  ASSERT_EQ(out.attributes_per_triangle, 1u);
+  for (std::size_t t = 0; t < out.triangles.size(); ++t) expected[corner_key(out.points, out.triangles[t])] = out.triangle_attributes[t];
+
+  replay::Replay cursor(log);
+  const Scene end = scene_at(cursor, log.event_count());
+  ASSERT_EQ(end.mesh.region.size(), end.mesh.triangles.size());
+  ASSERT_EQ(end.mesh.triangles.size(), out.triangles.size());
+  std::set<double> seen;
+  for (std::size_t t = 0; t < end.mesh.triangles.size(); ++t) {
+    const auto it = expected.find(corner_key(end.mesh.points, end.mesh.triangles[t]));
+    ASSERT_NE(it, expected.end()) << "triangle " << t << " is not in the output";
+    EXPECT_EQ(end.mesh.region[t], it->second) << "triangle " << t;
+    seen.insert(end.mesh.region[t]);
+  }
+  EXPECT_EQ(seen, (std::set<double>{1.0, 5.0}));
+  ASSERT_NE(end.find("regions"), nullptr);
+  EXPECT_EQ(end.find("regions")->points.size(), in.regions.size());
+
+  // Every tenth moment: the left half is 1 and the right 5 once the middle segment is in.
+  for (std::uint64_t p = log.event_count() / 2; p < log.event_count(); p += 10) {
+    const Scene s = scene_at(cursor, p);
+    ASSERT_EQ(s.mesh.region.size(), s.mesh.triangles.size());
+    for (std::size_t t = 0; t < s.mesh.triangles.size(); ++t) {
+      const auto& v = s.mesh.triangles[t];
+      const double cx = (s.mesh.points[v[0]].x + s.mesh.points[v[1]].x + s.mesh.points[v[2]].x) / 3;
+      EXPECT_EQ(s.mesh.region[t], cx < 2 ? 1.0 : 5.0) << "at event " << p << ", triangle " << t;
+    }
+  }
+  // Colouring by region reads the same attributes.
+  SceneOptions by_region;
+  by_region.color_by = ColorBy::region;
+  const Scene coloured = scene_at(cursor, log.event_count(), by_region);
+  EXPECT_EQ(coloured.mesh.values, coloured.mesh.region);
+}
+
+// A log without regions has none, and a damaged regions field is refused by name.
+TEST(SceneReplayRegions, ALogWithoutRegionsHasNoneAndABadFieldIsRefused) {
+  testing::TempDir dir("meshstep_scene_");
+  const std::string plain = dir.file("plain.mslog"), bad = dir.file("bad.mslog");
+  for (const std::string& path : {plain, bad}) {
+    replay::LogHeader h;
+    h.parameters = "input_vertices=3";
+    if (path == bad) h.regions = {{{0.5, 0.5}, std::nan(""), -1}};
+    replay::LogWriter writer(path, h);
+    TriangulateOptions o;
+    o.record = &writer;
+    Pslg triangle;
+    triangle.points = {{0, 0}, {1, 0}, {0, 1}};
+    triangulate(triangle, o);
+    writer.finish();
+  }
+  const replay::LogReader log(plain);
+  EXPECT_TRUE(log.header().regions.empty());
+  replay::Replay cursor(log);
+  EXPECT_TRUE(scene_at(cursor, log.event_count()).mesh.region.empty());
+  try {
+    const replay::LogReader broken(bad);
+    FAIL() << "a NaN attribute was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("regions field is malformed"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -345,6 +345,54 @@ TEST(ViewerInspector, SelectsVerticesAndTriangles) {
   fs::remove_all(dir);
 }
 
+// A triangle's region: a .poly whose middle segment splits two regions, refined by the
+// command line with --record (which keeps the region points in the log), then a click on
+// each side. The later region point of each side wins, as in the written mesh.
+TEST(ViewerInspector, SaysATrianglesRegion) {
+  const fs::path dir = fs::temp_directory_path() / ("viewer_regions_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path poly = dir / "halves.poly", log = dir / "halves.mslog", script = dir / "s.txt";
+  const fs::path left = dir / "left.json", right = dir / "right.json";
+  std::ofstream(poly) << "6 2 0 0\n1 0 0\n2 2 0\n3 4 0\n4 4 4\n5 2 4\n6 0 4\n"
+                         "7 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 6\n6 6 1\n7 2 5\n0\n"
+                         "3\n1 1 3 7 -1\n2 1 2 1 -1\n3 3 1 5 -1\n";
+  const Result recorded = run(std::string(MESHSTEP_BINARY) + " refine " + poly.string() + " --min-angle 25 -q --record " +
+                              log.string() + " -o " + (dir / "out").string());
+  ASSERT_EQ(recorded.status, 0) << recorded.output;
+  const Result info = run(std::string(MESHSTEP_BINARY) + " log info " + log.string());
+  EXPECT_TRUE(has(info.output, "regions:    3 region points")) << info.output;
+  // On each side, the centroid of the final triangle farthest from every vertex: a click
+  // there picks that triangle.
+  const replay::LogReader reader(log.string());
+  replay::Replay cursor(reader);
+  cursor.seek_event(reader.event_count());
+  const auto& v = reader.vertices();
+  Point click[2];
+  double clearance[2] = {-1, -1};
+  for (const replay::FaceRecord& f : cursor.slots()) {
+    if (f.dead() || f.ghost()) continue;
+    const Point c{(v[f.v[0]].point.x + v[f.v[1]].point.x + v[f.v[2]].point.x) / 3,
+                  (v[f.v[0]].point.y + v[f.v[1]].point.y + v[f.v[2]].point.y) / 3};
+    double nearest = INFINITY;
+    for (const replay::VertexInfo& info : v) nearest = std::min(nearest, std::hypot(info.point.x - c.x, info.point.y - c.y));
+    const int side = c.x < 2 ? 0 : 1;
+    if (nearest > clearance[side]) clearance[side] = nearest, click[side] = c;
+  }
+  ASSERT_GT(clearance[0], 0);
+  ASSERT_GT(clearance[1], 0);
+  char text[256];
+  std::snprintf(text, sizeof text, "seek end\nwait\nselect %.17g %.17g\nframes 1\nstate %s\nselect %.17g %.17g\nframes 1\nstate %s\nquit\n",
+                click[0].x, click[0].y, left.c_str(), click[1].x, click[1].y, right.c_str());
+  std::ofstream(script) << text;
+  const Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + log.string() + " --offscreen -q --script " + script.string());
+  if (r.status != 0 && has(r.output, "cannot open a window or draw")) GTEST_SKIP() << r.output;
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string ls = read_text(left), rs = read_text(right);
+  EXPECT_TRUE(has(ls, "\"selection\": \"triangle ") && has(ls, ", region 1;")) << ls;
+  EXPECT_TRUE(has(rs, "\"selection\": \"triangle ") && has(rs, ", region 5;")) << rs;
+  fs::remove_all(dir);
+}
+
 // The plots over the whole run agree with the mesh at the cursor, step by step.
 TEST(ViewerPlots, AgreeWithTheMeshAtEveryStepLookedAt) {
   const replay::LogReader* log = golden::lesson_run(kOffcenter);

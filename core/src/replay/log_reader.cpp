@@ -7,6 +7,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 #include "event_codec.hpp"
@@ -83,6 +84,13 @@ void LogReader::read_header() {
     // Unknown keys are skipped: a newer writer may add fields within the same version.
     if (const auto it = known.find(key); it != known.end())
       it->second->assign(reinterpret_cast<const char*>(p), value_length);
+    if (key == "regions") {
+      try {
+        header_.regions = parse_regions_field(std::string(reinterpret_cast<const char*>(p), value_length));
+      } catch (const std::invalid_argument& e) {
+        fail(std::string("the header's regions field is malformed: ") + e.what());
+      }
+    }
     p += value_length;
   }
   blocks_start_ = 16 + std::size_t{length} + 8;

@@ -97,6 +97,7 @@ struct LogWriter::Impl {
     put_field(fields, "parameters", header.parameters);
     put_field(fields, "data_structure", header.data_structure);
     put_field(fields, "insertion", header.insertion);
+    if (!header.regions.empty()) put_field(fields, "regions", regions_field(header.regions));
     std::vector<std::uint8_t> bytes(format::kFileMagic, format::kFileMagic + 8);
     format::put_le(bytes, encoder.format_version());
     format::put_le(bytes, static_cast<std::uint32_t>(fields.size()));

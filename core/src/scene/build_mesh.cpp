@@ -169,17 +169,12 @@ Scene build_scene(const TriMesh& mesh, const SceneOptions& options) {
   in.points = scene.mesh.points;
   in.triangles = scene.mesh.triangles;
   // The region attribute is a triangle's first attribute (copied out when there are more).
-  std::vector<double> first_attribute;
   const std::size_t per_triangle = mesh.attributes_per_triangle;
   if (per_triangle >= 1 && mesh.triangle_attributes.size() == mesh.triangles.size() * per_triangle) {
-    if (per_triangle == 1) {
-      in.region = mesh.triangle_attributes;
-    } else {
-      first_attribute.resize(mesh.triangles.size());
-      for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-        first_attribute[t] = mesh.triangle_attributes[t * per_triangle];
-      in.region = first_attribute;
-    }
+    scene.mesh.region.resize(mesh.triangles.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+      scene.mesh.region[t] = mesh.triangle_attributes[t * per_triangle];
+    in.region = scene.mesh.region;
   }
   in.min_angle_bound = detail::quality_bound(options, nullptr);
   scene.legend = detail::fill_triangles(options.color_by, options.theme, in, scene.mesh);

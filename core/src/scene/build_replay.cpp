@@ -14,6 +14,7 @@
 #include "fill.hpp"
 #include "meshstep/error.hpp"
 #include "parts.hpp"
+#include "regions.hpp"
 #include "style.hpp"
 
 namespace meshstep::scene {
@@ -28,6 +29,7 @@ bool drawn(const FaceRecord& r) { return !r.dead() && !r.ghost(); }
 struct MomentMesh {
   std::vector<FaceId> slot_of;                          // per triangle, its face slot (ascending)
   std::vector<Segment> segments;                        // constrained edges, once each
+  std::vector<std::pair<VertexId, VertexId>> constrained;  // the same, (smaller, larger), sorted
   std::vector<Point> input_vertices, steiner_vertices;  // present at the cursor
   BBox box;                                             // of the vertices present
 };
@@ -51,7 +53,7 @@ MomentMesh read_mesh(const replay::Replay& cursor, MeshLayer& layer) {
   }
 
   const std::vector<FaceRecord>& slots = cursor.slots();
-  std::vector<std::pair<VertexId, VertexId>> constrained;
+  std::vector<std::pair<VertexId, VertexId>>& constrained = out.constrained;
   layer.triangles.clear();
   for (FaceId s = 0; s < slots.size(); ++s) {
     const FaceRecord& r = slots[s];
@@ -109,12 +111,18 @@ Scene build_scene(const replay::Replay& cursor, const SceneOptions& options, con
     in.ages = triangle_ages;
     in.current_step = story.in_step ? story.step : 0;
   }
+  const std::vector<Region>& regions = log.header().regions;
+  if (!regions.empty()) {
+    scene.mesh.region = detail::region_attributes(scene.mesh.points, scene.mesh.triangles, mesh.constrained, regions);
+    in.region = scene.mesh.region;
+  }
   scene.legend = detail::fill_triangles(options.color_by, options.theme, in, scene.mesh);
 
   add_changed_faces(scene, story, cursor.slots(), mesh.slot_of);
   detail::add_overlays(scene, story, log);
   detail::add_segments(scene, scene.mesh.points, mesh.segments);
   detail::add_vertex_markers(scene, mesh.input_vertices, mesh.steiner_vertices, options);
+  detail::add_regions(scene, regions);
   scene.caption = detail::step_caption(story, log);
   scene.bounds = detail::scene_bounds(scene, mesh.box);
   return scene;

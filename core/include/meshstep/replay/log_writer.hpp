@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "meshstep/pslg/pslg.hpp"
 #include "meshstep/replay/event.hpp"
 #include "meshstep/replay/event_sink.hpp"
 
@@ -29,7 +30,16 @@ struct LogHeader {
   std::string parameters;       // "key=value" pairs separated by spaces
   std::string data_structure;   // "tds" or "dcel"
   std::string insertion;        // "flip" or "cavity"
+  // The input's region points, in input coordinates (the log's): a moment's triangles get
+  // their regional attribute by the same flood as the run's output. Stored as the field
+  // "regions" (one "x y attribute max_area" line each, exact to the last bit); a log
+  // without the field reads as one with no regions.
+  std::vector<Region> regions;
 };
+
+// The "regions" field's text and back. Throws std::invalid_argument on a malformed line.
+std::string regions_field(const std::vector<Region>& regions);
+std::vector<Region> parse_regions_field(const std::string& text);
 
 struct LogWriterOptions {
   // zstd's fast negative levels: the encoded events are varints already, so a stronger

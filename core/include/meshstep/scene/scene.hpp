@@ -93,6 +93,7 @@ struct MeshLayer {
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<Rgba> fill;       // one per triangle
   std::vector<double> values;   // the quantity behind each fill colour (empty for ColorBy::none)
+  std::vector<double> region;   // each triangle's regional attribute (empty: the input has no regions)
   Rgba edge_color;
   float edge_width_px = 1.0f;
 };

@@ -1,0 +1,22 @@
+// The regional attribute of each triangle of a moment of a run, found as the run's own
+// output finds it: each region point in turn floods, from the triangle that holds it, every
+// triangle it reaches without crossing a constrained edge, and a later region point
+// overwrites an earlier one. A triangle no region point reaches gets 0, as Triangle writes.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "meshstep/pslg/pslg.hpp"
+
+namespace meshstep::scene::detail {
+
+// `constrained`: the constrained edges as (smaller, larger) vertex pairs, sorted.
+std::vector<double> region_attributes(std::span<const Point> points,
+                                      std::span<const std::array<std::uint32_t, 3>> triangles,
+                                      std::span<const std::pair<std::uint32_t, std::uint32_t>> constrained,
+                                      std::span<const Region> regions);
+
+}  // namespace meshstep::scene::detail
