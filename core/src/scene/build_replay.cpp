@@ -29,7 +29,7 @@ bool drawn(const FaceRecord& r) { return !r.dead() && !r.ghost(); }
 struct MomentMesh {
   std::vector<FaceId> slot_of;                          // per triangle, its face slot (ascending)
   std::vector<Segment> segments;                        // constrained edges, once each
-  std::vector<std::pair<VertexId, VertexId>> constrained;  // the same, (smaller, larger), sorted
+  std::vector<std::uint8_t> constrained_bits;            // per triangle, its slot's
   std::vector<Point> input_vertices, steiner_vertices;  // present at the cursor
   BBox box;                                             // of the vertices present
 };
@@ -53,7 +53,7 @@ MomentMesh read_mesh(const replay::Replay& cursor, MeshLayer& layer) {
   }
 
   const std::vector<FaceRecord>& slots = cursor.slots();
-  std::vector<std::pair<VertexId, VertexId>>& constrained = out.constrained;
+  std::vector<std::pair<VertexId, VertexId>> constrained;
   layer.triangles.clear();
   for (FaceId s = 0; s < slots.size(); ++s) {
     const FaceRecord& r = slots[s];
@@ -62,6 +62,7 @@ MomentMesh read_mesh(const replay::Replay& cursor, MeshLayer& layer) {
       throw InputError(log.path(), 0, "face slot " + std::to_string(s) + " names a vertex the log never introduces");
     layer.triangles.push_back({r.v[0], r.v[1], r.v[2]});
     out.slot_of.push_back(s);
+    out.constrained_bits.push_back(r.constrained);
     for (int i = 0; i < 3; ++i)
       if (r.constrained >> i & 1) constrained.push_back(std::minmax(r.v[i], r.v[(i + 1) % 3]));
   }
@@ -113,7 +114,7 @@ Scene build_scene(const replay::Replay& cursor, const SceneOptions& options, con
   }
   const std::vector<Region>& regions = log.header().regions;
   if (!regions.empty()) {
-    scene.mesh.region = detail::region_attributes(scene.mesh.points, scene.mesh.triangles, mesh.constrained, regions);
+    scene.mesh.region = detail::region_attributes(scene.mesh.points, scene.mesh.triangles, mesh.constrained_bits, regions);
     in.region = scene.mesh.region;
   }
   scene.legend = detail::fill_triangles(options.color_by, options.theme, in, scene.mesh);

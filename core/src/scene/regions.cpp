@@ -11,30 +11,46 @@ namespace {
 
 constexpr std::uint32_t kNoTriangle = ~std::uint32_t{0};
 
-// Each vertex's triangles, packed (compressed sparse rows): a triangle's neighbour across
-// an edge is found among the few triangles of the edge's first vertex.
-struct VertexStars {
-  std::vector<std::uint32_t> first, triangles;
-
-  VertexStars(std::size_t vertex_count, std::span<const std::array<std::uint32_t, 3>> tris)
-      : first(vertex_count + 1, 0), triangles(tris.size() * 3) {
-    for (const auto& t : tris)
-      for (const std::uint32_t v : t) ++first[v + 1];
-    std::partial_sum(first.begin(), first.end(), first.begin());
-    std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
-    for (std::uint32_t t = 0; t < tris.size(); ++t)
-      for (const std::uint32_t v : tris[t]) triangles[next[v]++] = t;
-  }
-
-  std::uint32_t across(std::span<const std::array<std::uint32_t, 3>> tris, std::uint32_t t, std::uint32_t a,
-                       std::uint32_t b) const {
-    for (std::uint32_t i = first[a]; i < first[a + 1]; ++i) {
-      const std::uint32_t u = triangles[i];
-      if (u != t && std::find(tris[u].begin(), tris[u].end(), b) != tris[u].end()) return u;
+// For each edge 3t + i of each triangle (from its vertex i to vertex i + 1), the triangle
+// across it (kNoTriangle on the boundary). Each vertex's corners are gathered (compressed
+// rows), and the two half-edges of an edge meet in the star of their shared start: corner
+// c at vertex a leaves along (a, next), and the corner d whose previous vertex is that same
+// `next` arrives along (next, a). One pass over the stars, each a handful of corners.
+//
+// The arrays are kept from call to call on each thread: a viewer builds a scene per
+// picture, and fresh memory costs more to touch the first time than this whole pass.
+const std::vector<std::uint32_t>& neighbours(std::size_t vertex_count,
+                                             std::span<const std::array<std::uint32_t, 3>> tris) {
+  struct Corner {
+    std::uint32_t id, next, prev;
+  };
+  thread_local std::vector<std::uint32_t> first, corners, filled, across;
+  thread_local std::vector<Corner> star;
+  first.assign(vertex_count + 1, 0);
+  corners.resize(tris.size() * 3);
+  for (const auto& t : tris)
+    for (const std::uint32_t v : t) ++first[v + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  filled.assign(first.begin(), first.end() - 1);
+  for (std::uint32_t t = 0; t < tris.size(); ++t)
+    for (std::uint32_t i = 0; i < 3; ++i) corners[filled[tris[t][i]]++] = 3 * t + i;
+  across.assign(tris.size() * 3, kNoTriangle);
+  for (std::size_t v = 0; v < vertex_count; ++v) {
+    star.clear();
+    for (std::uint32_t k = first[v]; k < first[v + 1]; ++k) {
+      const std::uint32_t c = corners[k], t = c / 3, i = c % 3;
+      star.push_back({c, tris[t][(i + 1) % 3], tris[t][(i + 2) % 3]});
     }
-    return kNoTriangle;
+    for (const Corner& c : star)
+      for (const Corner& d : star)
+        if (d.prev == c.next && d.id != c.id) {
+          across[c.id] = d.id / 3;                         // c's edge (v, next)
+          across[3 * (d.id / 3) + (d.id % 3 + 2) % 3] = c.id / 3;  // d's edge (prev, v)
+          break;
+        }
   }
-};
+  return across;
+}
 
 // For each region point, the first triangle (in list order) whose closed triangle holds
 // it, kNoTriangle when none does (a point in a hole or outside). Region points are sorted
@@ -71,22 +87,18 @@ std::vector<std::uint32_t> holders(std::span<const Point> points,
 
 std::vector<double> region_attributes(std::span<const Point> points,
                                       std::span<const std::array<std::uint32_t, 3>> triangles,
-                                      std::span<const std::pair<std::uint32_t, std::uint32_t>> constrained,
-                                      std::span<const Region> regions) {
+                                      std::span<const std::uint8_t> constrained, std::span<const Region> regions) {
   std::vector<double> attribute(triangles.size(), 0.0);
   if (regions.empty() || triangles.empty()) return attribute;
   const std::vector<std::uint32_t> holder = holders(points, triangles, regions);
-  const VertexStars stars(points.size(), triangles);
-  const auto is_constrained = [&](std::uint32_t a, std::uint32_t b) {
-    const std::pair<std::uint32_t, std::uint32_t> edge = a < b ? std::pair{a, b} : std::pair{b, a};
-    return std::binary_search(constrained.begin(), constrained.end(), edge);
-  };
+  const std::vector<std::uint32_t>& across = neighbours(points.size(), triangles);
   // The last region point to reach a triangle gives its attribute, so the points flood in
   // reverse and a triangle already claimed stops a flood: each triangle is visited once.
   // (A flood fills a whole part between constrained edges, so a part claimed once is
   // claimed whole.)
-  std::vector<bool> claimed(triangles.size(), false);
-  std::vector<std::uint32_t> stack;
+  thread_local std::vector<bool> claimed;
+  thread_local std::vector<std::uint32_t> stack;
+  claimed.assign(triangles.size(), false);
   for (std::size_t r = regions.size(); r-- > 0;) {
     if (holder[r] == kNoTriangle || claimed[holder[r]]) continue;
     claimed[holder[r]] = true;
@@ -95,11 +107,9 @@ std::vector<double> region_attributes(std::span<const Point> points,
       const std::uint32_t t = stack.back();
       stack.pop_back();
       attribute[t] = regions[r].attribute;
-      for (int i = 0; i < 3; ++i) {
-        const std::uint32_t a = triangles[t][i], b = triangles[t][(i + 1) % 3];
-        if (is_constrained(a, b)) continue;
-        const std::uint32_t u = stars.across(triangles, t, a, b);
-        if (u == kNoTriangle || claimed[u]) continue;
+      for (std::uint32_t i = 0; i < 3; ++i) {
+        const std::uint32_t u = across[3 * t + i];
+        if (constrained[t] >> i & 1 || u == kNoTriangle || claimed[u]) continue;
         claimed[u] = true;
         stack.push_back(u);
       }

@@ -13,10 +13,10 @@
 
 namespace meshstep::scene::detail {
 
-// `constrained`: the constrained edges as (smaller, larger) vertex pairs, sorted.
+// `constrained[t] >> i & 1`: triangle t's edge i, from its vertex i to vertex i + 1, is
+// constrained (a replay FaceRecord's bits).
 std::vector<double> region_attributes(std::span<const Point> points,
                                       std::span<const std::array<std::uint32_t, 3>> triangles,
-                                      std::span<const std::pair<std::uint32_t, std::uint32_t>> constrained,
-                                      std::span<const Region> regions);
+                                      std::span<const std::uint8_t> constrained, std::span<const Region> regions);
 
 }  // namespace meshstep::scene::detail
