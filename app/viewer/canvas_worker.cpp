@@ -1,5 +1,8 @@
 #include "canvas_worker.hpp"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <memory>
 #include <utility>
 
@@ -8,6 +11,10 @@
 #include "meshstep/scene/layout.hpp"
 
 namespace meshstep::viewer {
+
+namespace {
+constexpr int kPreviewNice = 5;
+}  // namespace
 
 CanvasWorker::CanvasWorker(std::string log_path, std::string backend, Follow follow)
     : log_path_(std::move(log_path)), backend_(std::move(backend)), follow_(follow), thread_([this] { run(); }) {}
@@ -77,6 +84,12 @@ void CanvasWorker::draw(const CanvasRequest& wanted, Session& session, render::R
 }
 
 void CanvasWorker::run() {
+  // A live run's preview goes below the UI thread: the machine is busy with the run beside
+  // it (on two cores: the run, this thread and its log reader's helper), and the window's
+  // frames come first. Linux gives each thread its own nice value, inherited by the threads
+  // it starts; failing to lower it only costs responsiveness. Scrubbing a log keeps the
+  // normal priority: there the pictures are what the user waits for.
+  if (follow_ == Follow::growing_log) (void)setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kPreviewNice);
   std::unique_ptr<render::GlContext> context;
   std::unique_ptr<render::Renderer> renderer;
   std::unique_ptr<Session> session;
