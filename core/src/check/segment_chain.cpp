@@ -14,18 +14,30 @@ namespace {
 class SegmentLine {
  public:
   SegmentLine(const std::vector<Point>& points, std::uint32_t s, std::uint32_t e)
-      : p_(points), e_(e), a_(points[s]), b_(points[e]), dx_(b_.x - a_.x), dy_(b_.y - a_.y),
-        len2_(dx_ * dx_ + dy_ * dy_), max_cross_(1e-9 * len2_) {}
+      : p_(points), s_(s), e_(e), a_(points[s]), b_(points[e]), dx_(b_.x - a_.x), dy_(b_.y - a_.y),
+        len2_(dx_ * dx_ + dy_ * dy_), max_cross_(std::sqrt(len2_) * tolerance(a_, b_, len2_)) {}
+
+  // How far from the line a vertex may lie: 1e-9 |se|, or a few units in the last place of
+  // the endpoints' coordinates when that is more (a segment short for its coordinates,
+  // 1e-10 long at 1e10, where a rounded crossing cannot come nearer).
+  static double tolerance(const Point& a, const Point& b, double len2) {
+    const double largest = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y)});
+    const double ulp = std::nextafter(largest, std::numeric_limits<double>::infinity()) - largest;
+    return std::max(1e-9 * std::sqrt(len2), 4.0 * ulp);
+  }
 
   // Position along the segment, scaled by |se|^2: 0 at s, len2 at e.
   double along(std::uint32_t w) const { return (p_[w].x - a_.x) * dx_ + (p_[w].y - a_.y) * dy_; }
 
-  // May a chain step from a vertex at position `from` to w?
-  bool step_ok(double from, std::uint32_t w) const {
+  // May a chain step from a vertex at position `from` to w? Forward, strictly; or, with
+  // `backtrack`, by less than the tolerance backwards too: crossings rounded within an ulp
+  // of each other (many segments through nearly one point) may lie along the segment in
+  // another order than the chain of its pieces visits them.
+  bool step_ok(double from, std::uint32_t w, bool backtrack = false) const {
     const double to = along(w);
-    if (!(to > from)) return false;  // strictly forward
+    if (!(to > from) && !(backtrack && to > from - max_cross_ && w != s_)) return false;
     if (w == e_) return true;
-    if (!(to < len2_)) return false;  // an intermediate vertex must come before e
+    if (!(to < len2_) && !(backtrack && to < len2_ + max_cross_)) return false;  // an intermediate vertex comes before e
     if (orient2d(a_, b_, p_[w]) == 0.0) return true;
     // |cross| / |se| is the distance from the line; compare without dividing.
     return std::fabs(dx_ * (p_[w].y - a_.y) - dy_ * (p_[w].x - a_.x)) <= max_cross_;
@@ -33,7 +45,7 @@ class SegmentLine {
 
  private:
   const std::vector<Point>& p_;
-  std::uint32_t e_;
+  std::uint32_t s_, e_;
   Point a_, b_;
   double dx_, dy_, len2_, max_cross_;
 };
@@ -65,7 +77,7 @@ bool greedy(const SegmentLine& line, const Adjacency& adjacency, const EdgeFilte
 }
 
 // The rare case where greedy took a vertex that is within the tolerance of the line but
-// leads nowhere: search every valid chain. Whether a step is valid depends only on its
+// leads nowhere, or where the pieces step back by a rounding: search every valid chain. Whether a step is valid depends only on its
 // two ends, so plain reachability with a visited set (depth first) decides it.
 bool search(const SegmentLine& line, const Adjacency& adjacency, const EdgeFilter& allowed,
             std::uint32_t s, std::uint32_t e, std::vector<std::uint32_t>& chain) {
@@ -83,7 +95,7 @@ bool search(const SegmentLine& line, const Adjacency& adjacency, const EdgeFilte
     }
     const double at = v == s ? 0.0 : line.along(v);
     for (std::uint32_t w : adjacency.of(v))
-      if (!parent.contains(w) && line.step_ok(at, w) && allowed(v, w)) {
+      if (!parent.contains(w) && line.step_ok(at, w, true) && allowed(v, w)) {
         parent.emplace(w, v);
         stack.push_back(w);
       }

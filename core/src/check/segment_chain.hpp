@@ -17,9 +17,11 @@ struct SegmentChain {
   std::vector<std::uint32_t> vertices;
 };
 
-// A chain of mesh edges from s to e (distinct positions) in which every step moves
-// strictly forward along se and every vertex lies on se: exactly (orient2d == 0) or within
-// 1e-9 |se| of its line, which admits rounded crossing points of two segments. Only edges
+// A chain of mesh edges from s to e (distinct positions) in which every step moves forward
+// along se (or back by less than the tolerance, when no strictly forward chain exists) and
+// every vertex lies on se: exactly (orient2d == 0) or within 1e-9 |se| of its line (or 4
+// ulps of the endpoints' largest coordinate, if more), which admits rounded crossing
+// points of segments. Only edges
 // (v, w) with allowed(v, w) are used.
 using EdgeFilter = std::function<bool(std::uint32_t, std::uint32_t)>;
 SegmentChain find_segment_chain(const std::vector<Point>& points, const Adjacency& adjacency,

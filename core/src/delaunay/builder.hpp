@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <charconv>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -14,6 +16,7 @@
 #include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/delaunay/triangulation.hpp"
 #include "meshstep/error.hpp"
+#include "meshstep/geometry/magnitudes.hpp"
 
 namespace meshstep::detail {
 
@@ -21,10 +24,19 @@ inline std::string vertex_name(const Pslg& in, std::size_t i) {
   return "vertex " + std::to_string(i + in.first_index);
 }
 
+inline void validate_magnitudes(const Pslg& in);
+
+// The shortest text that reads back as v.
+inline std::string coordinate_text(double v) {
+  char buf[32];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+}
+
 inline void validate(const Pslg& in) {
   for (std::size_t i = 0; i < in.points.size(); ++i)
     if (!std::isfinite(in.points[i].x) || !std::isfinite(in.points[i].y))
       throw InputError(vertex_name(in, i) + " has a coordinate that is not a finite number");
+  validate_magnitudes(in);
   for (std::size_t s = 0; s < in.segments.size(); ++s) {
     const Segment& seg = in.segments[s];
     if (seg.a >= in.points.size() || seg.b >= in.points.size())
@@ -36,16 +48,40 @@ inline void validate(const Pslg& in) {
       throw InputError("a hole point has a coordinate that is not a finite number");
 }
 
-// Exponent e such that scaling by 2^e brings the largest coordinate near 1, when the input
-// is so large or so small that incircle's fourth powers would overflow or underflow.
-// Scaling by a power of two is exact, so it changes no predicate and the output is unscaled
-// bit for bit.
-inline int scale_exponent(const Pslg& in) {
-  double largest = 0.0;
-  for (const Point& p : in.points) largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)});
-  if (largest == 0.0) return 0;
-  const int e = std::ilogb(largest);
-  return (e > 200 || e < -200) ? -e : 0;
+// Scaling by 2^scale_exponent() brings the input into the window where the predicates are
+// exact (geometry/magnitudes.hpp); the output is unscaled bit for bit.
+inline int scale_exponent(const Pslg& in) { return magnitudes(in.points).scale_exponent(); }
+
+// The rule: the nonzero |coordinates| of the vertices, hole and region points must lie
+// within a factor 2^kSpanExponent (about 1.4e42) of each other. Beyond it, exact
+// predicates would need arbitrary-precision arithmetic; such inputs (a coordinate of 1e-300
+// among unit ones, or 1e308 among them) are refused, naming the two coordinates.
+inline void validate_magnitudes(const Pslg& in) {
+  // Points numbered as vertices, then holes, then regions.
+  std::vector<Point> region_points;
+  for (const Region& r : in.regions) region_points.push_back(r.point);
+  Magnitudes m = magnitudes(in.points);
+  m.merge(magnitudes(in.holes), in.points.size());
+  m.merge(magnitudes(region_points), in.points.size() + in.holes.size());
+  if (m.within_span()) return;
+  const auto point = [&](std::size_t i) -> const Point& {
+    if (i < in.points.size()) return in.points[i];
+    if (i < in.points.size() + in.holes.size()) return in.holes[i - in.points.size()];
+    return region_points[i - in.points.size() - in.holes.size()];
+  };
+  const auto name = [&](std::size_t i) {
+    const std::size_t holes_from = in.points.size(), regions_from = holes_from + in.holes.size();
+    if (i < holes_from) return vertex_name(in, i);
+    if (i < regions_from) return "hole point " + std::to_string(i - holes_from + in.first_index);
+    return "region point " + std::to_string(i - regions_from + in.first_index);
+  };
+  const auto at = [&](std::size_t i) {
+    return " (" + coordinate_text(point(i).x) + ", " + coordinate_text(point(i).y) + ")";
+  };
+  throw InputError("coordinates too far apart in magnitude: " + name(m.smallest_at) + at(m.smallest_at) +
+                   " has a nonzero coordinate more than 2^" + std::to_string(kSpanExponent) +
+                   " (about 1e42) times smaller than one of " + name(m.largest_at) + at(m.largest_at) +
+                   "; meshstep computes exactly only within that span (is one of them a typo, or in other units?)");
 }
 
 inline void scale_points(std::vector<Point>& points, int e) {

@@ -9,6 +9,7 @@
 //    rounded to doubles and becomes a Steiner vertex.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <stdexcept>
@@ -133,8 +134,7 @@ class SegmentInserter {
         if (z == r || z == l) {
           split_at_vertex(a, z, b, marker);
         } else {
-          tri_.set_constrained(e, false, 0);
-          markers_.erase(edge_key(r, l));
+          release(e);
           pending_.push_back({a, b, marker});  // retried once the old constraint is re-routed
           pending_.push_back({z, l, old_marker});
           pending_.push_back({r, z, old_marker});
@@ -142,25 +142,102 @@ class SegmentInserter {
         return;
       }
     }
-    markers_.erase(edge_key(r, l));
-    const VertexId v = mesh().origin(tri_.insert_on_edge(x, e));
-    ++steiner_;
-    markers_[edge_key(r, v)] = old_marker;
-    markers_[edge_key(v, l)] = old_marker;
-    if constexpr (Rec::enabled) {
-      // The halves kept the old edge's flag; record that they carry its marker too.
-      tri_.set_constrained(tri_.find_edge(r, v), true, old_marker);
-      tri_.set_constrained(tri_.find_edge(v, l), true, old_marker);
+    if (!splits_cleanly(e, x)) {
+      // Rounded off r-l far enough that splitting the edge there would fold a triangle
+      // (x close to a vertex of the two faces, or a face nearly flat): x goes in as any
+      // point does, and both constraints are recovered through it like other pieces. The
+      // old edge is released only after, so the insertion runs on a CDT (its flips mend
+      // only what the new vertex breaks).
+      const VertexId v = insert_anywhere(x, e);
+      release(tri_.find_edge(r, l));
+      pending_.push_back({v, b, marker});
+      pending_.push_back({a, v, marker});
+      pending_.push_back({v, l, old_marker});
+      pending_.push_back({r, v, old_marker});
+      return;
     }
+    const VertexId v = split_constrained(e, x, marker);
     pending_.push_back({v, b, marker});
     pending_.push_back({a, v, marker});
   }
 
+  // Unconstrains the edge of e, to be recovered in pieces through a new vertex. The mesh
+  // was a CDT with e constrained; without, e alone may fail the in-circle test, so flipping
+  // from it makes a CDT again before the pieces are recovered (Sloan's recovery keeps a
+  // CDT only when it starts from one).
+  void release(HalfEdge e) {
+    const VertexId r = mesh().origin(e), l = mesh().dest(e);
+    tri_.set_constrained(e, false, 0);
+    markers_.erase(edge_key(r, l));
+    stack_.assign(1, e);
+    tri_.make_delaunay(stack_);
+  }
+
+  // Splits the constrained edge of e at x, a point on it (or near enough that every new
+  // triangle is counterclockwise); both halves keep its marker. Returns the new vertex.
+  VertexId split_constrained(HalfEdge e, const Point& x, int unknown_marker) {
+    const VertexId r = mesh().origin(e), l = mesh().dest(e);
+    const auto existing = markers_.find(edge_key(r, l));
+    const int marker = existing != markers_.end() ? existing->second : unknown_marker;
+    markers_.erase(edge_key(r, l));
+    const VertexId v = mesh().origin(tri_.insert_on_edge(x, e));
+    ++steiner_;
+    markers_[edge_key(r, v)] = marker;
+    markers_[edge_key(v, l)] = marker;
+    if constexpr (Rec::enabled) {
+      // The halves kept the old edge's flag; record that they carry its marker too.
+      tri_.set_constrained(tri_.find_edge(r, v), true, marker);
+      tri_.set_constrained(tri_.find_edge(v, l), true, marker);
+    }
+    return v;
+  }
+
+  // Would splitting the edge of e (r -> l) at x leave every new triangle counterclockwise?
+  // True for a point on the open edge; a rounded one may be off it by an ulp or so, which
+  // matters only when a face is nearly flat or x is nearly on one of its other sides.
+  bool splits_cleanly(HalfEdge e, const Point& x) const {
+    const VertexId r = mesh().origin(e), l = mesh().dest(e);
+    for (const HalfEdge side : {e, mesh().twin(e)}) {
+      const VertexId from = mesh().origin(side), to = mesh().dest(side), apex = mesh().apex(side);
+      if (apex == kInfiniteVertex) {
+        if (orient2d(P(r), P(l), x) != 0.0) return false;  // the hull would bend at x
+        continue;
+      }
+      if (!(orient2d(P(from), x, P(apex)) > 0.0 && orient2d(x, P(to), P(apex)) > 0.0)) return false;
+    }
+    return true;
+  }
+
+  // Inserts x by point location and flips (constrained edges kept), or finds the vertex
+  // already there. Returns the vertex at x.
+  VertexId insert_anywhere(const Point& x, HalfEdge near) {
+    const auto at = tri_.locate(x, near);
+    if (at.kind == Location::Kind::on_vertex) return mesh().origin(at.half_edge);
+    if (at.kind == Location::Kind::on_edge && mesh().is_constrained(at.half_edge))
+      return split_constrained(at.half_edge, x, 0);  // exactly on another constraint
+    const VertexId v = tri_.add_point(x);
+    tri_.insert_in_step(v, at.half_edge);
+    ++steiner_;
+    return v;
+  }
+
+  // The crossing of a-b and r-l, rounded. Measured along the shorter segment from its end
+  // nearer the crossing (the parameter's rounding error is multiplied by the distance
+  // travelled, which a segment 1e16 long would turn into whole units), then kept within
+  // both segments' boxes, where the exact crossing lies.
   static Point intersection(const Point& a, const Point& b, const Point& r, const Point& l) {
-    const double dx = b.x - a.x, dy = b.y - a.y;
-    const double ex = l.x - r.x, ey = l.y - r.y;
-    const double t = ((r.x - a.x) * ey - (r.y - a.y) * ex) / (dx * ey - dy * ex);
-    return {a.x + t * dx, a.y + t * dy};
+    const auto length2 = [](const Point& p, const Point& q) {
+      return (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y);
+    };
+    const bool along_ab = length2(a, b) <= length2(r, l);
+    const Point &p = along_ab ? a : r, &q = along_ab ? b : l;
+    const Point &u = along_ab ? r : a, &w = along_ab ? l : b;
+    const double dx = q.x - p.x, dy = q.y - p.y, ex = w.x - u.x, ey = w.y - u.y;
+    const double t = ((u.x - p.x) * ey - (u.y - p.y) * ex) / (dx * ey - dy * ex);
+    Point x = t <= 0.5 ? Point{p.x + t * dx, p.y + t * dy} : Point{q.x - (1.0 - t) * dx, q.y - (1.0 - t) * dy};
+    x.x = std::clamp(x.x, std::max(std::min(a.x, b.x), std::min(r.x, l.x)), std::min(std::max(a.x, b.x), std::max(r.x, l.x)));
+    x.y = std::clamp(x.y, std::max(std::min(a.y, b.y), std::min(r.y, l.y)), std::min(std::max(a.y, b.y), std::max(r.y, l.y)));
+    return x;
   }
 
   // Sloan's loop: flip crossing edges whose quadrilateral is convex until none crosses.
