@@ -315,6 +315,10 @@ int run_refine(const RefineArgs& args) {
   if (report.unsplittable_segments)
     print_warning(verbosity, args.input + ": " + std::to_string(report.unsplittable_segments) +
                                  " segment splits refused (subsegments too short to split in floating point)");
+  if (report.points_out_of_range)
+    print_warning(verbosity, args.input + ": " + std::to_string(report.points_out_of_range) +
+                                 " bad triangles left as they are: their new point would have a coordinate below "
+                                 "2^-140 of the largest, outside the range meshstep computes exactly in");
 
   const AngleStats angles = angle_stats(mesh);
   if (verbosity != Verbosity::quiet) {

@@ -38,7 +38,8 @@ class LeppBisector {
   // The criteria come with set_criteria(), before each run().
   LeppBisector(Triangulation<Mesh, Rec>& tri, const std::vector<Segment>& boundary, std::size_t input_count,
                const RefineOptions& options)
-      : tri_(tri), mesh_(tri.mesh()), input_count_(input_count), options_(options) {
+      : tri_(tri), mesh_(tri.mesh()), input_count_(input_count), options_(options),
+        exact_range_(std::span<const Point>(tri.points()).first(input_count)) {
     for (const Segment& s : boundary) markers_[edge_tie_key(s.a, s.b)] = s.marker;
   }
 
@@ -148,7 +149,7 @@ class LeppBisector {
     const VertexId a = mesh_.origin(e), b = mesh_.dest(e);
     const Point &pa = point(a), &pb = point(b);
     const Point m{(pa.x + pb.x) / 2.0, (pa.y + pb.y) / 2.0};
-    if (!splits_cleanly(e, m)) {
+    if (!splits_cleanly(e, m) || !exact_range_.holds(m)) {
       ++unsplittable_;
       return false;
     }
@@ -200,6 +201,7 @@ class LeppBisector {
   std::vector<FaceId> path_, new_faces_;
   std::vector<VertexId> path_vertices_;
   std::size_t bisections_ = 0, segment_splits_ = 0, unsplittable_ = 0;
+  ExactRange exact_range_;
 };
 
 }  // namespace meshstep::detail

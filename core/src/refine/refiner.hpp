@@ -45,7 +45,8 @@ class Refiner {
   // The criteria come with set_criteria(), before each run().
   Refiner(Triangulation<Mesh, Rec>& tri, const std::vector<Segment>& boundary, std::size_t input_count,
           const RefineOptions& options)
-      : tri_(tri), mesh_(tri.mesh()), input_count_(input_count), options_(options) {
+      : tri_(tri), mesh_(tri.mesh()), input_count_(input_count), options_(options),
+        exact_range_(std::span<const Point>(tri.points()).first(input_count)) {
     for (const Segment& s : boundary) subsegments_[key(s.a, s.b)] = {s.marker, s.a, s.b};
     on_segment_.assign(tri_.points().size(), {kNone, kNone});
     find_small_input_angles(boundary);
@@ -99,6 +100,7 @@ class Refiner {
     report.triangles_split = triangles_split_;
     report.rejected_points = rejected_;
     report.unsplittable_segments = unsplittable_;
+    report.points_out_of_range = out_of_range_;
     report.stopped_by_cap = capped();
     assess(report);
   }
@@ -480,6 +482,10 @@ class Refiner {
   void fix(const Candidate& c) {
     Point alternative;
     const Point p = select(c, alternative);
+    if (!exact_range_.holds(p)) {  // left as it is, like a triangle at a small input angle
+      ++out_of_range_;
+      return;
+    }
     // A Lepp point is located from its terminal triangle: the straight line from the bad
     // triangle to it may cross a segment that the path went around.
     const WalkResult w = walk(lepp_selection() ? lepp_faces_.back() : c.face, p);
@@ -529,7 +535,7 @@ class Refiner {
   bool split_segment(HalfEdge h, VertexId by_vertex, const Point* by_point) {
     const VertexId a = mesh_.origin(h), b = mesh_.dest(h);
     const Point p = split_point(a, b);
-    if (!splits_cleanly(h, p)) {
+    if (!splits_cleanly(h, p) || !exact_range_.holds(p)) {
       ++unsplittable_;
       return false;
     }
@@ -760,6 +766,8 @@ class Refiner {
   VertexRemover<Mesh, Rec> remover_{tri_};
   std::unordered_set<std::uint64_t> recreated_;  // hashes of triangles a split's flips made (collisions: a search more)
   std::size_t segment_splits_ = 0, triangles_split_ = 0, rejected_ = 0, unsplittable_ = 0, removed_ = 0;
+  std::size_t out_of_range_ = 0;  // points refused for coordinates below the exact range
+  ExactRange exact_range_;
 };
 
 }  // namespace meshstep::detail

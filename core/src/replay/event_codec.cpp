@@ -301,6 +301,18 @@ std::uint32_t Decoder::u32(const char* what) {
   return static_cast<std::uint32_t>(v);
 }
 
+namespace {
+
+// base + the zigzag-coded difference, which must land in [0, limit). The difference is
+// checked before it is added: a damaged log's can be anything up to 2^63.
+std::uint32_t offset_id(std::uint32_t base, std::uint64_t zigzag_code, std::uint32_t limit, const char* what) {
+  const std::int64_t delta = unzigzag(zigzag_code);
+  if (delta < -std::int64_t{base} || delta >= std::int64_t{limit} - std::int64_t{base}) throw FormatError(what);
+  return static_cast<std::uint32_t>(std::int64_t{base} + delta);
+}
+
+}  // namespace
+
 std::uint32_t Decoder::vertex() {
   const std::uint64_t code = varint();
   if (code == 0) return kNone;
@@ -310,9 +322,7 @@ std::uint32_t Decoder::vertex() {
     if (v == kNone) throw FormatError("vertex refers to an empty cache slot");
     return v;
   }
-  const std::int64_t v = std::int64_t{state_.last_vertex} + unzigzag(code - kFullVertex);
-  if (v < 0 || v >= std::int64_t{kInfiniteVertex}) throw FormatError("vertex id out of range");
-  state_.last_vertex = static_cast<std::uint32_t>(v);
+  state_.last_vertex = offset_id(state_.last_vertex, code - kFullVertex, kInfiniteVertex, "vertex id out of range");
   state_.cache[state_.last_vertex % CoderState::kCache] = state_.last_vertex;
   return state_.last_vertex;
 }
@@ -335,10 +345,7 @@ std::uint32_t Decoder::id(IdKind kind) {
       std::uint32_t& ref = kind == IdKind::slot ? state_.slot_ref : state_.input_ref;
       const std::uint64_t code = varint();
       if (code == 0) return kNone;
-      const std::int64_t v = std::int64_t{ref} + unzigzag(code - 1);
-      if (v < 0 || v >= std::int64_t{kNone})
-        throw FormatError(kind == IdKind::slot ? "face slot out of range" : "input index out of range");
-      ref = static_cast<std::uint32_t>(v);
+      ref = offset_id(ref, code - 1, kNone, kind == IdKind::slot ? "face slot out of range" : "input index out of range");
       return ref;
     }
   }

@@ -93,7 +93,7 @@ void Decompressor::decompress(std::span<const std::uint8_t> stored, std::size_t 
                               std::vector<std::uint8_t>& out) {
   out.resize(raw_size);
   if (stored.size() == raw_size) {  // stored as is
-    std::memcpy(out.data(), stored.data(), raw_size);
+    if (raw_size) std::memcpy(out.data(), stored.data(), raw_size);  // (an empty vector's data() may be null)
     return;
   }
   const std::size_t n = ZSTD_decompressDCtx(static_cast<ZSTD_DCtx*>(context_), out.data(),

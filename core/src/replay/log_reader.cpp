@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -201,6 +202,12 @@ void LogReader::scan_blocks() {
     at += format::kBlockHeaderSize + h.stored_size;
   }
 
+  std::uint64_t declared = 0;
+  for (const BlockSlot& slot : slots)
+    if (slot.header.kind == format::BlockKind::events) declared += std::min<std::uint64_t>(slot.header.count, UINT32_MAX);
+  const std::uint64_t inputs = std::strtoull(parameter("input_vertices", "0").c_str(), nullptr, 10);
+  vertex_bound_ = std::min<std::uint64_t>(kInfiniteVertex, std::min<std::uint64_t>(inputs, UINT32_MAX) + declared + 3);
+
   // Then the blocks in batches: decoded two at a time (this thread and a helper), indexed
   // in file order. A million-point triangulation's log (430 blocks) opens in about half the
   // time it took one thread.
@@ -271,6 +278,18 @@ void LogReader::index_events(std::size_t block, const DecodedEvents& events) {
     const std::uint64_t e = event_count_ + i;
     const EventHead& h = events.heads[i];
     ++counts_[static_cast<std::size_t>(h.type)];
+    for (const SlotWrite& w : events.writes_of(i)) {
+      if (w.slot > slot_bound_)
+        throw InputError(path_, 0, where(block) + ": event " + std::to_string(e) + " writes face slot " +
+                                       std::to_string(w.slot) + ", but only " + std::to_string(slot_bound_) +
+                                       " slots were made before it (the file is corrupted)");
+      if (w.slot == slot_bound_) ++slot_bound_;
+      for (const FaceRecord* r : {&w.before, &w.after})
+        for (const VertexId v : r->v)
+          if (v != kNone && v != kInfiniteVertex && v >= vertex_bound_)
+            throw InputError(path_, 0, where(block) + ": event " + std::to_string(e) + " names vertex " +
+                                           std::to_string(v) + ", more than the log can introduce (the file is corrupted)");
+    }
     if (keep_writes_) {
       const auto w = events.writes_of(i);
       reserve_huge(writes_, writes_.size() + w.size());
@@ -295,7 +314,9 @@ void LogReader::index_events(std::size_t block, const DecodedEvents& events) {
     }
     if (h.type == EventType::vertex || h.type == EventType::duplicate) {
       const VertexId v = h.ids[0];
-      if (v >= kInfiniteVertex) throw InputError(path_, 0, where(block) + ": event " + std::to_string(e) + " introduces an invalid vertex id");
+      if (v >= vertex_bound_)
+        throw InputError(path_, 0, where(block) + ": event " + std::to_string(e) + " introduces vertex " + std::to_string(v) +
+                                       ", more than the log can introduce (the file is corrupted)");
       if (v >= vertices_.size()) {
         reserve_huge(vertices_, std::size_t{v} + 1);
         vertices_.resize(std::size_t{v} + 1, VertexInfo{{0, 0}, kNone, kNone, kNone, UINT64_MAX});

@@ -101,6 +101,9 @@ struct RefineReport {
   std::size_t rejected_points = 0;       // selected points that encroached (a segment split instead)
   std::size_t skipped_small_angle = 0;   // bad triangles left alone by rule (quality::cannot_improve)
   std::size_t unsplittable_segments = 0; // splits refused: the subsegment is a few ulps long
+                                         // (or its point would leave the exact range)
+  std::size_t points_out_of_range = 0;   // bad triangles left: their point would have a
+                                         // coordinate below 2^-140 of the largest
   std::size_t removed_vertices = 0;      // Steiner vertices removed again (improvement, deletion near
                                          // split segments); not in steiner_vertices
   bool stopped_by_cap = false;           // max_triangles or max_steiner reached

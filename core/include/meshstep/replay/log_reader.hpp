@@ -138,6 +138,12 @@ class LogReader {
   bool complete_ = false;
   std::string incomplete_reason_;
   std::uint64_t event_count_ = 0;
+  // What a damaged log is held to before its ids are used (index_events): a vertex id
+  // below the input's vertices plus the events the blocks declare (each introduces at most
+  // one), and face slots made one after the other (a write names a slot already made, or
+  // the next one).
+  std::uint64_t vertex_bound_ = 0;
+  std::uint64_t slot_bound_ = 0;
   std::uint64_t final_hash_ = 0;
   std::array<std::uint64_t, kEventTypeCount> counts_{};
   std::vector<std::uint64_t> step_starts_;
