@@ -20,6 +20,7 @@
 #include "meshstep/refine/refine.hpp"
 #include "meshstep/refine/registry.hpp"
 #include "meshstep/replay/log_writer.hpp"
+#include "memory_budget.hpp"
 #include "output_prefix.hpp"
 #include "record_option.hpp"
 
@@ -48,6 +49,8 @@ struct RefineArgs {
   std::string record;
   std::string stats;
   bool no_output = false;
+  std::string max_memory;  // empty: default_memory_budget()
+  bool write_partial = false;
   bool quiet = false;
   bool verbose = false;
   // Which bounds the command line gave (the defaults above mean "none").
@@ -198,6 +201,30 @@ int run_refine(const RefineArgs& args) {
   // Without a bound on the command line, a re-refined mesh's PREFIX.area (as with Triangle's
   // -r -a) or a .poly's regional areas may still give one: the latter is known only once the
   // input is read.
+  // The memory budget, as a triangle cap (unless the user's own cap is lower).
+  std::uint64_t budget = default_memory_budget();
+  if (!args.max_memory.empty()) {
+    const std::optional<std::uint64_t> parsed = parse_memory(args.max_memory);
+    if (!parsed) {
+      print_error("--max-memory " + args.max_memory + ": expected a size such as 8G, 500M or 123456 (bytes), or none");
+      return kExitUsage;
+    }
+    budget = *parsed;
+  }
+  const std::size_t budget_triangles = budget ? std::max<std::uint64_t>(budget / kBytesPerTriangle, 1000) : 0;
+  const bool budget_caps = budget_triangles && (!criteria.max_triangles || criteria.max_triangles > budget_triangles);
+  const std::string budget_words = "the memory budget (" + memory_text(budget) + ", about " +
+                                   std::to_string(budget_triangles) + " triangles; --max-memory to change)";
+  // Delaunay refinement is proven to end only to 20.7 degrees (Ruppert) or 28.6 (Shewchuk),
+  // and ends in practice to about 34, as Triangle's documentation says of its own.
+  constexpr double kKnownToEnd = 34.0;
+  if (criteria.min_angle_deg > kKnownToEnd && options.insertion != RefineInsertion::bisection)
+    print_warning(verbosity, "--min-angle " + number(criteria.min_angle_deg) + " is above about " + number(kKnownToEnd) +
+                                 " degrees, past which Delaunay refinement is not known to end" +
+                                 (budget_caps ? ": it stops at " + budget_words
+                                              : criteria.max_triangles || criteria.max_steiner ? ": it stops at your cap"
+                                                                                               : " (and no cap is set)"));
+
   const bool no_bound = criteria.min_angle_deg <= 0.0 && criteria.max_angle_deg >= 180.0 &&
                         criteria.max_aspect <= 0.0 && criteria.max_area <= 0.0 && !criteria.size && !area_file;
   const auto refuse_without_bound = [&] {
@@ -232,6 +259,7 @@ int run_refine(const RefineArgs& args) {
   TriMesh mesh;
   RefineReport report;
   double read_ms = 0, write_ms = 0;
+  bool stopped_by_budget = false;
   std::size_t input_vertices = 0, input_segments = 0;
   try {
     TriMesh old;  // the mesh to re-refine
@@ -256,6 +284,8 @@ int run_refine(const RefineArgs& args) {
                                "degrees they often do not); stopping at " + std::to_string(cap) +
                                    " Steiner vertices (--max-steiner to change)");
     }
+    // After the cap above, which a user's cap (and so the budget's) would have turned off.
+    if (budget_caps) criteria.max_triangles = budget_triangles;
     note(verbosity, "triangulating and refining " + std::to_string(input_vertices) + " vertices, " +
                         std::to_string(input_segments) + " segments: " + options.algorithm + " (selection " +
                         to_string(options.selection) + ", " + to_string(options.order) + " order, " +
@@ -290,7 +320,8 @@ int run_refine(const RefineArgs& args) {
     mesh = re_refine ? refine_mesh(old, options, &report) : refine(std::move(input), options, &report);
     clock.lap_ms();  // refine() times its own phases (report.triangulate_ms, refine_ms)
     for (const std::string& w : report.triangulation.warnings) print_warning(verbosity, args.input + ": " + w);
-    if (!args.no_output) {
+    stopped_by_budget = report.stopped_by_cap && budget_caps && mesh.triangles.size() >= budget_triangles;
+    if (!args.no_output && (!stopped_by_budget || args.write_partial)) {
       print_progress(verbosity, "writing " + prefix + ".node/.ele/.poly");
       io::write_mesh(prefix, mesh);
       write_ms = clock.lap_ms();
@@ -305,7 +336,16 @@ int run_refine(const RefineArgs& args) {
     return kExitBadInput;
   }
 
-  if (report.stopped_by_cap) {
+  if (stopped_by_budget) {
+    const std::string what = args.input + ": refinement stopped at " + budget_words + " with " +
+                             std::to_string(report.bad_triangles) + " of its " + std::to_string(mesh.triangles.size()) +
+                             " triangles still failing the bounds";
+    if (!args.write_partial) {
+      print_error(what + "; nothing written (--write-partial writes the mesh reached)");
+      return kExitBadInput;
+    }
+    print_warning(verbosity, what + "; written as it is (--write-partial)");
+  } else if (report.stopped_by_cap) {
     const bool triangle_cap = criteria.max_triangles && mesh.triangles.size() >= criteria.max_triangles;
     print_warning(verbosity, args.input + ": refinement stopped at the " +
                                  (triangle_cap ? "--max-triangles " + std::to_string(criteria.max_triangles)
@@ -489,6 +529,14 @@ Command add_refine_command(CLI::App& parent) {
                   "stopped_by_cap, min_angle, max_angle, ms.read/triangulate/refine/write, ...)")
       ->check(CLI::IsMember({"json"}));
   cmd->add_flag("--no-output", args->no_output, "Refine but write no mesh files (for timing)");
+  cmd->add_option("--max-memory", args->max_memory,
+                  "Stop before the run takes more memory than SIZE (8G, 500M, ...; none: no\n"
+                  "budget). Default: a quarter of this machine's memory. A run stopped there\n"
+                  "writes nothing unless --write-partial (exit 1)")
+      ->type_name("SIZE");
+  cmd->add_flag("--write-partial", args->write_partial,
+                "When the memory budget stops the run, write the mesh reached (valid, with\n"
+                "triangles that fail the bounds left in it)");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors (and --stats)");
   cmd->add_flag("-v,--verbose", args->verbose, "Also print refinement counts, timings and the record summary");
   cmd->footer(

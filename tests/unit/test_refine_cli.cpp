@@ -451,5 +451,32 @@ TEST_F(RefineCli, HelpExplains) {
   EXPECT_TRUE(contains(top.out, "list")) << top.out;
 }
 
+// A bound no refinement reaches (59 degrees on plate.poly): a warning before it starts, a
+// stop at the memory budget (here 40 MB, about 400,000 triangles) with nothing written and
+// exit 1; with --write-partial, the valid mesh reached; a budget that is not a size is a
+// usage error.
+TEST_F(RefineCli, AnUnreachableBoundStopsAtTheMemoryBudget) {
+  const std::string plate = std::string(MESHSTEP_ASSETS) + "/examples/plate.poly";
+  const std::string out = dir_.file("p59");
+  const CommandResult r = meshstep("refine " + plate + " --min-angle 59 --max-memory 40M -o " + out);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "--min-angle 59 is above about 34 degrees")) << r.err;
+  EXPECT_TRUE(contains(r.err, "stopped at the memory budget (40 MB, about 419430 triangles")) << r.err;
+  EXPECT_TRUE(contains(r.err, "nothing written")) << r.err;
+  EXPECT_FALSE(fs::exists(out + ".node"));
+  EXPECT_FALSE(fs::exists(out + ".ele"));
+
+  const CommandResult partial = meshstep("refine " + plate + " --min-angle 59 --max-memory 40M --write-partial -o " + out);
+  ASSERT_EQ(partial.status, 0) << partial.err;
+  EXPECT_TRUE(contains(partial.err, "written as it is (--write-partial)")) << partial.err;
+  const CommandResult check = meshstep("check " + out + " --poly " + plate);
+  EXPECT_EQ(check.status, 0) << check.out << check.err;
+  EXPECT_TRUE(contains(check.out, "ok (")) << check.out;
+
+  const CommandResult bad = meshstep("refine " + plate + " --min-angle 30 --max-memory lots");
+  EXPECT_EQ(bad.status, 2) << bad.err;
+  EXPECT_TRUE(contains(bad.err, "--max-memory lots: expected a size")) << bad.err;
+}
+
 }  // namespace
 }  // namespace meshstep

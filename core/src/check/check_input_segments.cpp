@@ -3,14 +3,14 @@
 //
 // One exception: a segment with no such chain is accepted when it passes through no
 // triangle, i.e. it lies (partly) outside the meshed domain, in a hole or outside the
-// outer boundary, where the triangulator removed all triangles. The pieces it does have
-// inside the domain must still be listed.
+// outer boundary, where the triangulator removed all triangles.
 #include <algorithm>
 
 #include "check/segment_chain.hpp"
 #include "check/segment_crossing.hpp"
 #include "check/stages.hpp"
 #include "check/vertex_adjacency.hpp"
+#include "meshstep/geometry/predicates.hpp"
 
 namespace meshstep::check_detail {
 namespace {
@@ -54,11 +54,22 @@ class SegmentCheck {
       });
       return;
     }
-    // Outside the domain, at least in part: what it has inside must be listed, as far as
-    // it reaches from either end.
+    // Outside the domain, at least in part (it passes through no triangle): what it has
+    // inside must be listed, as far as it reaches from either end, where its pieces lie
+    // exactly on its line. Within the tolerance alone, a walk from an end cannot tell
+    // pieces from other edges near a long segment that leaves the domain at a glancing
+    // angle (one 1e7 long admits vertices 1e-2 off its line).
     if (!listing) return;
-    if (s) check_listed(k, find_segment_chain(p, adjacency_, from, to, any_).vertices);
-    if (e) check_listed(k, find_segment_chain(p, adjacency_, to, from, any_).vertices);
+    if (s) check_listed(k, exactly_on(from, to, find_segment_chain(p, adjacency_, from, to, any_).vertices));
+    if (e) check_listed(k, exactly_on(to, from, find_segment_chain(p, adjacency_, to, from, any_).vertices));
+  }
+
+  // The chain up to its first vertex off the line from a to b (orient2d != 0).
+  std::vector<std::uint32_t> exactly_on(std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t> chain) const {
+    const auto& p = facts_.mesh.points;
+    const auto off = std::find_if(chain.begin(), chain.end(), [&](std::uint32_t v) { return orient2d(p[a], p[b], p[v]) != 0.0; });
+    chain.erase(off, chain.end());
+    return chain;
   }
 
  private:
