@@ -452,7 +452,7 @@ TEST_F(RefineCli, HelpExplains) {
 }
 
 // A bound no refinement reaches (59 degrees on plate.poly): a warning before it starts, a
-// stop at the memory budget (here 40 MB, about 400,000 triangles) with nothing written and
+// stop at the memory budget (here 40 MB, about 260,000 triangles) with nothing written and
 // exit 1; with --write-partial, the valid mesh reached; a budget that is not a size is a
 // usage error.
 TEST_F(RefineCli, AnUnreachableBoundStopsAtTheMemoryBudget) {
@@ -461,7 +461,7 @@ TEST_F(RefineCli, AnUnreachableBoundStopsAtTheMemoryBudget) {
   const CommandResult r = meshstep("refine " + plate + " --min-angle 59 --max-memory 40M -o " + out);
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_TRUE(contains(r.err, "--min-angle 59 is above about 34 degrees")) << r.err;
-  EXPECT_TRUE(contains(r.err, "stopped at the memory budget (40 MB, about 419430 triangles")) << r.err;
+  EXPECT_TRUE(contains(r.err, "stopped at the memory budget (40 MB, about 262144 triangles")) << r.err;
   EXPECT_TRUE(contains(r.err, "nothing written")) << r.err;
   EXPECT_FALSE(fs::exists(out + ".node"));
   EXPECT_FALSE(fs::exists(out + ".ele"));
