@@ -874,8 +874,8 @@ TEST(ReplayKeyframePolicy, Defaults) {
 
 // A run long enough for the default policy to take a keyframe during it (about seven
 // events per point: past 65536 events, while 2 x live faces is still fewer). The observer
-// costs steps x slots, so no larger.
-TEST(ReplayKeyframePolicy, DefaultPolicyOnALargerRun) {
+// costs steps x slots, so no larger. "Slow": 25 s under the sanitizers, left out of that pass.
+TEST(ReplayKeyframePolicy, DefaultPolicyOnALargerRunSlow) {
   TempDir dir("meshstep_replay_");
   const Pslg in = point_set(uniform(10000, 57));
   const TriangulateOptions options;
@@ -889,7 +889,8 @@ TEST(ReplayKeyframePolicy, DefaultPolicyOnALargerRun) {
 
 // A log too big to keep its writes decoded reads them from its blocks: the same run, the
 // same meshes everywhere (keyframes, blocks' ends and middles, forward and backward).
-TEST(ReplayWritesFromBlocks, ReplaysTheSameMeshesAsWritesKeptInMemory) {
+// "Slow": 27 s under the sanitizers, left out of that pass.
+TEST(ReplayWritesFromBlocks, ReplaysTheSameMeshesAsWritesKeptInMemorySlow) {
   TempDir dir("meshstep_replay_");
   const Pslg in = point_set(uniform(10000, 58));
   const TriangulateOptions options;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <charconv>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -408,6 +409,11 @@ class Builder {
       if (!m.is_live(f)) continue;
       const HalfEdge h = m.half_edge(f);
       if (options_.compute_neighbors) index_of[f] = static_cast<std::uint32_t>(out.triangles.size());
+      // The cheap part of the checker, always: every triangle made is counterclockwise
+      // (exactly, in the scaled coordinates), else no mesh at all. One orient2d a triangle,
+      // settled by its filter: about 1% of a triangulation's time.
+      if (!(orient2d(tri_.point(m.origin(h)), tri_.point(m.dest(h)), tri_.point(m.apex(h))) > 0.0))
+        throw std::logic_error("the mesh made has a triangle that is not counterclockwise (face " + std::to_string(f) + ")");
       out.triangles.push_back({external(m.origin(h)), external(m.dest(h)), external(m.apex(h))});
       if (!in_.regions.empty()) {
         out.triangle_attributes.push_back(attribute_[f]);
