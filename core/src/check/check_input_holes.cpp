@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 
+#include "check/segment_chain.hpp"
 #include "check/stages.hpp"
 #include "meshstep/geometry/predicates.hpp"
 
@@ -17,8 +18,7 @@ namespace {
 // Is h a hair inside the triangle, next to one of its edges that is a segment (or the
 // boundary carving left)? A hole point on the boundary line is fine (the hole eats one
 // side), and refinement splits such an edge at a rounded point, which may move the line by
-// an ulp across h. Within 1e-9 of the edge's length (or 4 ulps of its coordinates), as the
-// segment chains allow.
+// an ulp across h. Within the segment chains' line_tolerance.
 bool near_a_listed_edge(const MeshFacts& facts, const std::array<std::uint32_t, 3>& tri, const Point& h) {
   if (facts.mesh.segments.empty()) return false;
   const auto& p = facts.mesh.points;
@@ -26,10 +26,7 @@ bool near_a_listed_edge(const MeshFacts& facts, const std::array<std::uint32_t, 
     const std::uint32_t u = tri[i], v = tri[(i + 1) % 3];
     if (!facts.is_listed(u, v)) continue;
     const double dx = p[v].x - p[u].x, dy = p[v].y - p[u].y, length = std::hypot(dx, dy);
-    const double largest = std::max({std::fabs(p[u].x), std::fabs(p[u].y), std::fabs(p[v].x), std::fabs(p[v].y)});
-    const double ulp = std::nextafter(largest, INFINITY) - largest;
-    const double tolerance = std::max(1e-9 * length, 4.0 * ulp);
-    if (std::fabs(dx * (h.y - p[u].y) - dy * (h.x - p[u].x)) <= tolerance * length) return true;
+    if (std::fabs(dx * (h.y - p[u].y) - dy * (h.x - p[u].x)) <= line_tolerance(p[u], p[v]) * length) return true;
   }
   return false;
 }

@@ -8,6 +8,13 @@
 #include "meshstep/geometry/predicates.hpp"
 
 namespace meshstep::check_detail {
+
+double line_tolerance(const Point& a, const Point& b) {
+  const double largest = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y)});
+  const double ulp = std::nextafter(largest, std::numeric_limits<double>::infinity()) - largest;
+  return std::max(1e-9 * std::hypot(b.x - a.x, b.y - a.y), 4.0 * ulp);
+}
+
 namespace {
 
 // The segment se and the rule for one step of a chain along it.
@@ -15,16 +22,7 @@ class SegmentLine {
  public:
   SegmentLine(const std::vector<Point>& points, std::uint32_t s, std::uint32_t e)
       : p_(points), s_(s), e_(e), a_(points[s]), b_(points[e]), dx_(b_.x - a_.x), dy_(b_.y - a_.y),
-        len2_(dx_ * dx_ + dy_ * dy_), max_cross_(std::sqrt(len2_) * tolerance(a_, b_, len2_)) {}
-
-  // How far from the line a vertex may lie: 1e-9 |se|, or a few units in the last place of
-  // the endpoints' coordinates when that is more (a segment short for its coordinates,
-  // 1e-10 long at 1e10, where a rounded crossing cannot come nearer).
-  static double tolerance(const Point& a, const Point& b, double len2) {
-    const double largest = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y)});
-    const double ulp = std::nextafter(largest, std::numeric_limits<double>::infinity()) - largest;
-    return std::max(1e-9 * std::sqrt(len2), 4.0 * ulp);
-  }
+        len2_(dx_ * dx_ + dy_ * dy_), max_cross_(std::sqrt(len2_) * line_tolerance(a_, b_)) {}
 
   // Position along the segment, scaled by |se|^2: 0 at s, len2 at e.
   double along(std::uint32_t w) const { return (p_[w].x - a_.x) * dx_ + (p_[w].y - a_.y) * dy_; }

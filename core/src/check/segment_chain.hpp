@@ -23,6 +23,11 @@ struct SegmentChain {
 // ulps of the endpoints' largest coordinate, if more), which admits rounded crossing
 // points of segments. Only edges
 // (v, w) with allowed(v, w) are used.
+// How far from the line through a and b a vertex may lie and still count as on it: 1e-9
+// of |ab|, or 4 ulps of a's and b's largest coordinate when that is more (a segment short
+// for its coordinates, 1e-10 long at 1e10, where a rounded crossing cannot come nearer).
+double line_tolerance(const Point& a, const Point& b);
+
 using EdgeFilter = std::function<bool(std::uint32_t, std::uint32_t)>;
 SegmentChain find_segment_chain(const std::vector<Point>& points, const Adjacency& adjacency,
                                 std::uint32_t s, std::uint32_t e, const EdgeFilter& allowed);
