@@ -37,4 +37,11 @@ inline CommandResult run_meshstep(const std::string& args, const std::filesystem
   return r;
 }
 
+// Whether ffmpeg and ffprobe are installed and start. An installed ffmpeg can still fail to
+// start: CI once had one that could not load libblas.so.3. The video tests skip then, saying so.
+inline bool ffmpeg_works() {
+  return std::system("ffmpeg -hide_banner -version >/dev/null 2>&1") == 0 &&
+         std::system("ffprobe -hide_banner -version >/dev/null 2>&1") == 0;
+}
+
 }  // namespace meshstep::testing

@@ -8,6 +8,7 @@
 
 #include "export_job.hpp"
 #include "golden_runs.hpp"
+#include "run_cli.hpp"
 
 namespace meshstep::viewer {
 namespace {
@@ -20,7 +21,7 @@ TEST(ViewerExport, NamesFilesBesideTheLog) {
 }
 
 TEST(ViewerExport, WritesAVideoOfARangeInTheBackground) {
-  if (std::system("command -v ffmpeg > /dev/null") != 0) GTEST_SKIP() << "ffmpeg is not installed";
+  if (!testing::ffmpeg_works()) GTEST_SKIP() << "ffmpeg is not installed, or does not start";
   const replay::LogReader* log = golden::lesson_run("--algorithm offcenter --min-angle 30");
   ASSERT_NE(log, nullptr);
   const fs::path out = fs::temp_directory_path() / ("viewer_export_" + std::to_string(::getpid()) + ".mp4");

@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "meshstep/delaunay/invariants.hpp"
 #include "meshstep/delaunay/segment_insertion.hpp"
 #include "meshstep/delaunay/spatial_sort.hpp"
 #include "meshstep/delaunay/triangulate.hpp"
@@ -142,10 +143,12 @@ class Builder {
     report_.steiner_vertices = tri_.points().size() - input_count;
     report_.split_segments = segments_.split_count();
     report_.mesh_bytes = tri_.mesh().memory_bytes();
+    check_whole_triangulation(tri_);
     rec.phase_begin(replay::Phase::carve);
     rec.step_begin(tri_.mesh(), replay::StepKind::carve);
     carve();
     rec.phase_end(replay::Phase::carve);
+    built_vertices_ = tri_.points().size();
   }
 
   // Ends the recording and converts the mesh (releasing the data structure).
@@ -402,6 +405,11 @@ class Builder {
     out.regions = in_.regions;
     out.has_segment_markers = in_.has_segment_markers;
 
+    // Every vertex an algorithm added after carving is a corner of a triangle (a crossing
+    // point of two segments outside the domain may not be: it went with the outside).
+    std::vector<bool> cornered(tri_.points().size(), false);
+    for (VertexId v = 0; v < built_vertices_; ++v) cornered[v] = true;
+    for (const VertexId v : tri_.removed_vertices()) cornered[v] = true;
     std::vector<std::uint32_t> index_of;
     if (options_.compute_neighbors) index_of.assign(m.face_capacity(), kNoIndex);
     out.triangles.reserve(m.face_count());
@@ -415,11 +423,15 @@ class Builder {
       if (!(orient2d(tri_.point(m.origin(h)), tri_.point(m.dest(h)), tri_.point(m.apex(h))) > 0.0))
         throw std::logic_error("the mesh made has a triangle that is not counterclockwise (face " + std::to_string(f) + ")");
       out.triangles.push_back({external(m.origin(h)), external(m.dest(h)), external(m.apex(h))});
+      cornered[m.origin(h)] = cornered[m.dest(h)] = cornered[m.apex(h)] = true;
       if (!in_.regions.empty()) {
         out.triangle_attributes.push_back(attribute_[f]);
         out.triangle_max_area.push_back(max_area_[f]);
       }
     }
+    if (const auto lost = std::find(cornered.begin(), cornered.end(), false); lost != cornered.end())
+      throw std::logic_error("the mesh made has a vertex in no triangle (vertex " +
+                             std::to_string(lost - cornered.begin()) + ", added after carving)");
     if (!in_.regions.empty()) out.attributes_per_triangle = 1;
     if (options_.compute_neighbors) {
       out.neighbors.reserve(out.triangles.size());
@@ -470,6 +482,7 @@ class Builder {
   TriangulateReport& report_;
   int exponent_;
   std::size_t input_count_;
+  std::size_t built_vertices_ = 0;  // the vertices when carving ended (to_tri_mesh checks the later ones)
   std::vector<std::uint32_t> input_of_;
   std::vector<std::uint32_t> steiner_index_;  // by Steiner vertex: its output index (kNone: removed)
   Triangulation<Mesh, Rec> tri_;
