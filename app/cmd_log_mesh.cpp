@@ -1,4 +1,5 @@
-// meshstep log mesh: the mesh after K steps of a recorded run, in Triangle's formats.
+// meshstep log mesh: the mesh after K steps of a recorded run, in Triangle's formats, as the
+// run itself writes its output (at the end: the run's own files).
 #include <cstdio>
 #include <memory>
 
@@ -29,7 +30,7 @@ int run_mesh(const MeshArgs& args) {
     replay::Replay replay(log);
     if (args.step < 0) replay.seek_event(log.event_count());
     else replay.seek_step(static_cast<std::uint64_t>(args.step));
-    const TriMesh mesh = replay.mesh();
+    const TriMesh mesh = replay.output_mesh();
     const std::string label = args.step < 0 ? "end" : "step" + std::to_string(args.step);
     const std::string prefix = args.prefix.empty() ? strip_extension(args.log) + "." + label : args.prefix;
     io::write_mesh(prefix, mesh);

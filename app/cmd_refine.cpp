@@ -268,6 +268,14 @@ int run_refine(const RefineArgs& args) {
       old = io::read_mesh(args.input, &warnings);
       input.points = old.points;
       input.first_index = old.first_index;
+      // What the log's header keeps of the input (record_option.hpp: open_log).
+      input.holes = old.holes;
+      input.regions = old.regions;
+      input.has_vertex_markers = !old.vertex_markers.empty();
+      input.vertex_markers = old.vertex_markers;
+      input.attributes_per_vertex = old.attributes_per_vertex;
+      input.vertex_attributes = old.vertex_attributes;
+      input.has_segment_markers = old.has_segment_markers;
       input_segments = old.segments.size();
     } else {
       note(verbosity, "reading " + args.input);
@@ -314,7 +322,7 @@ int run_refine(const RefineArgs& args) {
                          " input_vertices=" + std::to_string(input_vertices) +
                          " first_index=" + std::to_string(input.first_index) +
                          " convex_hull=" + std::to_string(args.convex_hull),
-                     options.triangulate.data_structure, options.triangulate.insertion, input.regions);
+                     options.triangulate.data_structure, options.triangulate.insertion, input);
       options.triangulate.record = log.get();
     }
     mesh = re_refine ? refine_mesh(old, options, &report) : refine(std::move(input), options, &report);

@@ -19,13 +19,13 @@ inline void add_record_option(CLI::App& cmd, std::string& path) {
       ->type_name("LOG");
 }
 
-// Opens the log for a run of `algorithm` on `input` (whose region points it keeps, for the
-// viewer's regional attributes). Throws InputError.
+// Opens the log for a run of `algorithm` on the file `input`, read as `pslg` (whose
+// regions, holes, markers and attributes the header keeps, so that a moment of the run can
+// be written as the run writes its output). Throws InputError.
 inline std::unique_ptr<replay::LogWriter> open_log(const std::string& path, const std::string& input,
                                                    const std::string& algorithm,
                                                    const std::string& parameters,
-                                                   DataStructure ds, Insertion insertion,
-                                                   std::vector<Region> regions) {
+                                                   DataStructure ds, Insertion insertion, const Pslg& pslg) {
   replay::LogHeader header;
   header.input = input;
   header.input_hash = replay::file_hash(input);
@@ -33,7 +33,7 @@ inline std::unique_ptr<replay::LogWriter> open_log(const std::string& path, cons
   header.parameters = parameters;
   header.data_structure = to_string(ds);
   header.insertion = to_string(insertion);
-  header.regions = std::move(regions);
+  replay::describe_input(header, pslg);
   return std::make_unique<replay::LogWriter>(path, header);
 }
 

@@ -450,12 +450,16 @@ class Builder {
     }
     // Segments: the constrained edges that still bound a triangle, and the unconstrained
     // edges that carving turned into boundary (convex hull edges of a point set), marker 1.
-    for (const Segment& s : kept_segments_) out.segments.push_back({external(s.a), external(s.b), s.marker});
-    for (const auto& [a, b] : new_boundary_) out.segments.push_back({external(a), external(b), 1});
-    std::sort(out.segments.begin(), out.segments.end(), [](const Segment& s, const Segment& t) {
-      return std::min(s.a, s.b) != std::min(t.a, t.b) ? std::min(s.a, s.b) < std::min(t.a, t.b)
-                                                      : std::max(s.a, s.b) < std::max(t.a, t.b);
-    });
+    // Each from its smaller vertex index to its larger, sorted: one order whatever the path
+    // (a replay of the run writes the same list, replay/output_mesh.cpp).
+    const auto add_segment = [&](VertexId a, VertexId b, int marker) {
+      const std::uint32_t i = external(a), j = external(b);
+      out.segments.push_back({std::min(i, j), std::max(i, j), marker});
+    };
+    for (const Segment& s : kept_segments_) add_segment(s.a, s.b, s.marker);
+    for (const auto& [a, b] : new_boundary_) add_segment(a, b, 1);
+    std::sort(out.segments.begin(), out.segments.end(),
+              [](const Segment& s, const Segment& t) { return std::pair(s.a, s.b) < std::pair(t.a, t.b); });
 
     // The vertices last, once the mesh is released: a lower peak for large inputs.
     tri_.mesh() = Mesh{};

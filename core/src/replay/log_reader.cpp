@@ -41,6 +41,30 @@ LogReader::LogReader(const std::string& path, std::uint64_t keep_writes_bytes)
   keep_writes_ = file_.size() <= keep_writes_bytes;
   read_header();
   scan_blocks();
+  read_input_fields();
+}
+
+// The fields that describe the input, once the parameters are known: the input's vertex
+// count bounds the markers and attributes, and the file's size bounds that count (a vertex
+// takes a byte of the log at the very least), so a hand-made header cannot make the reader
+// allocate more than a small multiple of the file.
+void LogReader::read_input_fields() {
+  const std::uint64_t inputs = std::strtoull(parameter("input_vertices", "0").c_str(), nullptr, 10);
+  const std::size_t limit = static_cast<std::size_t>(std::min<std::uint64_t>(inputs, file_.size()));
+  for (const auto& [key, value] : input_fields_) {
+    if (value.empty()) continue;
+    try {
+      if (key == "regions") header_.regions = parse_regions_field(value);
+      if (key == "holes") header_.holes = parse_holes_field(value);
+      if (key == "vertex_markers") header_.vertex_markers = parse_vertex_markers_field(value, limit);
+      if (key == "vertex_attributes")
+        std::tie(header_.attributes_per_vertex, header_.vertex_attributes) = parse_vertex_attributes_field(value, limit);
+      if (key == "segment_markers") header_.has_segment_markers = value == "1";
+    } catch (const std::invalid_argument& e) {
+      throw InputError(path_, 0, "the header's " + key + " field is malformed: " + e.what());
+    }
+  }
+  input_fields_.clear();
 }
 
 std::string LogReader::where(std::size_t block) const {
@@ -85,13 +109,7 @@ void LogReader::read_header() {
     // Unknown keys are skipped: a newer writer may add fields within the same version.
     if (const auto it = known.find(key); it != known.end())
       it->second->assign(reinterpret_cast<const char*>(p), value_length);
-    if (key == "regions") {
-      try {
-        header_.regions = parse_regions_field(std::string(reinterpret_cast<const char*>(p), value_length));
-      } catch (const std::invalid_argument& e) {
-        fail(std::string("the header's regions field is malformed: ") + e.what());
-      }
-    }
+    if (input_fields_.count(key)) input_fields_[key].assign(reinterpret_cast<const char*>(p), value_length);
     p += value_length;
   }
   blocks_start_ = 16 + std::size_t{length} + 8;

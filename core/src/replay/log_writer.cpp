@@ -98,6 +98,11 @@ struct LogWriter::Impl {
     put_field(fields, "data_structure", header.data_structure);
     put_field(fields, "insertion", header.insertion);
     if (!header.regions.empty()) put_field(fields, "regions", regions_field(header.regions));
+    if (!header.holes.empty()) put_field(fields, "holes", holes_field(header.holes));
+    if (!header.vertex_markers.empty()) put_field(fields, "vertex_markers", vertex_markers_field(header.vertex_markers));
+    if (header.attributes_per_vertex > 0)
+      put_field(fields, "vertex_attributes", vertex_attributes_field(header.attributes_per_vertex, header.vertex_attributes));
+    if (header.has_segment_markers) put_field(fields, "segment_markers", "1");
     std::vector<std::uint8_t> bytes(format::kFileMagic, format::kFileMagic + 8);
     format::put_le(bytes, encoder.format_version());
     format::put_le(bytes, static_cast<std::uint32_t>(fields.size()));

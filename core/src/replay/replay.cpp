@@ -150,7 +150,9 @@ std::uint64_t Replay::numeric_parameter(const std::string& key, std::uint64_t fa
   return value;
 }
 
-TriMesh Replay::mesh() const {
+TriMesh Replay::mesh() const { return build_mesh(nullptr, nullptr); }
+
+TriMesh Replay::build_mesh(std::vector<std::uint32_t>* output_index, std::vector<std::uint8_t>* constrained_bits) const {
   const std::vector<VertexInfo>& vertices = log_->vertices();
   // Input numbering, with duplicates resolved as the triangulator does: a group of vertices
   // at one place is represented by the copy that comes first in the input.
@@ -187,6 +189,7 @@ TriMesh Replay::mesh() const {
   for (const FaceRecord& r : slots_) {
     if (r.dead() || r.ghost()) continue;
     out.triangles.push_back({map(r.v[0]), map(r.v[1]), map(r.v[2])});
+    if (constrained_bits) constrained_bits->push_back(r.constrained);
     for (int i = 0; i < 3; ++i)
       if (r.constrained >> i & 1) {
         const std::uint32_t a = out.triangles.back()[i], b = out.triangles.back()[(i + 1) % 3];
@@ -194,6 +197,7 @@ TriMesh Replay::mesh() const {
       }
   }
   for (const auto& [edge, on] : constrained) out.segments.push_back({edge.first, edge.second, 1});
+  if (output_index) *output_index = std::move(index);
   return out;
 }
 

@@ -14,7 +14,7 @@
 #include "fill.hpp"
 #include "meshstep/error.hpp"
 #include "parts.hpp"
-#include "regions.hpp"
+#include "replay/regions.hpp"
 #include "style.hpp"
 
 namespace meshstep::scene {
@@ -114,7 +114,7 @@ Scene build_scene(const replay::Replay& cursor, const SceneOptions& options, con
   }
   const std::vector<Region>& regions = log.header().regions;
   if (!regions.empty()) {
-    scene.mesh.region = detail::region_attributes(scene.mesh.points, scene.mesh.triangles, mesh.constrained_bits, regions);
+    scene.mesh.region = replay::detail::region_attributes(scene.mesh.points, scene.mesh.triangles, mesh.constrained_bits, regions);
     in.region = scene.mesh.region;
   }
   scene.legend = detail::fill_triangles(options.color_by, options.theme, in, scene.mesh);

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <list>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -120,6 +121,7 @@ class LogReader {
  private:
   void read_header();
   void scan_blocks();
+  void read_input_fields();
  public:
   struct BlockSlot;  // (log_reader.cpp)
   struct Decoded;
@@ -133,6 +135,9 @@ class LogReader {
   std::string path_;
   io::MappedFile file_;
   LogHeader header_;
+  // The raw text of the fields that describe the input, parsed by read_input_fields().
+  std::map<std::string, std::string> input_fields_ = {
+      {"regions", {}}, {"holes", {}}, {"vertex_markers", {}}, {"vertex_attributes", {}}, {"segment_markers", {}}};
   std::uint32_t format_version_ = 0;
   std::size_t blocks_start_ = 0;
   bool complete_ = false;

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "meshstep/pslg/pslg.hpp"
@@ -30,16 +31,37 @@ struct LogHeader {
   std::string parameters;       // "key=value" pairs separated by spaces
   std::string data_structure;   // "tds" or "dcel"
   std::string insertion;        // "flip" or "cavity"
-  // The input's region points, in input coordinates (the log's): a moment's triangles get
-  // their regional attribute by the same flood as the run's output. Stored as the field
-  // "regions" (one "x y attribute max_area" line each, exact to the last bit); a log
-  // without the field reads as one with no regions.
+  // What the run's output carries from its input beyond the geometry the events hold, so
+  // that a moment's mesh can be written as the run writes it (Replay::output_mesh). In
+  // input coordinates (the log's), each number exact to the last bit. Fields (text, one
+  // record a line; a log without one reads as an input without it):
+  //   "regions"            "x y attribute max_area": the regional attributes' flood
+  //   "holes"              "x y"
+  //   "vertex_markers"     "marker count": runs of the input vertices' markers
+  //   "vertex_attributes"  the count per vertex, then one vertex's attributes a line
+  //   "segment_markers"    "1" when the input's segments had markers
   std::vector<Region> regions;
+  std::vector<Point> holes;
+  std::vector<int> vertex_markers;  // empty: the input had none
+  std::size_t attributes_per_vertex = 0;
+  std::vector<double> vertex_attributes;
+  bool has_segment_markers = false;
 };
 
-// The "regions" field's text and back. Throws std::invalid_argument on a malformed line.
+// Fills the header's description of the input (regions, holes, markers, attributes).
+void describe_input(LogHeader& header, const Pslg& in);
+
+// The fields' text and back. The parsers throw std::invalid_argument on a malformed line,
+// and on more markers or attribute lines than `vertex_limit`.
 std::string regions_field(const std::vector<Region>& regions);
 std::vector<Region> parse_regions_field(const std::string& text);
+std::string holes_field(const std::vector<Point>& holes);
+std::vector<Point> parse_holes_field(const std::string& text);
+std::string vertex_markers_field(const std::vector<int>& markers);
+std::vector<int> parse_vertex_markers_field(const std::string& text, std::size_t vertex_limit);
+std::string vertex_attributes_field(std::size_t per_vertex, const std::vector<double>& values);
+std::pair<std::size_t, std::vector<double>> parse_vertex_attributes_field(const std::string& text,
+                                                                          std::size_t vertex_limit);
 
 struct LogWriterOptions {
   // zstd's fast negative levels: the encoded events are varints already, so a stronger

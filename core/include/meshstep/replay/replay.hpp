@@ -57,7 +57,20 @@ class Replay {
   // the constrained edges as segments.
   TriMesh mesh() const;
 
+  // The mesh at this position as the run's own output writes it: mesh(), plus what the
+  // output carries beyond the faces. The segments keep their markers (the log's constrain
+  // events, passed on to the pieces of a split), and the edges that bound one triangle
+  // without being constrained are segments with marker 1. The triangles get their
+  // regional attributes and area bounds (the regions' flood), and the vertices the input's
+  // markers and attributes (a Steiner vertex takes the marker of the first segment, in
+  // output order, that ends at it). At the end of a run: the run's own files.
+  // Decodes every event before the position: for writing a moment, not for every step.
+  TriMesh output_mesh() const;
+
  private:
+  // mesh(), and optionally each vertex's index in it (kNoIndex: absent) and each
+  // triangle's constrained bits (FaceRecord::constrained).
+  TriMesh build_mesh(std::vector<std::uint32_t>* output_index, std::vector<std::uint8_t>* constrained_bits) const;
   void restore(const std::vector<FaceRecord>& keyframe, std::uint64_t event);
   void forward_to(std::uint64_t target);
   void backward_to(std::uint64_t target);

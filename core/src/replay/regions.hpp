@@ -11,12 +11,19 @@
 
 #include "meshstep/pslg/pslg.hpp"
 
-namespace meshstep::scene::detail {
+namespace meshstep::replay::detail {
 
 // `constrained[t] >> i & 1`: triangle t's edge i, from its vertex i to vertex i + 1, is
-// constrained (a replay FaceRecord's bits).
+// constrained (a replay FaceRecord's bits). For each triangle, 1 + the index of the region
+// point whose flood reached it last, 0 when none did.
+std::vector<std::uint32_t> region_of_triangles(std::span<const Point> points,
+                                               std::span<const std::array<std::uint32_t, 3>> triangles,
+                                               std::span<const std::uint8_t> constrained,
+                                               std::span<const Region> regions);
+
+// The same as regional attributes (0 where no region point reaches).
 std::vector<double> region_attributes(std::span<const Point> points,
                                       std::span<const std::array<std::uint32_t, 3>> triangles,
                                       std::span<const std::uint8_t> constrained, std::span<const Region> regions);
 
-}  // namespace meshstep::scene::detail
+}  // namespace meshstep::replay::detail

@@ -1,11 +1,11 @@
-#include "regions.hpp"
+#include "replay/regions.hpp"
 
 #include <algorithm>
 #include <numeric>
 
 #include "meshstep/geometry/predicates.hpp"
 
-namespace meshstep::scene::detail {
+namespace meshstep::replay::detail {
 
 namespace {
 
@@ -85,37 +85,46 @@ std::vector<std::uint32_t> holders(std::span<const Point> points,
 
 }  // namespace
 
-std::vector<double> region_attributes(std::span<const Point> points,
-                                      std::span<const std::array<std::uint32_t, 3>> triangles,
-                                      std::span<const std::uint8_t> constrained, std::span<const Region> regions) {
-  std::vector<double> attribute(triangles.size(), 0.0);
-  if (regions.empty() || triangles.empty()) return attribute;
+std::vector<std::uint32_t> region_of_triangles(std::span<const Point> points,
+                                               std::span<const std::array<std::uint32_t, 3>> triangles,
+                                               std::span<const std::uint8_t> constrained,
+                                               std::span<const Region> regions) {
+  std::vector<std::uint32_t> region(triangles.size(), 0);
+  if (regions.empty() || triangles.empty()) return region;
   const std::vector<std::uint32_t> holder = holders(points, triangles, regions);
   const std::vector<std::uint32_t>& across = neighbours(points.size(), triangles);
   // The last region point to reach a triangle gives its attribute, so the points flood in
   // reverse and a triangle already claimed stops a flood: each triangle is visited once.
   // (A flood fills a whole part between constrained edges, so a part claimed once is
   // claimed whole.)
-  thread_local std::vector<bool> claimed;
   thread_local std::vector<std::uint32_t> stack;
-  claimed.assign(triangles.size(), false);
   for (std::size_t r = regions.size(); r-- > 0;) {
-    if (holder[r] == kNoTriangle || claimed[holder[r]]) continue;
-    claimed[holder[r]] = true;
+    if (holder[r] == kNoTriangle || region[holder[r]] != 0) continue;
+    const auto claim = static_cast<std::uint32_t>(r + 1);
+    region[holder[r]] = claim;
     stack.assign(1, holder[r]);
     while (!stack.empty()) {
       const std::uint32_t t = stack.back();
       stack.pop_back();
-      attribute[t] = regions[r].attribute;
       for (std::uint32_t i = 0; i < 3; ++i) {
         const std::uint32_t u = across[3 * t + i];
-        if (constrained[t] >> i & 1 || u == kNoTriangle || claimed[u]) continue;
-        claimed[u] = true;
+        if (constrained[t] >> i & 1 || u == kNoTriangle || region[u] != 0) continue;
+        region[u] = claim;
         stack.push_back(u);
       }
     }
   }
+  return region;
+}
+
+std::vector<double> region_attributes(std::span<const Point> points,
+                                      std::span<const std::array<std::uint32_t, 3>> triangles,
+                                      std::span<const std::uint8_t> constrained, std::span<const Region> regions) {
+  const std::vector<std::uint32_t> region = region_of_triangles(points, triangles, constrained, regions);
+  std::vector<double> attribute(triangles.size(), 0.0);
+  for (std::size_t t = 0; t < region.size(); ++t)
+    if (region[t] != 0) attribute[t] = regions[region[t] - 1].attribute;
   return attribute;
 }
 
-}  // namespace meshstep::scene::detail
+}  // namespace meshstep::replay::detail
