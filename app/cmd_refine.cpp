@@ -378,8 +378,8 @@ int run_refine(const RefineArgs& args) {
                 "max angle %.2f); %s\n",
                 args.input.c_str(), input_vertices, input_segments, mesh.triangles.size(), report.steiner_vertices,
                 angles.min_angle_deg, angles.max_angle_deg, outcome.c_str());
-    if (!args.no_output) std::printf("  written to %s.node, %s.ele, %s.poly\n", prefix.c_str(), prefix.c_str(),
-                                     prefix.c_str());
+    if (!args.no_output)
+      std::printf("  written to %s.node, .ele, .poly%s\n", prefix.c_str(), mesh.triangle_max_area.empty() ? "" : ", .area");
   }
   if (verbosity == Verbosity::verbose) {
     std::printf("  refinement: %zu segment splits, %zu triangles split, %zu points rejected (encroaching),"

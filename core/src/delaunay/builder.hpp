@@ -204,10 +204,12 @@ class Builder {
     field.build();
   }
 
-  // An algorithm that split the boundary gives its pieces back for the output.
+  // An algorithm that ran on triangulation() gives the boundary back, split as it left it;
+  // the output then checks every triangle again (to_tri_mesh).
   void set_boundary_segments(std::vector<Segment> segments) {
     kept_segments_ = std::move(segments);
     new_boundary_.clear();
+    changed_after_build_ = true;
   }
   const Pslg& input() const { return in_; }
 
@@ -405,11 +407,16 @@ class Builder {
     out.regions = in_.regions;
     out.has_segment_markers = in_.has_segment_markers;
 
-    // Every vertex an algorithm added after carving is a corner of a triangle (a crossing
-    // point of two segments outside the domain may not be: it went with the outside).
-    std::vector<bool> cornered(tri_.points().size(), false);
-    for (VertexId v = 0; v < built_vertices_; ++v) cornered[v] = true;
-    for (const VertexId v : tri_.removed_vertices()) cornered[v] = true;
+    // The cheap checks again when an algorithm changed the mesh after build() checked it
+    // (carving only removes faces): every triangle counterclockwise, exactly, in the scaled
+    // coordinates, and every vertex added after carving the corner of a triangle (a crossing
+    // point of two segments outside the domain need not be: it went with the outside).
+    const bool check = changed_after_build_;
+    std::vector<std::uint8_t> cornered(check ? tri_.points().size() : 0, 0);
+    if (check) {
+      std::fill(cornered.begin(), cornered.begin() + static_cast<std::ptrdiff_t>(built_vertices_), 1);
+      for (const VertexId v : tri_.removed_vertices()) cornered[v] = 1;
+    }
     std::vector<std::uint32_t> index_of;
     if (options_.compute_neighbors) index_of.assign(m.face_capacity(), kNoIndex);
     out.triangles.reserve(m.face_count());
@@ -417,19 +424,19 @@ class Builder {
       if (!m.is_live(f)) continue;
       const HalfEdge h = m.half_edge(f);
       if (options_.compute_neighbors) index_of[f] = static_cast<std::uint32_t>(out.triangles.size());
-      // The cheap part of the checker, always: every triangle made is counterclockwise
-      // (exactly, in the scaled coordinates), else no mesh at all. One orient2d a triangle,
-      // settled by its filter: about 1% of a triangulation's time.
-      if (!(orient2d(tri_.point(m.origin(h)), tri_.point(m.dest(h)), tri_.point(m.apex(h))) > 0.0))
-        throw std::logic_error("the mesh made has a triangle that is not counterclockwise (face " + std::to_string(f) + ")");
-      out.triangles.push_back({external(m.origin(h)), external(m.dest(h)), external(m.apex(h))});
-      cornered[m.origin(h)] = cornered[m.dest(h)] = cornered[m.apex(h)] = true;
+      const VertexId a = m.origin(h), b = m.dest(h), c = m.apex(h);
+      if (check) {
+        if (!(orient2d(tri_.point(a), tri_.point(b), tri_.point(c)) > 0.0))
+          throw std::logic_error("the mesh made has a triangle that is not counterclockwise (face " + std::to_string(f) + ")");
+        cornered[a] = cornered[b] = cornered[c] = 1;
+      }
+      out.triangles.push_back({external(a), external(b), external(c)});
       if (!in_.regions.empty()) {
         out.triangle_attributes.push_back(attribute_[f]);
         out.triangle_max_area.push_back(max_area_[f]);
       }
     }
-    if (const auto lost = std::find(cornered.begin(), cornered.end(), false); lost != cornered.end())
+    if (const auto lost = std::find(cornered.begin(), cornered.end(), 0); lost != cornered.end())
       throw std::logic_error("the mesh made has a vertex in no triangle (vertex " +
                              std::to_string(lost - cornered.begin()) + ", added after carving)");
     if (!in_.regions.empty()) out.attributes_per_triangle = 1;
@@ -487,6 +494,7 @@ class Builder {
   int exponent_;
   std::size_t input_count_;
   std::size_t built_vertices_ = 0;  // the vertices when carving ended (to_tri_mesh checks the later ones)
+  bool changed_after_build_ = false;  // an algorithm ran after build()
   std::vector<std::uint32_t> input_of_;
   std::vector<std::uint32_t> steiner_index_;  // by Steiner vertex: its output index (kNone: removed)
   Triangulation<Mesh, Rec> tri_;

@@ -10,7 +10,9 @@
 // it, once: no fold, no overlap, no vertex lost inside a triangle.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -43,28 +45,28 @@ inline bool same_direction(const Point& a, const Point& b, const Point& c) {
 
 // Counts, corners, orientation and hull of a triangulation closed by the vertex at infinity
 // (delaunay/triangulation.hpp), before anything is carved from it. One pass over the faces
-// and one round of the hull: about 1.5% of the triangulation's time.
+// and one round of the hull: about 2% of a triangulation's instructions (the output then
+// checks nothing again unless an algorithm changed the mesh).
 template <class Tri>
 void check_whole_triangulation(const Tri& tri) {
   const auto& m = tri.mesh();
   const std::size_t vertex_ids = tri.points().size();
   const std::size_t expected = vertex_ids - tri.duplicate_count() - tri.removed_vertices().size();
-  std::vector<bool> corner(vertex_ids, false);
-  std::size_t faces = 0, corners = 0;
+  // One byte a vertex, the vertex at infinity in the last: stores without a branch.
+  std::vector<std::uint8_t> corner(vertex_ids + 1, 0);
+  const auto slot = [&](VertexId v) { return v == kInfiniteVertex ? vertex_ids : v; };
+  std::size_t faces = 0;
   for (FaceId f = 0; f < m.face_capacity(); ++f) {
     if (!m.is_live(f)) continue;
     ++faces;
     const HalfEdge h = m.half_edge(f);
-    const VertexId v[3] = {m.origin(h), m.dest(h), m.apex(h)};
-    for (const VertexId u : v)
-      if (u != kInfiniteVertex && !corner[u]) {
-        corner[u] = true;
-        ++corners;
-      }
-    if (v[0] != kInfiniteVertex && v[1] != kInfiniteVertex && v[2] != kInfiniteVertex &&
-        !(orient2d(tri.point(v[0]), tri.point(v[1]), tri.point(v[2])) > 0.0))
+    const VertexId a = m.origin(h), b = m.dest(h), c = m.apex(h);
+    corner[slot(a)] = corner[slot(b)] = corner[slot(c)] = 1;
+    if (a != kInfiniteVertex && b != kInfiniteVertex && c != kInfiniteVertex &&
+        !(orient2d(tri.point(a), tri.point(b), tri.point(c)) > 0.0))
       detail::broken("face " + std::to_string(f) + " is not counterclockwise");
   }
+  const auto corners = static_cast<std::size_t>(std::count(corner.begin(), corner.end() - 1, 1));
   if (corners != expected)
     detail::broken(std::to_string(expected - corners) + " of its " + std::to_string(expected) +
                    " vertices are the corner of no face");
