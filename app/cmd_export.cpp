@@ -38,9 +38,9 @@ struct ExportArgs {
 };
 
 // Progress on a terminal, about twice a second; nothing when standard error is a file.
-class Progress {
+class ExportProgress {
  public:
-  Progress(bool show, std::size_t total) : show_(show && ::isatty(2)), total_(total) {}
+  ExportProgress(bool show, std::size_t total) : show_(show && ::isatty(2)), total_(total) {}
   void frame(std::size_t done) {
     if (!show_) return;
     const auto now = std::chrono::steady_clock::now();
@@ -103,7 +103,7 @@ int run_export(const ExportArgs& args) {
     } else {
       video.emplace(args.video, draw.width, draw.height, args.fps);
     }
-    Progress progress(verbosity != Verbosity::quiet, moments.size());
+    ExportProgress progress(verbosity != Verbosity::quiet, moments.size());
     const int samples = draw.samples;
     std::uint64_t last_position = UINT64_MAX;
     scene::Image image;

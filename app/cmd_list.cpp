@@ -28,7 +28,7 @@ struct Section {
   std::vector<Row> rows;
 };
 
-std::string number(double v) {
+std::string short_number(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%g", v);
   return buffer;
@@ -45,7 +45,7 @@ std::vector<Section> sections() {
   for (const AlgorithmInfo& a : algorithms())
     algorithm_rows.push_back({std::string(a.name), std::string(a.description) + " (selection " +
                                                        to_string(a.selection) + "; default --min-angle " +
-                                                       number(a.default_min_angle_deg) + ")"});
+                                                       short_number(a.default_min_angle_deg) + ")"});
   return {
       {"algorithms", "Algorithms (refine --algorithm NAME)", std::move(algorithm_rows)},
       {"selections", "Selections (refine --select S): where a bad triangle's new vertex goes",
@@ -75,7 +75,8 @@ int run_list(const ListArgs& args) {
           item.field("selection", std::string(to_string(a->selection)))
               .field("default_min_angle", a->default_min_angle_deg);
         }
-        out += (first ? "" : ",") + item.str();
+        if (!first) out += ',';
+        out += item.str();
         first = false;
       }
       out += ']';

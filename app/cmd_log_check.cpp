@@ -14,7 +14,7 @@
 namespace meshstep::app {
 namespace {
 
-struct CheckArgs {
+struct LogCheckArgs {
   std::string log;
   std::string invariants = "valid,delaunay";
   std::int64_t every = 0;
@@ -24,14 +24,14 @@ struct CheckArgs {
 };
 
 // Progress on a terminal, about twice a second; nothing when standard error is not one.
-class Progress {
+class CheckProgress {
  public:
-  Progress(std::string log, std::uint64_t to) : show_(::isatty(2) != 0), log_(std::move(log)), to_(to) {}
-  ~Progress() {
+  CheckProgress(std::string log, std::uint64_t to) : show_(::isatty(2) != 0), log_(std::move(log)), to_(to) {}
+  ~CheckProgress() {
     if (shown_) std::fprintf(stderr, "\r%*s\r", static_cast<int>(width_), "");
   }
-  Progress(const Progress&) = delete;
-  Progress& operator=(const Progress&) = delete;
+  CheckProgress(const CheckProgress&) = delete;
+  CheckProgress& operator=(const CheckProgress&) = delete;
 
   void update(std::uint64_t boundary, std::uint64_t checked) {
     if (!show_) return;
@@ -57,7 +57,10 @@ class Progress {
 
 std::string names(const std::vector<replay::Invariant>& invariants, const char* separator) {
   std::string text;
-  for (const replay::Invariant i : invariants) text += (text.empty() ? "" : separator) + std::string(replay::name(i));
+  for (const replay::Invariant i : invariants) {
+    if (!text.empty()) text += separator;
+    text += replay::name(i);
+  }
   return text;
 }
 
@@ -76,7 +79,7 @@ std::string first_problems(const replay::BrokenInvariant& b, std::size_t few) {
   return text;
 }
 
-int run_check(const CheckArgs& args) {
+int run_log_check(const LogCheckArgs& args) {
   std::vector<replay::Invariant> invariants;
   try {
     invariants = replay::parse_invariants(args.invariants);
@@ -106,7 +109,7 @@ int run_check(const CheckArgs& args) {
     options.every = static_cast<std::uint64_t>(args.every);
     options.from = static_cast<std::uint64_t>(args.from);
     options.to = to;
-    auto progress = std::make_unique<Progress>(args.log, to);
+    auto progress = std::make_unique<CheckProgress>(args.log, to);
     options.progress = [&](std::uint64_t boundary, std::uint64_t checked) { progress->update(boundary, checked); };
     const replay::InvariantReport r = replay::check_invariants(log, options);
     progress.reset();  // clears its line before the result
@@ -190,7 +193,7 @@ int run_check(const CheckArgs& args) {
 }  // namespace
 
 Command add_log_check_command(CLI::App& log) {
-  auto args = std::make_shared<CheckArgs>();
+  auto args = std::make_shared<LogCheckArgs>();
   CLI::App* cmd = log.add_subcommand(
       "check",
       "Check the mesh at step boundaries (the mesh after K steps, as 'log mesh --step K' writes it)\n"
@@ -205,7 +208,7 @@ Command add_log_check_command(CLI::App& log) {
   cmd->add_option("--from", args->from, "First boundary: the mesh after A steps (default 0)");
   cmd->add_option("--to", args->to, "Last boundary: the mesh after B steps (default -1: the end)");
   cmd->add_flag("--json", args->json, "One JSON object instead of text");
-  return {cmd, [args] { return run_check(*args); }};
+  return {cmd, [args] { return run_log_check(*args); }};
 }
 
 }  // namespace meshstep::app

@@ -66,10 +66,6 @@ void note(Verbosity v, const std::string& message) {
   }
 }
 
-std::string with_input(const std::string& input, const InputError& e) {
-  return e.file().empty() ? input + ": " + e.what() : e.what();
-}
-
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
@@ -84,7 +80,7 @@ bool parse_number(const std::string& text, double& value) {
 }
 
 // "30", "0.125", "1e-06": short and exact enough for messages and the log header.
-std::string number(double v) {
+std::string header_number(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.9g", v);
   return buffer;
@@ -219,7 +215,7 @@ int run_refine(const RefineArgs& args) {
   // and ends in practice to about 34, as Triangle's documentation says of its own.
   constexpr double kKnownToEnd = 34.0;
   if (criteria.min_angle_deg > kKnownToEnd && options.insertion != RefineInsertion::bisection)
-    print_warning(verbosity, "--min-angle " + number(criteria.min_angle_deg) + " is above about " + number(kKnownToEnd) +
+    print_warning(verbosity, "--min-angle " + header_number(criteria.min_angle_deg) + " is above about " + header_number(kKnownToEnd) +
                                  " degrees, past which Delaunay refinement is not known to end" +
                                  (budget_caps ? ": it stops at " + budget_words
                                               : criteria.max_triangles || criteria.max_steiner ? ": it stops at your cap"
@@ -243,12 +239,12 @@ int run_refine(const RefineArgs& args) {
   const auto bound = [&bounds_text](const std::string& text) {
     bounds_text += (bounds_text.empty() ? "" : ", ") + text;
   };
-  if (criteria.min_angle_deg > 0.0) bound("min angle " + number(criteria.min_angle_deg));
+  if (criteria.min_angle_deg > 0.0) bound("min angle " + header_number(criteria.min_angle_deg));
   if (!any_bound) bounds_text += " (no bound given: " + std::string(algorithm->name) + "'s default)";
-  if (criteria.max_angle_deg < 180.0) bound("max angle " + number(criteria.max_angle_deg));
-  if (criteria.max_aspect > 0.0) bound("max aspect " + number(criteria.max_aspect));
-  if (criteria.max_area > 0.0) bound("max area " + number(criteria.max_area));
-  if (criteria.size) bound("size " + (size > 0.0 ? number(size) : args.size));
+  if (criteria.max_angle_deg < 180.0) bound("max angle " + header_number(criteria.max_angle_deg));
+  if (criteria.max_aspect > 0.0) bound("max aspect " + header_number(criteria.max_aspect));
+  if (criteria.max_area > 0.0) bound("max area " + header_number(criteria.max_area));
+  if (criteria.size) bound("size " + (size > 0.0 ? header_number(size) : args.size));
   if (bounds_text.empty()) bounds_text = "no bounds";
   if (criteria.max_triangles) bound("at most " + std::to_string(criteria.max_triangles) + " triangles");
   if (criteria.max_steiner) bound("at most " + std::to_string(criteria.max_steiner) + " Steiner vertices");
@@ -310,11 +306,11 @@ int run_refine(const RefineArgs& args) {
     if (!args.record.empty()) {
       log = open_log(args.record, re_refine ? args.input + ".node" : args.input, options.algorithm,
                      "selection=" + std::string(to_string(options.selection)) +
-                         " min_angle=" + number(criteria.min_angle_deg) +
-                         " max_angle=" + number(criteria.max_angle_deg) +
-                         " max_aspect=" + number(criteria.max_aspect) +
-                         " max_area=" + number(criteria.max_area) +
-                         " size=" + (size > 0.0 ? number(size) : args.size.empty() ? "0" : args.size) +
+                         " min_angle=" + header_number(criteria.min_angle_deg) +
+                         " max_angle=" + header_number(criteria.max_angle_deg) +
+                         " max_aspect=" + header_number(criteria.max_aspect) +
+                         " max_area=" + header_number(criteria.max_area) +
+                         " size=" + (size > 0.0 ? header_number(size) : args.size.empty() ? "0" : args.size) +
                          " max_triangles=" + std::to_string(criteria.max_triangles) +
                          " max_steiner=" + std::to_string(criteria.max_steiner) +
                          " order=" + to_string(options.order) + " insertion=" + insertion_name(options) +
@@ -340,7 +336,7 @@ int run_refine(const RefineArgs& args) {
       print_progress(verbosity, record_summary(*log));
     }
   } catch (const InputError& e) {
-    print_error(with_input(args.input, e));
+    print_error(input_error_text(args.input, e));
     return kExitBadInput;
   }
 

@@ -31,10 +31,6 @@ struct TriangulateArgs {
   bool verbose = false;
 };
 
-std::string with_input(const std::string& input, const InputError& e) {
-  return e.file().empty() ? input + ": " + e.what() : e.what();
-}
-
 int run_triangulate(const TriangulateArgs& args) {
   const Verbosity verbosity =
       args.quiet ? Verbosity::quiet : args.verbose ? Verbosity::verbose : Verbosity::normal;
@@ -86,7 +82,7 @@ int run_triangulate(const TriangulateArgs& args) {
       print_progress(verbosity, record_summary(*log));
     }
   } catch (const InputError& e) {
-    print_error(with_input(args.input, e));
+    print_error(input_error_text(args.input, e));
     return kExitBadInput;
   }
 

@@ -5,12 +5,19 @@
 #include <cstdio>
 #include <string>
 
+#include "meshstep/error.hpp"
+
 namespace meshstep::app {
 
 enum class Verbosity { quiet, normal, verbose };
 
 inline void print_error(const std::string& message) {
   std::fprintf(stderr, "meshstep: error: %s\n", message.c_str());
+}
+
+// An input error's message, naming `input` when the error names no file itself.
+inline std::string input_error_text(const std::string& input, const InputError& e) {
+  return e.file().empty() ? input + ": " + e.what() : e.what();
 }
 
 inline void print_warning(Verbosity v, const std::string& message) {

@@ -27,7 +27,7 @@ std::string extension_of(const std::string& path) {
   return path.substr(dot + 1);
 }
 
-std::string number(double v) {
+std::string ffmpeg_number(double v) {
   std::ostringstream s;
   s << v;
   return s.str();
@@ -44,7 +44,7 @@ std::vector<std::string> encoder_arguments(const std::string& ext, double fps) {
     return {"-vf", even, "-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "34", "-deadline", "realtime", "-cpu-used", "8",
             "-row-mt", "1", "-pix_fmt", "yuv420p", "-f", "webm"};
   if (ext == "gif")
-    return {"-vf", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer", "-r", number(fps),
+    return {"-vf", "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer", "-r", ffmpeg_number(fps),
             "-f", "gif"};
   return {};
 }
@@ -92,7 +92,7 @@ VideoPipe::VideoPipe(std::string path, int width, int height, double fps)
 
   std::vector<std::string> args = {ffmpeg, "-hide_banner", "-loglevel", "error", "-nostdin", "-y",
                                    "-f", "rawvideo", "-pix_fmt", "rgba", "-s",
-                                   std::to_string(width) + "x" + std::to_string(height), "-framerate", number(fps),
+                                   std::to_string(width) + "x" + std::to_string(height), "-framerate", ffmpeg_number(fps),
                                    "-i", "pipe:0"};
   args.insert(args.end(), encoder.begin(), encoder.end());
   args.push_back(temp_path_);
