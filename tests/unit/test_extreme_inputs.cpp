@@ -125,7 +125,12 @@ TEST(ExtremeInputs, CoordinatesTooFarApartAreRefusedByName) {
   EXPECT_NE(huge.find("too far apart in magnitude"), std::string::npos) << huge;
   EXPECT_NE(huge.find("vertex 0 (0, 1.1e+308)"), std::string::npos) << huge;
   const std::string subnormal = refusal(with_segments({{0, 0}, {1, 0}, {0, 1}, {5e-324, 0.5}}, {}));
-  EXPECT_NE(subnormal.find("vertex 3 (5e-324, 0.5)"), std::string::npos) << subnormal;
+  EXPECT_NE(subnormal.find("5e-324 of vertex 3 (5e-324, 0.5) is more than 2^140"), std::string::npos) << subnormal;
+  EXPECT_NE(subnormal.find("times smaller than 1 of vertex 1 (1, 0)"), std::string::npos) << subnormal;
+  // Both in one vertex: the message names the two coordinates, and the vertex once.
+  const std::string one = refusal(with_segments({{0, 0}, {0.5, 0}, {0, 0.5}, {5e-324, 1}}, {}));
+  EXPECT_NE(one.find("5e-324 is more than 2^140 (about 1e42) times smaller than 1 of vertex 3 (5e-324, 1)"),
+            std::string::npos) << one;
   Pslg hole = with_segments({{0, 0}, {1, 0}, {0, 1}}, {{0, 1}, {1, 2}, {2, 0}});
   hole.holes.push_back({1e-60, 0.25});
   EXPECT_NE(refusal(hole).find("hole point 0"), std::string::npos) << refusal(hole);

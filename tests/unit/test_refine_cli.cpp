@@ -478,5 +478,18 @@ TEST_F(RefineCli, AnUnreachableBoundStopsAtTheMemoryBudget) {
   EXPECT_TRUE(contains(bad.err, "--max-memory lots: expected a size")) << bad.err;
 }
 
+// Two segments meeting at about 10 degrees: a bound above it is warned of before the run,
+// naming the segments and the vertex (1-based, as the file numbers them); a bound below it
+// is not.
+TEST_F(RefineCli, WarnsOfAnInputAngleBelowTheBound) {
+  const std::string wedge = write("wedge.poly", "3 2 0 0\n1 0 0\n2 10 0\n3 10 1.7633\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n");
+  const CommandResult above = meshstep("refine " + wedge + " --min-angle 20 -o " + dir_.file("w20"));
+  EXPECT_EQ(above.status, 0) << above.err;
+  EXPECT_TRUE(contains(above.err, "segments 1 and 3 meet at vertex 1 at 10 degrees, below --min-angle 20")) << above.err;
+  const CommandResult below = meshstep("refine " + wedge + " --min-angle 9 -o " + dir_.file("w9"));
+  EXPECT_EQ(below.status, 0) << below.err;
+  EXPECT_FALSE(contains(below.err, "meet at vertex")) << below.err;
+}
+
 }  // namespace
 }  // namespace meshstep

@@ -80,9 +80,15 @@ inline void validate_magnitudes(const Pslg& in) {
   const auto at = [&](std::size_t i) {
     return " (" + coordinate_text(point(i).x) + ", " + coordinate_text(point(i).y) + ")";
   };
-  throw InputError("coordinates too far apart in magnitude: " + name(m.smallest_at) + at(m.smallest_at) +
-                   " has a nonzero coordinate more than 2^" + std::to_string(kSpanExponent) +
-                   " (about 1e42) times smaller than one of " + name(m.largest_at) + at(m.largest_at) +
+  // The two coordinates themselves: the smallest nonzero one and the largest.
+  const Point& lo = point(m.smallest_at);
+  const Point& hi = point(m.largest_at);
+  const double small = lo.x != 0.0 && (lo.y == 0.0 || std::abs(lo.x) <= std::abs(lo.y)) ? lo.x : lo.y;
+  const double large = std::abs(hi.x) >= std::abs(hi.y) ? hi.x : hi.y;
+  const std::string of_small = m.smallest_at == m.largest_at ? "" : " of " + name(m.smallest_at) + at(m.smallest_at);
+  throw InputError("coordinates too far apart in magnitude: " + coordinate_text(small) + of_small + " is more than 2^" +
+                   std::to_string(kSpanExponent) + " (about 1e42) times smaller than " + coordinate_text(large) +
+                   " of " + name(m.largest_at) + at(m.largest_at) +
                    "; meshstep computes exactly only within that span (is one of them a typo, or in other units?)");
 }
 
