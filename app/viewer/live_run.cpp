@@ -28,6 +28,7 @@ std::vector<std::string> run_arguments(const std::string& input, const RefineOpt
   pass("--max-angle", refine.max_angle);
   pass("--max-area", refine.max_area);
   pass("--max-aspect", refine.max_aspect);
+  if (refine.any()) pass("--max-memory", refine.max_memory);
   return args;
 }
 

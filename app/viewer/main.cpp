@@ -57,6 +57,9 @@ int main(int argc, char** argv) {
   app.add_option("--max-angle", a.refine.max_angle, "Refine an input: every angle at most DEG");
   app.add_option("--max-area", a.refine.max_area, "Refine an input: every triangle's area at most A");
   app.add_option("--max-aspect", a.refine.max_aspect, "Refine an input: aspect ratio at most R");
+  app.add_option("--max-memory", a.refine.max_memory,
+                 "Refine an input: stop at this memory budget (8G, 500M; default a quarter of the\n"
+                 "machine's, as meshstep refine), and show the run as far as it went");
   app.add_flag("-q,--quiet", a.quiet, "Print only errors");
   app.add_option("--canvas", a.canvas,
                  "Who draws the canvas: auto (a thread of its own for runs of more than 20,000 vertices, so\n"

@@ -18,6 +18,7 @@ bool is_input(const std::string& path);
 
 struct RefineOptions {
   std::string algorithm, min_angle, max_angle, max_area, max_aspect;
+  std::string max_memory;  // refine's --max-memory (its default budget when empty); not a bound
   bool any() const {
     return !algorithm.empty() || !min_angle.empty() || !max_angle.empty() || !max_area.empty() || !max_aspect.empty();
   }

@@ -75,6 +75,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   // another file (a drop, the start page) makes a new viewer that keeps the options.
   std::unique_ptr<Viewer> viewer;
   std::string problem;  // the last file that could not be opened, and why
+  bool stopped_run = false;  // `problem` says why the run shown stopped short
   const auto show = [&](std::unique_ptr<Session> next) {
     Settings carried = options.settings ? *options.settings : Settings{};
     if (viewer) viewer->capture(carried);
@@ -86,6 +87,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
       options.settings->add_recent(std::filesystem::absolute(path, ec).string());
     }
     problem.clear();
+    stopped_run = false;
   };
   // An input (.poly, .node) runs live: the window shows the mesh as the run makes it, and
   // opens the whole log when it ends.
@@ -120,9 +122,21 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
       }
     } else if (!run.cancelled()) {
       const std::string said = run.messages();
+      // A run that stopped (at its memory budget) has finished its log: it opens, as far as
+      // the run went, with the run's words beside it. One that failed has none.
+      std::error_code ec;
+      if (std::filesystem::exists(run.log(), ec)) {
+        try {
+          std::unique_ptr<Session> s = Session::open_log(run.log());
+          s->set_title(run.input());
+          show(std::move(s));
+          stopped_run = true;
+        } catch (const InputError&) {
+        }
+      }
       problem = said.empty() ? run.input() + ": its run failed" : said;
-      if (!options.quiet || !host->interactive()) std::fprintf(stderr, "%s\n", problem.c_str());
-      if (!host->interactive()) status = 1;  // a script's input that cannot run: an error
+      if (!options.quiet || !host->interactive() || stopped_run) std::fprintf(stderr, "%s\n", problem.c_str());
+      if (!host->interactive() && !stopped_run) status = 1;  // a script's input that cannot run: an error
     }
     live.reset();
   };
@@ -174,7 +188,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     else draw_start_page(host->width(), host->height(), options.settings, picked, picked_refine);
     // The file dialog (Ctrl+O, the Open... buttons): its pick opens as the start page's does.
     draw_file_dialog(viewer ? std::string_view(viewer->session().title()) : std::string_view(), picked);
-    if (!problem.empty()) draw_problem(problem);
+    if (!problem.empty()) draw_problem(problem, stopped_run ? "the run stopped short" : "cannot open", viewer != nullptr);
     ImGui::Render();
     const bool capture_window = viewer && !viewer->window_capture_path.empty();
     host->end_frame(wants_capture || capture_window ? &capture : nullptr);

@@ -10,6 +10,18 @@
 
 namespace meshstep::viewer {
 
+namespace {
+
+// The start page's refinement buttons: an algorithm to 30 degrees.
+RefineOptions thirty_degrees(const char* algorithm) {
+  RefineOptions r;
+  r.algorithm = algorithm;
+  r.min_angle = "30";
+  return r;
+}
+
+}  // namespace
+
 void draw_start_page(int width, int height, const Settings* settings, std::string& picked, RefineOptions& refine) {
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(ImVec2(static_cast<float>(width), static_cast<float>(height)));
@@ -30,12 +42,12 @@ void draw_start_page(int width, int height, const Settings* settings, std::strin
     const std::string name = std::filesystem::path(e.path).filename().string();
     if (ImGui::Button("refine (off-center, 30\u00B0)")) {
       picked = e.path;
-      refine = RefineOptions{"offcenter", "30", "", "", ""};
+      refine = thirty_degrees("offcenter");
     }
     ImGui::SameLine();
     if (ImGui::Button("Lepp-centroid")) {
       picked = e.path;
-      refine = RefineOptions{"lepp-centroid", "30", "", "", ""};
+      refine = thirty_degrees("lepp-centroid");
     }
     ImGui::SameLine();
     if (ImGui::Button("triangulate")) {
@@ -86,16 +98,20 @@ void draw_start_page(int width, int height, const Settings* settings, std::strin
   ImGui::End();
 }
 
-void draw_problem(const std::string& problem) {
+void draw_problem(std::string& problem, const char* title, bool at_top) {
   const ImGuiIO& io = ImGui::GetIO();
-  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y - 20.0f), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+  // At the top, centred over the canvas, left of the side panel (about 30% of the width).
+  const ImVec2 where = at_top ? ImVec2(io.DisplaySize.x * 0.35f, 40.0f) : ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y - 20.0f);
+  ImGui::SetNextWindowPos(where, ImGuiCond_Always, ImVec2(0.5f, at_top ? 0.0f : 1.0f));
   ImGui::SetNextWindowBgAlpha(0.95f);
-  ImGui::Begin("cannot open", nullptr,
+  bool open = true;
+  ImGui::Begin(title, &open,
                ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
-  ImGui::PushTextWrapPos(io.DisplaySize.x * 0.7f);
+  ImGui::PushTextWrapPos(io.DisplaySize.x * (at_top ? 0.6f : 0.7f));
   ImGui::TextUnformatted(problem.c_str());
   ImGui::PopTextWrapPos();
   ImGui::End();
+  if (!open) problem.clear();
 }
 
 }  // namespace meshstep::viewer

@@ -14,7 +14,9 @@ namespace meshstep::viewer {
 // chosen. `settings` may be null (no recent files).
 void draw_start_page(int width, int height, const Settings* settings, std::string& picked, RefineOptions& refine);
 
-// A small window at the bottom saying why the last file could not be opened.
-void draw_problem(const std::string& problem);
+// A small window saying why the last file could not be opened (or why the run shown
+// stopped short): at the bottom, or at the top when a run is shown, clear of its timeline.
+// Closing it clears `problem`.
+void draw_problem(std::string& problem, const char* title, bool at_top);
 
 }  // namespace meshstep::viewer

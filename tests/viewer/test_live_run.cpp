@@ -101,6 +101,22 @@ TEST_F(LiveRunProgram, AnInputThatCannotRunIsAnErrorWithItsLine) {
   EXPECT_FALSE(fs::exists(dir_ / "s.json")) << "nothing is looked at after the failure";
 }
 
+// A bound no refinement reaches, with a small memory budget: the run stops at the budget,
+// as meshstep refine does, and the viewer opens its log as far as it went, saying why.
+TEST_F(LiveRunProgram, ARunStoppedAtItsMemoryBudgetIsShownAsFarAsItWent) {
+  const std::string plate = std::string(MESHSTEP_ASSETS) + "/examples/plate.poly";
+  const fs::path after = dir_ / "after.json", picture = dir_ / "stopped.png";
+  const Result r = view(plate + " --min-angle 59 --max-memory 20M",
+                        "wait\nframes 3\nwait\nstate " + after.string() + "\nscreenshot " + picture.string() + "\nquit\n");
+  if (r.status == 77) GTEST_SKIP() << r.output;
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(has(r.output, "refinement stopped at the memory budget (20 MB")) << r.output;
+  const std::string opened = read_text(after);
+  EXPECT_TRUE(has(opened, "\"title\": \"" + plate + "\"")) << opened;
+  EXPECT_EQ(field(opened, "triangles"), 131072) << opened;  // 20 MB at 160 bytes a triangle
+  EXPECT_EQ(field(opened, "position"), field(opened, "event_count")) << opened;
+}
+
 // The preview worker on a log still being written: the prefix written so far, at its end.
 TEST_F(LiveRunProgram, PreviewDrawsTheEndOfWhatALogStillBeingWrittenHolds) {
   std::unique_ptr<render::GlContext> context;
