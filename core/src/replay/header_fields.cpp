@@ -27,6 +27,7 @@ class NumberLines {
 
   template <class T>
   std::vector<T> line(std::size_t per_line) {
+    ++line_;  // the line being read, and after it the line read last: what fail() names
     std::vector<T> values;
     for (;;) {
       while (p_ < end_ && *p_ == ' ') ++p_;
@@ -44,7 +45,6 @@ class NumberLines {
     if (values.empty() || (per_line != 0 && values.size() != per_line))
       fail("expected " + (per_line != 0 ? std::to_string(per_line) : std::string("some")) + " numbers");
     if (p_ < end_) ++p_;  // the newline
-    ++line_;
     return values;
   }
 
@@ -56,7 +56,7 @@ class NumberLines {
   const char* p_;
   const char* end_;
   std::string what_;
-  std::size_t line_ = 1;
+  std::size_t line_ = 0;
 };
 
 }  // namespace
