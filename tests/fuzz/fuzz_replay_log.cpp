@@ -18,6 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     replay::Replay cursor(log);
     cursor.seek_event(log.event_count());
     (void)cursor.mesh();
+    (void)cursor.output_mesh();  // what `log mesh` writes: markers, regions, header fields
     cursor.seek_event(0);
     cursor.seek_step(log.step_count() / 2);
     while (cursor.prev_event()) {

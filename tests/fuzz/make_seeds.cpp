@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
       replay::LogHeader header;
       header.algorithm = algorithm;
       header.parameters = "input_vertices=" + std::to_string(in.points.size()) + " min_angle=25";
-      header.regions = in.regions;
+      replay::describe_input(header, in);
       replay::LogWriter writer(log.string(), header);
       if (std::string(algorithm) == "triangulate") {
         TriangulateOptions o;
