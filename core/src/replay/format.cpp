@@ -3,6 +3,8 @@
 
 #include <zstd.h>
 
+#include <algorithm>
+#include <cstring>
 #include <new>
 #include <stdexcept>
 
@@ -91,18 +93,44 @@ Decompressor::~Decompressor() { ZSTD_freeDCtx(static_cast<ZSTD_DCtx*>(context_))
 
 void Decompressor::decompress(std::span<const std::uint8_t> stored, std::size_t raw_size,
                               std::vector<std::uint8_t>& out) {
-  out.resize(raw_size);
   if (stored.size() == raw_size) {  // stored as is
+    out.resize(raw_size);
     if (raw_size) std::memcpy(out.data(), stored.data(), raw_size);  // (an empty vector's data() may be null)
     return;
   }
-  const std::size_t n = ZSTD_decompressDCtx(static_cast<ZSTD_DCtx*>(context_), out.data(),
-                                            raw_size, stored.data(), stored.size());
-  if (ZSTD_isError(n))
-    throw std::runtime_error(std::string("does not decompress (") + ZSTD_getErrorName(n) + ")");
-  if (n != raw_size)
-    throw std::runtime_error("decompresses to " + std::to_string(n) + " bytes instead of " +
-                             std::to_string(raw_size));
+  // A block header can lie about the size (the fuzzer's: 4 GB to zero before a byte was
+  // read). So the size is checked against the frame's own and a bound, and the output grows
+  // with what the frame really holds, never to the size claimed before the data bears it out.
+  if (raw_size > kMaxCompressedRawSize)
+    throw std::runtime_error("claims to decompress to " + std::to_string(raw_size) + " bytes, more than the " +
+                             std::to_string(kMaxCompressedRawSize) + " a compressed block may hold");
+  const unsigned long long framed = ZSTD_getFrameContentSize(stored.data(), stored.size());
+  if (framed == ZSTD_CONTENTSIZE_ERROR) throw std::runtime_error("does not decompress (not a zstd frame)");
+  if (framed != ZSTD_CONTENTSIZE_UNKNOWN && framed != raw_size)
+    throw std::runtime_error("decompresses to " + std::to_string(framed) + " bytes instead of " + std::to_string(raw_size));
+  auto* context = static_cast<ZSTD_DCtx*>(context_);
+  ZSTD_DCtx_reset(context, ZSTD_reset_session_only);
+  constexpr std::size_t kFirstChunk = std::size_t{1} << 20;
+  out.resize(std::min(raw_size, kFirstChunk));
+  ZSTD_inBuffer in{stored.data(), stored.size(), 0};
+  std::size_t produced = 0;
+  for (;;) {
+    ZSTD_outBuffer o{out.data(), out.size(), produced};
+    const std::size_t left = ZSTD_decompressStream(context, &o, &in);
+    if (ZSTD_isError(left)) throw std::runtime_error(std::string("does not decompress (") + ZSTD_getErrorName(left) + ")");
+    produced = o.pos;
+    if (left == 0) break;  // the frame is complete
+    if (produced < out.size()) {
+      if (in.pos == in.size) throw std::runtime_error("does not decompress (the frame is cut short)");
+      continue;
+    }
+    if (out.size() == raw_size)
+      throw std::runtime_error("decompresses to more than " + std::to_string(raw_size) + " bytes");
+    out.resize(std::min(raw_size, 2 * out.size()));
+  }
+  if (produced != raw_size || in.pos != in.size)
+    throw std::runtime_error("decompresses to " + std::to_string(produced) + " bytes instead of " +
+                             std::to_string(raw_size) + (in.pos != in.size ? ", with bytes left over" : ""));
 }
 
 }  // namespace meshstep::replay::format

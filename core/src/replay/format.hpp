@@ -107,13 +107,19 @@ class Compressor {
   int level_;
 };
 
+// The most a compressed block may decompress to. meshstep compresses only events blocks,
+// cut at LogWriterOptions::block_bytes (256 KiB) plus one event (a Bowyer-Watson cavity of a
+// million faces takes about 20 MB); keyframes, which grow with the mesh, are stored as is.
+inline constexpr std::size_t kMaxCompressedRawSize = std::size_t{1} << 30;
+
 class Decompressor {
  public:
   Decompressor();
   ~Decompressor();
   Decompressor(const Decompressor&) = delete;
   Decompressor& operator=(const Decompressor&) = delete;
-  // Throws std::runtime_error when the data does not decompress to exactly raw_size bytes.
+  // Throws std::runtime_error when the data does not decompress to exactly raw_size bytes,
+  // or a compressed payload claims more than kMaxCompressedRawSize.
   void decompress(std::span<const std::uint8_t> stored, std::size_t raw_size,
                   std::vector<std::uint8_t>& out);
 
