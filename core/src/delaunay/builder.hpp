@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <charconv>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -19,6 +18,7 @@
 #include "meshstep/delaunay/triangulation.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/geometry/magnitudes.hpp"
+#include "meshstep/io/shortest_text.hpp"
 
 namespace meshstep::detail {
 
@@ -28,11 +28,7 @@ inline std::string vertex_name(const Pslg& in, std::size_t i) {
 
 inline void validate_magnitudes(const Pslg& in);
 
-// The shortest text that reads back as v.
-inline std::string coordinate_text(double v) {
-  char buf[32];
-  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
-}
+using io::shortest_text;
 
 inline void validate(const Pslg& in) {
   for (std::size_t i = 0; i < in.points.size(); ++i)
@@ -78,7 +74,7 @@ inline void validate_magnitudes(const Pslg& in) {
     return "region point " + std::to_string(i - regions_from + in.first_index);
   };
   const auto at = [&](std::size_t i) {
-    return " (" + coordinate_text(point(i).x) + ", " + coordinate_text(point(i).y) + ")";
+    return " (" + shortest_text(point(i).x) + ", " + shortest_text(point(i).y) + ")";
   };
   // The two coordinates themselves: the smallest nonzero one and the largest.
   const Point& lo = point(m.smallest_at);
@@ -86,8 +82,8 @@ inline void validate_magnitudes(const Pslg& in) {
   const double small = lo.x != 0.0 && (lo.y == 0.0 || std::abs(lo.x) <= std::abs(lo.y)) ? lo.x : lo.y;
   const double large = std::abs(hi.x) >= std::abs(hi.y) ? hi.x : hi.y;
   const std::string of_small = m.smallest_at == m.largest_at ? "" : " of " + name(m.smallest_at) + at(m.smallest_at);
-  throw InputError("coordinates too far apart in magnitude: " + coordinate_text(small) + of_small + " is more than 2^" +
-                   std::to_string(kSpanExponent) + " (about 1e42) times smaller than " + coordinate_text(large) +
+  throw InputError("coordinates too far apart in magnitude: " + shortest_text(small) + of_small + " is more than 2^" +
+                   std::to_string(kSpanExponent) + " (about 1e42) times smaller than " + shortest_text(large) +
                    " of " + name(m.largest_at) + at(m.largest_at) +
                    "; meshstep computes exactly only within that span (is one of them a typo, or in other units?)");
 }

@@ -5,17 +5,14 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "meshstep/io/shortest_text.hpp"
 #include "meshstep/replay/log_writer.hpp"
 
 namespace meshstep::replay {
 
 namespace {
 
-void append_number(std::string& out, double v) {
-  char buf[32];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, end);
-}
+void append_number(std::string& out, double v) { out += io::shortest_text(v); }
 
 // Reads the text's lines of numbers. Each line must hold `per_line` numbers (0: any
 // number of them, at least one); `what` names a line in messages ("region 3").
