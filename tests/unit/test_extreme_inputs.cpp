@@ -138,5 +138,17 @@ TEST(ExtremeInputs, CoordinatesTooFarApartAreRefusedByName) {
   triangulate_everywhere(with_segments({{0, 0}, {1, 0}, {0, 1}, {std::ldexp(1.0, -140), 0.5}, {1, 1}}, {{3, 4}}), true);
 }
 
+// Constructions keep to the rule too: two unit-sized segments crossing among a coordinate
+// of 4e41 (within the span by itself) cross at a point 2^140 below it. The input is refused,
+// where before the mesh was written and then refused by the checker (a fuzzing finding).
+TEST(ExtremeInputs, ACrossingBeyondTheSpanIsRefusedByTheRule) {
+  const Pslg in = with_segments({{0, 0}, {1, 5}, {1, 0}, {0, 1}, {0.35, 4e41}, {1, 0}}, {{0, 1}, {2, 3}, {0, 5}});
+  EXPECT_NE(refusal(in).find("two segments cross at a point with a nonzero coordinate more than 2^140"),
+            std::string::npos) << refusal(in);
+  // The same crossing among unit coordinates is fine.
+  const Pslg unit = with_segments({{0, 0}, {1, 5}, {1, 0}, {0, 1}, {0.35, 4}, {1, 0}}, {{0, 1}, {2, 3}, {0, 5}});
+  triangulate_everywhere(unit, false);
+}
+
 }  // namespace
 }  // namespace meshstep

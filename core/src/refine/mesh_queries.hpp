@@ -21,24 +21,6 @@
 
 namespace meshstep::detail {
 
-// The range new points must keep to (geometry/magnitudes.hpp): a nonzero coordinate below
-// 2^-kSpanExponent of the largest input coordinate would take the mesh out of the window
-// where the predicates are exact (and where the checker can check it). Refinement meets it
-// only where features shrink towards a point 1e-30 from a line through unit coordinates,
-// say: the split or insertion is refused there, as for a subsegment a few ulps long.
-class ExactRange {
- public:
-  explicit ExactRange(std::span<const Point> inputs) {
-    const Magnitudes m = magnitudes(inputs);
-    floor_ = m.largest == 0.0 ? 0.0 : std::ldexp(1.0, std::ilogb(m.largest) - kSpanExponent);
-  }
-  bool holds(const Point& p) const { return fits(p.x) && fits(p.y); }
-
- private:
-  bool fits(double c) const { return c == 0.0 || std::fabs(c) >= floor_; }
-  double floor_ = 0.0;
-};
-
 // The half-edge of f that leaves its smallest vertex id: a face named by its vertices, not
 // by where a data structure stored it.
 template <TriangleMesh Mesh>

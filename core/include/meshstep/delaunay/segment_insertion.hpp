@@ -12,12 +12,15 @@
 #include <algorithm>
 #include <cstdint>
 #include <deque>
+#include <optional>
+#include <string>
 #include <stdexcept>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "meshstep/delaunay/triangulation.hpp"
+#include "meshstep/geometry/magnitudes.hpp"
 
 namespace meshstep {
 
@@ -125,6 +128,7 @@ class SegmentInserter {
   void split_crossing(VertexId a, VertexId b, HalfEdge e, int marker) {
     const VertexId r = mesh().origin(e), l = mesh().dest(e);
     const Point x = intersection(P(a), P(b), P(r), P(l));
+    refuse_out_of_range(x);
     const auto existing = markers_.find(edge_key(r, l));
     const int old_marker = existing != markers_.end() ? existing->second : marker;
     ++splits_;
@@ -225,6 +229,19 @@ class SegmentInserter {
   // nearer the crossing (the parameter's rounding error is multiplied by the distance
   // travelled, which a segment 1e16 long would turn into whole units), then kept within
   // both segments' boxes, where the exact crossing lies.
+  // The range rule (geometry/magnitudes.hpp) holds for crossings too: a crossing far smaller
+  // in magnitude than the input's largest coordinate would leave the span where the mesh
+  // can be computed, and checked, exactly. The range is taken from the points at the first
+  // crossing: the input's, as segments are inserted after every vertex.
+  void refuse_out_of_range(const Point& x) {
+    if (!range_) range_.emplace(tri_.points());
+    if (!range_->holds(x))
+      throw InputError("two segments cross at a point with a nonzero coordinate more than 2^" +
+                       std::to_string(kSpanExponent) +
+                       " (about 1e42) times smaller than the input's largest coordinate; meshstep computes exactly "
+                       "only within that span (the range rule, README)");
+  }
+
   static Point intersection(const Point& a, const Point& b, const Point& r, const Point& l) {
     const auto length2 = [](const Point& p, const Point& q) {
       return (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y);
@@ -277,6 +294,7 @@ class SegmentInserter {
   }
 
   Triangulation<Mesh, Rec>& tri_;
+  std::optional<ExactRange> range_;  // made at the first crossing
   std::unordered_map<std::uint64_t, int> markers_;
   std::vector<Piece> pending_;
   std::vector<Pair> crossed_;

@@ -56,4 +56,23 @@ inline Magnitudes magnitudes(std::span<const Point> points) {
   return m;
 }
 
+// The range new points must keep to: a nonzero coordinate below 2^-kSpanExponent of the
+// largest input coordinate would take the mesh out of the span where the predicates are
+// exact (and where the checker can check it). Refinement meets it only where features
+// shrink towards a point 1e-30 from a line through unit coordinates, say: the split or
+// insertion is refused there, as for a subsegment a few ulps long. Segment insertion meets
+// it where two segments of unit size cross among coordinates of 1e41: the input is refused.
+class ExactRange {
+ public:
+  explicit ExactRange(std::span<const Point> inputs) {
+    const Magnitudes m = magnitudes(inputs);
+    floor_ = m.largest == 0.0 ? 0.0 : std::ldexp(1.0, std::ilogb(m.largest) - kSpanExponent);
+  }
+  bool holds(const Point& p) const { return fits(p.x) && fits(p.y); }
+
+ private:
+  bool fits(double c) const { return c == 0.0 || std::fabs(c) >= floor_; }
+  double floor_ = 0.0;
+};
+
 }  // namespace meshstep
