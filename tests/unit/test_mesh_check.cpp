@@ -250,6 +250,18 @@ TEST(MeshCheck, DetectsFoldWindingTwiceAroundAVertex) {
   EXPECT_REPORTS(r, "vertex 0", "wind 2 times");
 }
 
+// A sliver whose corner at vertex 4 is nearly pi: (0.15, 0.75) lies a hair above the line
+// from (0, 0) to (0.5, 2.5) (0.15 is not a double), so the triangle is counterclockwise,
+// exactly. The rounded cross product at that corner came out negative, the angle -pi, and
+// the fan round vertex 4 summed to 0: a valid mesh reported as overlapping (fuzzing).
+TEST(MeshCheck, ASliverWithACornerOfNearlyPiClosesItsFan) {
+  const std::vector<Point> points{{0, 5}, {1, 5}, {0, 0}, {0, 1}, {0.15, 0.75}, {1, 0}, {0.5, 2.5}};
+  ASSERT_GT(orient2d(points[2], points[6], points[4]), 0.0);
+  const std::vector<Tri> tris{{2, 4, 3}, {2, 6, 4}, {1, 6, 5}, {0, 3, 6}, {3, 4, 6}, {6, 1, 0}, {6, 2, 5}};
+  const auto r = check_mesh(make_mesh(points, tris), nullptr, {.delaunay = false});
+  EXPECT_TRUE(r.ok) << (r.problems.empty() ? "" : r.problems.front());
+}
+
 TEST(MeshCheck, DetectsStrayVertexInsideTriangleOrOnEdge) {
   // Vertex 3 is used by no triangle, which is allowed, but it lies inside triangle 0.
   auto r = check_mesh(make_mesh({{0, 0}, {4, 0}, {0, 4}, {1, 1}}, {{0, 1, 2}}));

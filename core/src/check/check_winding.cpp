@@ -9,11 +9,15 @@
 namespace meshstep::check_detail {
 namespace {
 
-// Angle at corner p between the directions to q and r, in (0, pi) for a ccw triangle.
+// Angle at corner p between the directions to q and r, in (0, pi): the triangles summed
+// here are counterclockwise, as the exact orientation stage found them. The rounded cross
+// product can come out negative for a sliver whose angle at p is nearly pi (a fuzzing
+// finding: -pi instead of pi, so a fan round a vertex summed to 0), so its sign is not
+// taken from the rounding.
 double corner_angle(const Point& p, const Point& q, const Point& r) {
   const double ux = q.x - p.x, uy = q.y - p.y;
   const double vx = r.x - p.x, vy = r.y - p.y;
-  return std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);
+  return std::atan2(std::fabs(ux * vy - uy * vx), ux * vx + uy * vy);
 }
 
 }  // namespace
