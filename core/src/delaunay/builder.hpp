@@ -479,14 +479,7 @@ class Builder {
     out.attributes_per_vertex = in_.attributes_per_vertex;
     out.vertex_attributes = std::move(in_.vertex_attributes);
     out.vertex_attributes.resize(vertex_count * out.attributes_per_vertex, 0.0);
-    if (in_.has_vertex_markers) {
-      // Steiner vertices take the marker of the segment they split.
-      out.vertex_markers = std::move(in_.vertex_markers);
-      out.vertex_markers.resize(vertex_count, 0);
-      for (const Segment& s : out.segments)
-        for (const std::uint32_t v : {s.a, s.b})
-          if (v >= input_count_ && out.vertex_markers[v] == 0) out.vertex_markers[v] = s.marker;
-    }
+    if (in_.has_vertex_markers) set_vertex_markers(out, std::move(in_.vertex_markers), input_count_);
     return out;
   }
 

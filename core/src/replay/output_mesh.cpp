@@ -82,13 +82,7 @@ TriMesh Replay::output_mesh() const {
   // the first segment that ends at them, and attributes of 0.
   const std::size_t n = out.points.size();
   const std::uint64_t inputs = numeric_parameter("input_vertices", 0);
-  if (!header.vertex_markers.empty()) {
-    out.vertex_markers = header.vertex_markers;
-    out.vertex_markers.resize(n, 0);
-    for (const Segment& s : out.segments)
-      for (const std::uint32_t v : {s.a, s.b})
-        if (v >= inputs && out.vertex_markers[v] == 0) out.vertex_markers[v] = s.marker;
-  }
+  if (!header.vertex_markers.empty()) set_vertex_markers(out, header.vertex_markers, inputs);
   out.attributes_per_vertex = header.attributes_per_vertex;
   out.vertex_attributes = header.vertex_attributes;
   out.vertex_attributes.resize(n * out.attributes_per_vertex, 0.0);

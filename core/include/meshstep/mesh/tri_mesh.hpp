@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "meshstep/geometry/point.hpp"
@@ -39,5 +40,17 @@ struct TriMesh {
   std::size_t input_vertex_count = 0;  // points[0, input_vertex_count) came from the input
   int first_index = 0;
 };
+
+// The vertex markers of a mesh whose first `input_count` vertices came from the input with
+// `input_markers`: those kept, and each Steiner vertex given the marker of the first
+// segment, in the order of mesh.segments, that ends at it (the segment it split). The
+// rule of the output and of a replayed moment (Replay::output_mesh), in one place.
+inline void set_vertex_markers(TriMesh& mesh, std::vector<int> input_markers, std::size_t input_count) {
+  mesh.vertex_markers = std::move(input_markers);
+  mesh.vertex_markers.resize(mesh.points.size(), 0);
+  for (const Segment& s : mesh.segments)
+    for (const std::uint32_t v : {s.a, s.b})
+      if (v >= input_count && mesh.vertex_markers[v] == 0) mesh.vertex_markers[v] = s.marker;
+}
 
 }  // namespace meshstep
