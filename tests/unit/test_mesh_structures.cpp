@@ -18,6 +18,7 @@
 #include "meshstep/mesh/concept.hpp"
 #include "meshstep/mesh/dcel.hpp"
 #include "meshstep/mesh/tds.hpp"
+#include "meshstep/release.hpp"
 
 namespace meshstep {
 namespace {
@@ -514,6 +515,41 @@ TYPED_TEST(MeshStructures, RemoveFacesThenRebuild) {
   EXPECT_EQ(m.vertex_half_edge(I), kNone);
 }
 
+// Before a conversion, a mesh gives back what only crossing edges needs; its faces must
+// read the same afterwards, with a boundary (carved) and freed slots among them.
+TYPED_TEST(MeshStructures, DropAdjacencyKeepsEveryFaceAndFreesMemory) {
+  constexpr VertexId n = 2000;
+  TypeParam m;
+  m.reserve(n, 2 * n);
+  m.set_vertex_count(n);
+  std::mt19937 rng(11);
+  m.init_sphere(0, 1, 2, I);
+  for (VertexId v = 3; v < n; ++v) {
+    FaceId f;
+    do f = static_cast<FaceId>(rng() % m.face_capacity());
+    while (!m.is_live(f));
+    m.split_face(f, v);
+  }
+  for (FaceId f = 0; f < m.face_capacity(); ++f)
+    if (m.is_live(f) && (f % 7 == 0 || std::ranges::count(triple(m, f), I) > 0)) m.remove_face(f);
+  const auto faces = face_set(m);
+  const std::size_t count = m.face_count(), capacity = m.face_capacity(), before = m.memory_bytes();
+  m.drop_adjacency();
+  EXPECT_EQ(face_set(m), faces);
+  EXPECT_EQ(m.face_count(), count);
+  EXPECT_EQ(m.face_capacity(), capacity);
+  for (FaceId f = 0; f < m.face_capacity(); ++f) {
+    if (!m.is_live(f)) continue;
+    const HalfEdge h = m.half_edge(f);
+    EXPECT_EQ(m.prev(m.next(h)), h);
+    EXPECT_EQ(m.next(m.next(m.next(h))), h);
+    EXPECT_EQ(m.origin(m.next(h)), m.dest(h));
+  }
+  // Tds: the twins and vertex half-edges (more than half); Dcel: face(h) and the vertex
+  // half-edges (about a third).
+  EXPECT_LT(m.memory_bytes(), before * 3 / 4) << before;
+}
+
 // The stale-handle idiom of the algorithms: after a mutation, is_live(face(h)) on an old
 // handle must be answerable (and false when h no longer names a half-edge of a face).
 TYPED_TEST(MeshStructures, StaleHandlesAreSafeToTest) {
@@ -744,6 +780,13 @@ TEST(MeshStructuresRandom, TdsAndDcelStayIdenticalWithBoundaries) {
 
 // ---------------------------------------------------------------------------------------
 // Dcel specifics: pair reuse, no growth in steady state, size.
+
+TEST(Release, GivesTheMemoryBack) {
+  std::vector<double> v(1000, 1.0);
+  release(v);
+  EXPECT_TRUE(v.empty());
+  EXPECT_EQ(v.capacity(), 0u);  // `v = {}` would keep all 1000
+}
 
 TEST(Dcel, FlipReusesTheEdgePair) {
   Dcel m;

@@ -92,6 +92,37 @@ TEST(Triangulate, DuplicatesAreMergedAndReported) {
   EXPECT_EQ(m.triangles.size(), 2 * n - hull_boundary_points(p) - 2);
 }
 
+// keep_mesh = false (meshstep triangulate --no-output) skips the conversion, not the
+// triangulation: the report counts what the kept mesh holds, duplicates, crossings and
+// carving included, on both data structures.
+TEST(Triangulate, WithoutKeepingTheMeshTheReportCountsTheSame) {
+  Pslg square;
+  square.points = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {4, 4}, {6, 4}, {6, 6}, {4, 6}, {1, 1}, {9, 2}, {1, 1}};
+  square.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}, {4, 5, 2}, {5, 6, 2}, {6, 7, 2}, {7, 4, 2},
+                     {0, 2, 3}, {1, 3, 3}};  // the diagonals cross each other and the hole
+  square.holes = {{5, 5}};
+  auto scattered = points(uniform(700, 5));
+  scattered.points.push_back(scattered.points[3]);
+  for (const Pslg& input : {square, scattered}) {
+    for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel}) {
+      TriangulateOptions options;
+      options.data_structure = ds;
+      TriangulateReport kept_report, counted_report;
+      const TriMesh kept = triangulate(input, options, &kept_report);
+      options.keep_mesh = false;
+      const TriMesh counted = triangulate(input, options, &counted_report);
+      EXPECT_TRUE(counted.points.empty() && counted.triangles.empty() && counted.segments.empty());
+      EXPECT_EQ(counted_report.vertices, kept.points.size());
+      EXPECT_EQ(counted_report.triangles, kept.triangles.size());
+      EXPECT_EQ(counted_report.segments, kept.segments.size());
+      EXPECT_EQ(kept_report.triangles, kept.triangles.size());
+      EXPECT_EQ(counted_report.warnings, kept_report.warnings);
+      EXPECT_EQ(counted_report.steiner_vertices, kept_report.steiner_vertices);
+    }
+  }
+  EXPECT_GT(triangulate(square).segments.size(), square.segments.size());  // the crossings split them
+}
+
 TEST(Triangulate, CollinearPointsWithOneOffTheLine) {
   std::vector<Point> p;
   for (int i = 0; i < 50; ++i) p.push_back({i * 0.1, i * 0.2});

@@ -6,6 +6,7 @@
 
 #include "check/stages.hpp"
 #include "meshstep/geometry/magnitudes.hpp"
+#include "meshstep/release.hpp"
 
 namespace meshstep {
 
@@ -20,7 +21,7 @@ CheckReport run_stages(const TriMesh& mesh, const Pslg* input, const CheckOption
   std::vector<std::uint8_t> usable(mesh.triangles.size());
   for (std::size_t t = 0; t < usable.size(); ++t) usable[t] = facts.usable(t);
   facts.edges.emplace(mesh, usable);
-  usable = {};
+  release(usable);
   facts.mark_listed_edges();
   check_edge_use(facts);
   check_winding(facts);
@@ -60,7 +61,7 @@ CheckReport check_mesh(const TriMesh& mesh, const Pslg* input, const CheckOption
     all.insert(all.end(), input->holes.begin(), input->holes.end());
   }
   const Magnitudes m = magnitudes(all);
-  all = {};
+  release(all);
   if (!m.within_span()) {
     ProblemLog log(options.max_problems);
     log.add([&] {

@@ -5,6 +5,9 @@
 #include <bit>
 #include <utility>
 
+#include "meshstep/huge_pages.hpp"
+#include "meshstep/release.hpp"
+
 namespace meshstep {
 namespace {
 
@@ -88,6 +91,7 @@ class KeyGrid {
 // bits, small enough for the bucket heads to stay in cache. Stable, so equal keys stay in
 // index order.
 void radix_sort_by_key(std::span<std::uint64_t> items, std::vector<std::uint64_t>& scratch) {
+  reserve_huge(scratch, items.size());
   scratch.resize(items.size());
   std::array<std::uint32_t, 2048> count;
   std::span<std::uint64_t> from = items, to{scratch.data(), items.size()};
@@ -139,7 +143,7 @@ std::vector<std::uint32_t> hilbert_order(std::span<const Point> points) {
   for (std::size_t i = 0; i < points.size(); ++i) items[i] = i;
   std::vector<std::uint64_t> scratch;
   sort_range(points, items, scratch, 0);
-  scratch = {};
+  release(scratch);
   std::vector<std::uint32_t> order(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) order[i] = static_cast<std::uint32_t>(items[i]);
   return order;
@@ -165,7 +169,9 @@ std::vector<std::uint32_t> brio_order(std::span<const Point> points) {
   BBox box;
   for (const Point& p : points) box.add(p);
   const KeyGrid grid(box, n);
-  std::vector<std::uint64_t> keyed(n);
+  std::vector<std::uint64_t> keyed;
+  reserve_huge(keyed, n);
+  keyed.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     keyed[i] = (std::uint64_t{grid.valid() ? grid.key(points[i]) : 0u} << 32) | i;
     ++round_size[round_of(i)];
@@ -177,16 +183,18 @@ std::vector<std::uint32_t> brio_order(std::span<const Point> points) {
     start[r] = offset;
     offset += round_size[r];
   }
-  std::vector<std::uint64_t> items(n);
+  std::vector<std::uint64_t> items;
+  reserve_huge(items, n);
+  items.resize(n);
   {
     std::vector<std::size_t> next(start.begin(), start.end() - 1);
     for (std::size_t i = 0; i < n; ++i) items[next[round_of(i)]++] = keyed[i];
   }
-  keyed = {};
+  release(keyed);
   std::vector<std::uint64_t> scratch;
   for (int r = rounds - 1; r >= 0; --r)
     sort_by_keys(points, std::span(items).subspan(start[r], round_size[r]), scratch, 0);
-  scratch = {};
+  release(scratch);
   std::vector<std::uint32_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(items[i]);
   return order;

@@ -4,6 +4,7 @@
 #include <unordered_map>
 
 #include "meshstep/error.hpp"
+#include "meshstep/huge_pages.hpp"
 
 namespace meshstep::io::detail {
 namespace {
@@ -168,7 +169,7 @@ void read_vertex_records(RecordReader& r, const VertexHeader& h, Numbering& numb
   const std::size_t reserve = check_count(r, h.count, fields, "vertices", kMaxItems);
   out.attributes_per_vertex = h.attributes;
   out.has_vertex_markers = h.markers;
-  out.points.reserve(reserve);
+  reserve_huge(out.points, reserve);
   out.vertex_attributes.reserve(reserve * h.attributes);
   if (h.markers) out.vertex_markers.reserve(reserve);
   const std::string names = vertex_record_names(h.attributes, h.markers);

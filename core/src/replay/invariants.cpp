@@ -8,6 +8,7 @@
 
 #include "check/stages.hpp"
 #include "meshstep/replay/replay.hpp"
+#include "meshstep/release.hpp"
 
 namespace meshstep::replay {
 
@@ -73,7 +74,7 @@ std::vector<BrokenInvariant> check_invariants(const TriMesh& mesh, const std::ve
     std::vector<std::uint8_t> usable(mesh.triangles.size());
     for (std::size_t t = 0; t < usable.size(); ++t) usable[t] = facts.usable(t);
     facts.edges.emplace(mesh, usable);
-    usable = {};
+    release(usable);
     facts.mark_listed_edges();
     if (want(Invariant::valid)) {
       check_edge_use(facts);

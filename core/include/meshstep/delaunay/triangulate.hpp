@@ -25,6 +25,10 @@ struct TriangulateOptions {
   // outside the segments (Triangle's -c).
   bool convex_hull = false;
   bool compute_neighbors = false;
+  // false: the triangulation is built and checked but not converted to a TriMesh (the one
+  // returned is empty; the report has its counts), for a caller that only measures it.
+  // Ignored by refine(), whose output is checked as it is converted.
+  bool keep_mesh = true;
   // Record every step into this sink (a replay::LogWriter); nullptr: no recording, and the
   // triangulators run the code they would run without a recorder.
   replay::EventSink* record = nullptr;
@@ -38,6 +42,7 @@ struct TriangulateReport {
   std::size_t split_segments = 0;       // segments split by a vertex or a crossing
   std::size_t removed_triangles = 0;    // in holes or outside the segments
   std::size_t mesh_bytes = 0;           // memory held by the data structure at its largest
+  std::size_t vertices = 0, triangles = 0, segments = 0;  // of the mesh made, kept or not
   std::vector<std::string> warnings;    // human-readable, one line each
 };
 

@@ -80,6 +80,11 @@ concept TriangleMesh = requires(M& m, const M& cm, HalfEdge h, FaceId f, VertexI
   { m.remove_face(f) };
   { m.rebuild_vertex_half_edges() };
   { m.set_constrained(h, flag) };          // both sides of the edge
+  // Frees what only moving across edges and round vertices needs (twin, vertex_half_edge,
+  // the constraint flags, face(h) where it is stored): a mesh about to be converted and
+  // destroyed makes room for its output. Afterwards only is_live, half_edge, origin, dest,
+  // apex, next, prev and the sizes may be asked; anything else is undefined.
+  { m.drop_adjacency() };
 };
 
 }  // namespace meshstep

@@ -23,7 +23,9 @@
 #include <span>
 #include <vector>
 
+#include "meshstep/huge_pages.hpp"
 #include "meshstep/mesh/handles.hpp"
+#include "meshstep/release.hpp"
 
 namespace meshstep {
 
@@ -86,14 +88,20 @@ class Dcel {
 
   // Construction and mutation ---------------------------------------------------------------
   void reserve(std::size_t vertices, std::size_t faces) {
-    vertex_half_edge_.reserve(vertices + kSlotOffset);
-    face_half_edge_.reserve(faces);
+    reserve_huge(vertex_half_edge_, vertices + kSlotOffset);
+    reserve_huge(face_half_edge_, faces);
     // A closed surface has 3F/2 edges, so 3F half-edges.
-    origin_.reserve(3 * faces);
-    next_.reserve(3 * faces);
-    face_.reserve(3 * faces);
+    reserve_huge(origin_, 3 * faces);
+    reserve_huge(next_, 3 * faces);
+    reserve_huge(face_, 3 * faces);
   }
   void set_vertex_count(std::size_t n) { vertex_half_edge_.resize(n + kSlotOffset, kNone); }
+  // origin_, next_ and the faces' half-edges stay (dest and apex read origin_ through them).
+  void drop_adjacency() {
+    release(face_);
+    release(vertex_half_edge_);
+    release(spokes_);
+  }
 
   HalfEdge init_sphere(VertexId a, VertexId b, VertexId c, VertexId outer) {
     assert(face_capacity() == 0 && edge_capacity() == 0);
