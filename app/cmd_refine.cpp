@@ -31,7 +31,7 @@ namespace {
 struct RefineArgs {
   std::string input;
   std::string prefix;
-  std::string algorithm = "circumcenter";
+  std::string algorithm = "offcenter";
   std::string select;  // empty: the algorithm's own
   double min_angle = 0.0;
   double max_angle = 180.0;
@@ -41,8 +41,8 @@ struct RefineArgs {
   std::size_t max_steiner = 0;
   std::string size;
   std::string insertion = "flip";
-  std::string order = "worst";
-  std::string encroachment = "circle";
+  std::string order = "smallest";
+  std::string encroachment;  // empty: the selection's own (default_encroachment)
   std::string ds = "tds";
   bool convex_hull = false;
   bool improve = false;
@@ -160,8 +160,12 @@ int run_refine(const RefineArgs& args) {
     }
     options.selection = *selection;
   }
-  options.order = args.order == "fifo" ? RefineOrder::fifo : RefineOrder::worst_first;
-  options.encroachment = args.encroachment == "lens" ? Encroachment::lens : Encroachment::circle;
+  options.order = args.order == "fifo"    ? RefineOrder::fifo
+                  : args.order == "worst" ? RefineOrder::worst_first
+                                          : RefineOrder::smallest_first;
+  options.encroachment = args.encroachment.empty()    ? default_encroachment(options.selection)
+                         : args.encroachment == "lens" ? Encroachment::lens
+                                                       : Encroachment::circle;
   options.triangulate.data_structure = args.ds == "dcel" ? DataStructure::dcel : DataStructure::tds;
   options.triangulate.insertion = args.insertion == "cavity" ? Insertion::cavity : Insertion::flip;
   if (args.insertion == "bisection") options.insertion = RefineInsertion::bisection;
@@ -334,6 +338,7 @@ int run_refine(const RefineArgs& args) {
                          " max_steiner=" + std::to_string(criteria.max_steiner) +
                          " order=" + to_string(options.order) + " insertion=" + insertion_name(options) +
                          " encroachment=" + (options.encroachment == Encroachment::lens ? "lens" : "circle") +
+                         " lens_angle=" + header_number(lens_angle_deg(criteria)) +
                          " input_vertices=" + std::to_string(input_vertices) +
                          " first_index=" + std::to_string(input.first_index) +
                          " convex_hull=" + std::to_string(args.convex_hull),
@@ -523,14 +528,17 @@ Command add_refine_command(CLI::App& parent) {
                   "longest-edge bisection, not Delaunay; --max-area or --size only)")
       ->check(CLI::IsMember({"flip", "cavity", "bisection"}))
       ->capture_default_str();
-  cmd->add_option("--order", args->order, "Which bad triangle next: worst (smallest angle first) or fifo")
-      ->check(CLI::IsMember({"worst", "fifo"}))
+  cmd->add_option("--order", args->order,
+                  "Which bad triangle next: smallest (shortest edge first, as Triangle; keeps\n"
+                  "the mesh graded at high bounds), worst (smallest angle first) or fifo")
+      ->check(CLI::IsMember({"smallest", "worst", "fifo"}))
       ->capture_default_str();
   cmd->add_option("--encroachment", args->encroachment,
                   "Points that encroach on a segment: those in its diametral circle, or only\n"
-                  "those in its diametral lens (fewer splits)")
-      ->check(CLI::IsMember({"circle", "lens"}))
-      ->capture_default_str();
+                  "those in its diametral lens, seeing it at 180 - 2 x the angle bound degrees or\n"
+                  "more (as Triangle; fewer splits). Default: lens, but circle for midpoint\n"
+                  "selections (lepp-midpoint, midpoint-area), which crowd segments under a lens")
+      ->check(CLI::IsMember({"circle", "lens"}));
   cmd->add_option("--ds", args->ds, "Mesh data structure: tds (triangle-based) or dcel (half-edge)")
       ->check(CLI::IsMember({"tds", "dcel"}))
       ->capture_default_str();
@@ -540,8 +548,8 @@ Command add_refine_command(CLI::App& parent) {
                 "After refining, remove every free Steiner vertex whose removal raises the\n"
                 "smallest angle round it and keeps the bounds (what --algorithm improve does)");
   cmd->add_flag("--delete-free", args->delete_free,
-                "When a segment is split, remove the free Steiner vertices inside its\n"
-                "diametral circle (Ruppert's variant; counted in removed_vertices)");
+                "When a segment is split away from corners, remove the free Steiner vertices\n"
+                "inside its diametral circle (Chew's rule, as Triangle; counted in removed_vertices)");
   add_record_option(*cmd, args->record);
   cmd->add_option("-o,--output", args->prefix,
                   "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly\n"

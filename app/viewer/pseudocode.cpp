@@ -148,8 +148,8 @@ constexpr const char* kCdt = "T ← constrained Delaunay triangulation of the in
 // The head of every Delaunay refinement program: the mesh, and Ruppert's first loop.
 void refinement_head(Builder& b) {
   b.add(At::start, {kCdt})
-      .add(At::encroached, {"while a subsegment s is encroached (a vertex in its diametral circle):"})
-      .add(At::split, {"    split s at its midpoint (concentric shells round a segment's end)"});
+      .add(At::encroached, {"while a subsegment s is encroached (a vertex in its diametral lens or circle):"})
+      .add(At::split, {"    split s at its midpoint (concentric shell: where another segment meets)"});
 }
 
 // The tail: the new point (c, or p in a Lepp program's inner loop) rejected or inserted, by
@@ -182,7 +182,7 @@ void refinement_tail(Builder& b, Insertion insertion, bool lepp) {
   }
 }
 
-constexpr const char* kBadLoop = "while a bad triangle t remains (a bound fails; the worst first):";
+constexpr const char* kBadLoop = "while a bad triangle t remains (a bound fails; shortest edge first):";
 constexpr const char* kRuppertRefs =
     "J. Ruppert, \"A Delaunay refinement algorithm for quality 2-dimensional mesh generation\", "
     "J. Algorithms 18(3), 1995; L. P. Chew, Cornell TR 89-983, 1989, and SoCG 1993; concentric shells: "

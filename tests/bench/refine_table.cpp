@@ -1,4 +1,5 @@
 // refine_table DIR [--inputs A,guitar,...] [--bounds 20,25,...,36] [--max-steiner N]
+//                   [--triangle PATH] [--only-triangle]
 //
 // The comparison tables of docs/refinement.md, as Markdown on standard output: each Delaunay
 // selection at each angle bound on each input (Steiner vertices, triangles, smallest angle,
@@ -7,15 +8,27 @@
 // run (25 to 33 degrees); and the area, aspect and combined algorithms. One run per cell (refinement is
 // deterministic; the ms column is one measurement, for scale only).
 //
+// With --triangle PATH (a Triangle 1.6 binary, built beside this program and never part of
+// meshstep), a first table sets every selection's Steiner count beside `triangle -pq<bound>`
+// on the same input (with `a` where the .poly has regions: meshstep applies their areas),
+// with the ratios' geometric means; --only-triangle prints that table alone.
+//
 // Exit status: 0 ok, 1 a run failed, 2 usage error or unreadable input.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <optional>
 #include <exception>
 #include <filesystem>
 #include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include <unistd.h>
 
 #include "bench_args.hpp"
 #include "meshstep/check/quality.hpp"
@@ -31,7 +44,7 @@ using namespace meshstep;
 
 constexpr const char* kUsage =
     "usage: refine_table DIR [--inputs A,guitar,la,face,earcut_water-huge] [--bounds 20,25,30,33,34,35,36]\n"
-    "                    [--max-steiner N]\n"
+    "                    [--max-steiner N] [--triangle PATH] [--only-triangle]\n"
     "Prints docs/refinement.md's tables for DIR/NAME.poly of each input.\n";
 
 int usage_error(const std::string& message) { return meshstep::bench::usage_error("refine_table", message, kUsage); }
@@ -88,7 +101,82 @@ RefineOptions named(std::string_view name, double min_angle, std::size_t max_ste
 struct Input {
   std::string name;
   Pslg pslg;
+  std::string path;
 };
+
+// The first number of the first line that is not a comment.
+std::optional<std::size_t> leading_count(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    return std::strtoull(line.c_str() + first, nullptr, 10);
+  }
+  return std::nullopt;
+}
+
+// Triangle's Steiner vertices at `bound` (output vertices less input vertices), or nothing
+// when it fails or takes more than a minute. It writes beside its input: a copy in a
+// temporary folder.
+std::optional<std::size_t> triangle_steiner(const std::string& triangle, const Input& in, double bound) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("refine_table_triangle_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path poly = dir / (in.name + ".poly");
+  fs::copy_file(in.path, poly, fs::copy_options::overwrite_existing);
+  char bound_text[32];
+  std::snprintf(bound_text, sizeof bound_text, "%g", bound);
+  // a: the regional areas, only where there are regions (Triangle then expects the section).
+  const std::string command = "timeout 60 '" + triangle + "' -pq" + bound_text + (in.pslg.regions.empty() ? "" : "a") +
+                              " -Q '" + poly.string() + "'";
+  std::optional<std::size_t> steiner;
+  if (std::system(command.c_str()) == 0) {
+    const auto out = leading_count(dir / (in.name + ".1.node")), input = leading_count(poly);
+    if (out && input && *out >= *input) steiner = *out - *input;
+  }
+  fs::remove_all(dir);
+  return steiner;
+}
+
+// Steiner vertices of every Delaunay selection against Triangle's, with the ratios'
+// geometric mean and largest per selection (over the cells where Triangle finished).
+void triangle_table(const std::vector<Input>& inputs, const std::vector<double>& bounds, std::size_t cap,
+                    const std::string& triangle) {
+  static constexpr std::string_view kSelections[] = {"offcenter", "circumcenter", "lepp-centroid", "lepp-midpoint"};
+  std::printf("| input | bound | Triangle 1.6 | offcenter (default) | circumcenter | lepp-centroid | lepp-midpoint |\n"
+              "|---|--:|--:|--:|--:|--:|--:|\n");
+  std::map<std::string_view, std::vector<double>> logs;
+  for (const Input& in : inputs)
+    for (const double bound : bounds) {
+      const std::optional<std::size_t> theirs = triangle_steiner(triangle, in, bound);
+      std::printf("| %s | %g | %s |", in.name.c_str(), bound, theirs ? std::to_string(*theirs).c_str() : "did not end");
+      for (const std::string_view selection : kSelections) {
+        const Run r = run(in.pslg, named(selection, bound, cap));
+        const std::size_t ours = r.report.steiner_vertices;
+        if (r.report.stopped_by_cap) {
+          std::printf(" capped at %zu |", ours);
+        } else if (theirs && *theirs > 0) {
+          const double ratio = static_cast<double>(std::max<std::size_t>(ours, 1)) / static_cast<double>(*theirs);
+          logs[selection].push_back(std::log(ratio));
+          std::printf(" %zu (%.2f) |", ours, ratio);
+        } else {
+          std::printf(" %zu |", ours);
+        }
+      }
+      std::printf("\n");
+      std::fflush(stdout);
+    }
+  std::printf("\n| selection | cells | geometric mean of ours / Triangle's | largest |\n|---|--:|--:|--:|\n");
+  for (const std::string_view selection : kSelections) {
+    const std::vector<double>& l = logs[selection];
+    if (l.empty()) continue;
+    double sum = 0.0, largest = l.front();
+    for (const double x : l) sum += x, largest = std::max(largest, x);
+    std::printf("| %s | %zu | %.3f | %.3f |\n", std::string(selection).c_str(), l.size(), std::exp(sum / l.size()),
+                std::exp(largest));
+  }
+  std::printf("\n");
+}
 
 void selection_table(const std::vector<Input>& inputs, const std::vector<double>& bounds, std::size_t cap) {
   static constexpr std::string_view kSelections[] = {"circumcenter", "offcenter", "lepp-midpoint", "lepp-centroid"};
@@ -170,7 +258,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> names = {"A", "guitar", "la", "face", "earcut_water-huge"};
   std::vector<double> bounds = {20, 25, 30, 33, 34, 35, 36};
   std::size_t cap = 1'000'000;  // runs past the highest bound stop here
-  std::string dir;
+  std::string dir, triangle;
+  bool only_triangle = false;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
     const bool has_value = i + 1 < argc;
@@ -188,6 +277,10 @@ int main(int argc, char** argv) {
           return usage_error("--bounds: '" + b + "' is not an angle in (0, 60)");
         bounds.push_back(value);
       }
+    } else if (arg == "--triangle" && has_value) {
+      triangle = argv[++i];
+    } else if (arg == "--only-triangle") {
+      only_triangle = true;
     } else if (arg == "--max-steiner" && has_value) {
       if (!parse_whole(argv[++i], cap))
         return usage_error(std::string("--max-steiner: '") + argv[i] + "' is not a count");
@@ -199,15 +292,20 @@ int main(int argc, char** argv) {
   }
   if (dir.empty()) return usage_error("no input directory");
   if (names.empty() || bounds.empty()) return usage_error("no inputs or no bounds");
+  if (only_triangle && triangle.empty()) return usage_error("--only-triangle needs --triangle PATH");
   std::vector<Input> inputs;
   try {
-    for (const std::string& name : names)
-      inputs.push_back({name, io::read_pslg((std::filesystem::path(dir) / (name + ".poly")).string())});
+    for (const std::string& name : names) {
+      const std::string path = (std::filesystem::path(dir) / (name + ".poly")).string();
+      inputs.push_back({name, io::read_pslg(path), path});
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "refine_table: error: %s\n", e.what());
     return 2;
   }
   try {
+    if (!triangle.empty()) triangle_table(inputs, bounds, cap, triangle);
+    if (only_triangle) return 0;
     selection_table(inputs, bounds, cap);
     improvement_table(inputs, bounds, cap);
     other_algorithms_table(inputs, cap);

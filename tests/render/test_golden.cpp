@@ -298,7 +298,7 @@ std::optional<Scene> bisection_case() {
 }
 
 std::optional<Scene> removed_vertex_case() {
-  const auto m = moment("--algorithm improve --min-angle 30", [](const Event& e) {
+  const auto m = moment("--algorithm improve --min-angle 30 --max-area 1", [](const Event& e) {
     return e.type == EventType::remove_vertex;
   });
   if (!m) return std::nullopt;
@@ -393,7 +393,7 @@ const std::vector<GoldenCase>& cases() {
       {"input", input_case},
       {"insertion_flips", insertion_case},
       {"segment_recovery", segment_recovery_case},
-      {"encroached_circle", [] { return encroached_case(kOffcenter, false); }},
+      {"encroached_circle", [] { return encroached_case(kOffcenter + std::string(" --encroachment circle"), false); }},
       {"encroached_lens", [] { return encroached_case("--algorithm offcenter --min-angle 30 --encroachment lens", true); }},
       {"offcenter_selection", offcenter_case},
       {"cavity", cavity_case},

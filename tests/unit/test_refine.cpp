@@ -75,6 +75,7 @@ double smallest_input_angle_deg(const Pslg& in) {
 RefineOptions with_angle(double degrees, Selection selection = Selection::circumcenter) {
   RefineOptions o;
   o.selection = selection;
+  o.encroachment = default_encroachment(selection);
   o.criteria.min_angle_deg = degrees;
   o.criteria.max_steiner = 3'000'000;  // a safety net: no test input comes near it
   return o;

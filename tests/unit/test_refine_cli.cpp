@@ -173,7 +173,8 @@ TEST_F(RefineCli, RegionalAreasAreABoundOfTheirOwn) {
 TEST_F(RefineCli, ImproveRemovesVerticesAndKeepsTheBound) {
   const std::string input = write("hole.poly", kSquareWithHole);
   const std::string prefix = dir_.file("improved");
-  const CommandResult plain = meshstep("refine " + input + " --min-angle 28 --max-area 0.05 --no-output --stats json");
+  const CommandResult plain =
+      meshstep("refine " + input + " --algorithm circumcenter --min-angle 28 --max-area 0.05 --no-output --stats json");
   const CommandResult r = meshstep("refine " + input + " --algorithm improve --min-angle 28 --max-area 0.05 -o " +
                                    prefix + " --stats json");
   ASSERT_EQ(plain.status, 0) << plain.err;

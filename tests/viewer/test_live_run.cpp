@@ -113,7 +113,9 @@ TEST_F(LiveRunProgram, ARunStoppedAtItsMemoryBudgetIsShownAsFarAsItWent) {
   EXPECT_TRUE(has(r.output, "refinement stopped at the memory budget (20 MB")) << r.output;
   const std::string opened = read_text(after);
   EXPECT_TRUE(has(opened, "\"title\": \"" + plate + "\"")) << opened;
-  EXPECT_EQ(field(opened, "triangles"), 131072) << opened;  // 20 MB at 160 bytes a triangle
+  // 20 MB at 160 bytes a triangle: 131072, and the step that reached it adds one or two.
+  EXPECT_GE(field(opened, "triangles"), 131072) << opened;
+  EXPECT_LE(field(opened, "triangles"), 131073) << opened;
   EXPECT_EQ(field(opened, "position"), field(opened, "event_count")) << opened;
 }
 

@@ -26,7 +26,7 @@ constexpr const char* kLeppCentroid = "--algorithm lepp-centroid";
 constexpr const char* kLeppBisection = "--algorithm lepp-bisection --max-area 0.5";
 constexpr const char* kMidpointArea = "--algorithm midpoint-area --max-area 0.5";
 constexpr const char* kCombined = "--algorithm combined";
-constexpr const char* kImprove = "--algorithm improve --min-angle 30";  // removes a vertex on lesson.poly
+constexpr const char* kImprove = "--algorithm improve --min-angle 30 --max-area 1";  // removes a vertex on lesson.poly
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 

@@ -82,21 +82,21 @@ class ViewerProgram : public ::testing::TestWithParam<std::string> {
 TEST_P(ViewerProgram, KeysMoveTheCursorAndChangeWhatIsShown) {
   const std::string a = (dir_ / "a.json").string(), b = (dir_ / "b.json").string();
   VIEW_OR_SKIP(r,
-               "seek step 45\nframes 2\nstate " + a +
+               "seek step 47\nframes 2\nstate " + a +
                    "\nkey Right\nkey Shift+Left\nkey C\nkey F3\nkey Ctrl+2\nkey Home\nkey 2\nkey ?\nstate " + b +
                    "\nquit\n");
   const std::string before = read_text(a), after = read_text(b);
-  EXPECT_EQ(field(before, "position"), static_cast<long long>(log_->step_start(45)));
-  EXPECT_EQ(field(before, "step"), 45);
-  EXPECT_TRUE(has(before, "\"explain_heading\": \"step 45 of ")) << before;
-  EXPECT_TRUE(has(before, "\"caption\": \"refine \u00B7 step 45 of ")) << before;
-  // The pseudo-code panel follows the run: an off-center refinement, and step 45 ends in
+  EXPECT_EQ(field(before, "position"), static_cast<long long>(log_->step_start(47)));
+  EXPECT_EQ(field(before, "step"), 47);
+  EXPECT_TRUE(has(before, "\"explain_heading\": \"step 47 of ")) << before;
+  EXPECT_TRUE(has(before, "\"caption\": \"refine \u00B7 step 47 of ")) << before;
+  // The pseudo-code panel follows the run: an off-center refinement, and step 47 ends in
   // the insertion's Lawson flips (in-circle tests), as its explanation says.
   EXPECT_TRUE(has(before, "\"code_title\": \"Off-center refinement")) << before;
   EXPECT_TRUE(has(before, "Lawson flips")) << before;
   EXPECT_TRUE(has(before, "\"code_line\": \"") && has(before, "in-circle")) << before;
-  // Right: to the end of step 46; Shift+Left: one event back, inside it.
-  const long long inside = static_cast<long long>(log_->step_start(46)) - 1;
+  // Right: to the end of step 48; Shift+Left: one event back, inside it.
+  const long long inside = static_cast<long long>(log_->step_start(48)) - 1;
   EXPECT_EQ(field(after, "bookmarks\": {\"2"), inside) << after;  // Ctrl+2 set there
   EXPECT_EQ(field(after, "position"), inside) << "Home, then 2 went back to the bookmark";
   EXPECT_TRUE(has(after, "\"color_by\": \"angle\"")) << after;
@@ -165,7 +165,7 @@ TEST_P(ViewerProgram, IdleFramesDoNotAllocate) {
 
 TEST_P(ViewerProgram, WindowScreenshotMatchesItsGolden) {
   const fs::path shot = dir_ / "shot.png";
-  VIEW_OR_SKIP(r, "seek step 45\nframes 3\nscreenshot " + shot.string() + "\nquit\n");
+  VIEW_OR_SKIP(r, "seek step 47\nframes 3\nscreenshot " + shot.string() + "\nquit\n");
   const scene::Image actual = scene::read_png(shot.string());
   ASSERT_EQ(actual.width, 1024);
   ASSERT_EQ(actual.height, 640);
@@ -281,16 +281,17 @@ TEST(ViewerInvariants, ChecksEveryStepAndNamesTheOneThatBreaks) {
 TEST(ViewerInspector, SelectsVerticesAndTriangles) {
   const replay::LogReader* log = golden::lesson_run(kOffcenter);
   ASSERT_NE(log, nullptr);
-  // The vertex step 45 inserted (0-based step 44), and a triangle of the mesh after it.
+  // The vertex step 47 inserted (0-based step 46; a refine step, the off-center run's 45th and 46th
+  // being segment splits), and a triangle of the mesh after it.
   const std::uint64_t inputs = std::strtoull(log->parameter("input_vertices", "0").c_str(), nullptr, 10);
   std::uint32_t vertex = kNone;
   for (std::uint32_t v = 0; v < log->vertices().size(); ++v)
-    if (log->vertices()[v].event != kNone && log->step_of_event(log->vertices()[v].event) == 44 &&
+    if (log->vertices()[v].event != kNone && log->step_of_event(log->vertices()[v].event) == 46 &&
         log->vertices()[v].input_index >= inputs)
       vertex = v;
   ASSERT_NE(vertex, kNone);
   replay::Replay cursor(*log);
-  cursor.seek_step(45);
+  cursor.seek_step(47);
   const TriMesh mesh = cursor.mesh();
   ASSERT_FALSE(mesh.triangles.empty());
   const auto& t = mesh.triangles.front();
@@ -311,7 +312,7 @@ TEST(ViewerInspector, SelectsVerticesAndTriangles) {
   fs::create_directories(dir);
   const fs::path script = dir / "s.txt", a = dir / "a.json", b = dir / "b.json";
   char line[256];
-  std::snprintf(line, sizeof line, "seek step 45\nwait\nselect %.17g %.17g\nframes 1\nstate %s\nselect %.17g %.17g\nframes 1\nstate %s\nquit\n",
+  std::snprintf(line, sizeof line, "seek step 47\nwait\nselect %.17g %.17g\nframes 1\nstate %s\nselect %.17g %.17g\nframes 1\nstate %s\nquit\n",
                 log->vertices()[vertex].point.x, log->vertices()[vertex].point.y, a.c_str(), c.x, c.y, b.c_str());
   std::ofstream(script) << line;
   const Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + log->path() + " --offscreen -q --script " + script.string());
@@ -319,8 +320,8 @@ TEST(ViewerInspector, SelectsVerticesAndTriangles) {
   ASSERT_EQ(r.status, 0) << r.output;
   const std::string vs = read_text(a), ts = read_text(b);
   EXPECT_TRUE(has(vs, "\"selection\": \"vertex " + std::to_string(vertex) + " at")) << vs;
-  EXPECT_TRUE(has(vs, "Steiner, inserted by step 45 (refine)")) << vs;
-  // Its history: step 45 first, then every step whose mesh-changing events name it.
+  EXPECT_TRUE(has(vs, "Steiner, inserted by step 47 (refine)")) << vs;
+  // Its history: step 47 first, then every step whose mesh-changing events name it.
   std::vector<std::uint64_t> expected;
   for (std::uint64_t e = 0; e < log->event_count(); ++e) {
     const replay::Event ev = log->event(e);
@@ -334,7 +335,7 @@ TEST(ViewerInspector, SelectsVerticesAndTriangles) {
   std::string list = "[";
   for (const std::uint64_t k : expected) list += (list.size() > 1 ? ", " : "") + std::to_string(k);
   ASSERT_GE(expected.size(), 2u);
-  EXPECT_EQ(expected.front(), 45u);
+  EXPECT_EQ(expected.front(), 47u);
   EXPECT_TRUE(has(vs, "\"selection_history\": " + list + "]")) << list << "] in " << vs;
   EXPECT_TRUE(has(ts, "\"selection\": \"triangle ")) << ts;
   for (const std::uint32_t id : ids) {

@@ -54,6 +54,8 @@ detail::ScaledCriteria scaled(const RefineCriteria& c, int exponent, const Trian
   // when only size bounds are set.
   const double angle = c.min_angle_deg > 0.0 ? c.min_angle_deg : 20.7;
   s.offcenter_beta = 0.5 / std::sin(quality::radians(angle));
+  const double lens_cos = std::cos(quality::radians(lens_angle_deg(c)));
+  s.lens_cos2 = lens_cos * lens_cos;
   // The smaller of the regions' bound and the caller's, where either is set.
   const bool own = !regions.empty();
   if (own || c.max_area_for) {
@@ -165,6 +167,24 @@ const char* to_string(Selection s) {
   return "?";
 }
 const char* to_string(RefineInsertion i) { return i == RefineInsertion::bisection ? "bisection" : "delaunay"; }
-const char* to_string(RefineOrder o) { return o == RefineOrder::worst_first ? "worst" : "fifo"; }
+Encroachment default_encroachment(Selection selection) {
+  return selection == Selection::lepp_midpoint || selection == Selection::longest_edge_midpoint ? Encroachment::circle
+                                                                                                 : Encroachment::lens;
+}
+
+double lens_angle_deg(const RefineCriteria& c) {
+  // Without an angle bound nothing caps how flat a triangle by a segment may be: the circle.
+  double angle = c.min_angle_deg > 0.0 ? 180.0 - 2.0 * c.min_angle_deg : 90.0;
+  // A point that sees a segment at more than the largest angle allowed would only make a
+  // triangle that has to go again (and another, and another: a 130-degree lens under a
+  // 120-degree bound never ended); an aspect bound R allows at most 2 atan(R / 2) there.
+  if (c.max_angle_deg < 180.0) angle = std::min(angle, c.max_angle_deg);
+  if (c.max_aspect > 0.0) angle = std::min(angle, 2.0 * quality::degrees(std::atan(c.max_aspect / 2.0)));
+  return std::max(90.0, angle);
+}
+
+const char* to_string(RefineOrder o) {
+  return o == RefineOrder::smallest_first ? "smallest" : o == RefineOrder::worst_first ? "worst" : "fifo";
+}
 
 }  // namespace meshstep

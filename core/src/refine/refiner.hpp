@@ -1,17 +1,20 @@
 // Delaunay refinement on a carved constrained Delaunay triangulation (Ruppert, Chew,
 // Shewchuk's Triangle, Ungor's off-centers), over any TriangleMesh and recording policy.
 //
-// Loop: split every encroached subsegment first; then take the worst bad triangle, select
+// Loop: split every encroached subsegment first; then take the bad triangle with the
+// shortest shortest edge (Triangle's order; worst angle first or FIFO on request), select
 // its point, walk to it from the triangle. If the walk is blocked by a segment, or the point
 // lies inside the diametral circle (or lens) of a segment on the boundary of its cavity, the
 // point is rejected and those segments are split instead; otherwise it is inserted. New
 // faces are checked as they appear, so the queue holds every bad triangle at all times.
 //
-// Segment splits use concentric shells: a subsegment with exactly one segment end (an input
-// vertex or a crossing) is split at a power-of-two distance from that end, so that splits on
-// two segments meeting at a small angle stay at matching distances and do not chase each
-// other (Ruppert's "modified segment splitting"). A bad triangle whose smallest angle sits
-// between two segments cannot be improved (the angle is the input's) and is skipped.
+// Segment splits use concentric shells where segments meet: a subsegment that shares an end
+// with another segment in a triangle beside it is split at a power-of-two distance from
+// that end, so that splits on two segments meeting at a small angle stay at matching
+// distances and do not chase each other (Ruppert's "modified segment splitting", decided
+// locally as Triangle does); any other subsegment at its midpoint. A bad triangle whose
+// smallest angle sits between two segments cannot be improved (the angle is the input's)
+// and is skipped.
 //
 // Works in the triangulation's scaled coordinates (triangulate's exact power-of-two scaling):
 // angles do not change, and the caller scales area and size bounds.
@@ -128,7 +131,7 @@ class Refiner {
   };
 
   struct Candidate {
-    double priority;  // smaller: worse
+    double priority;  // smaller: sooner (shortest edge squared, or sin^2 of the smallest angle)
     std::array<VertexId, 3> key;  // the vertices, sorted: ties go by vertex ids
     FaceId face;
     VertexId a, b, c;
@@ -193,8 +196,7 @@ class Refiner {
     const Point &pa = point(a), &pb = point(b);
     const double ax = pa.x - p.x, ay = pa.y - p.y, bx = pb.x - p.x, by = pb.y - p.y;
     const double dot = ax * bx + ay * by;
-    // The lens: the angle a-p-b is over 120 degrees.
-    return dot < 0.0 && 4.0 * dot * dot > (ax * ax + ay * ay) * (bx * bx + by * by);
+    return dot < 0.0 && dot * dot >= criteria_.lens_cos2 * (ax * ax + ay * ay) * (bx * bx + by * by);
   }
 
   // In a constrained Delaunay triangulation a segment is encroached when a vertex of the
@@ -222,7 +224,7 @@ class Refiner {
     const bool size_bad = too_large(criteria_, s, point(a), point(b), point(c));
     if (!angle_bad && !size_bad) return;
     if (!size_bad && cannot_improve(h, s)) return;
-    push_bad({sin2, face_key(f), f, a, b, c});
+    push_bad({options_.order == RefineOrder::smallest_first ? s.shortest2 : sin2, face_key(f), f, a, b, c});
   }
 
   // Triangles refinement leaves alone when only their angles are bad: the smallest angle
@@ -282,13 +284,24 @@ class Refiner {
       fifo_.push_back(c);
       return;
     }
-    // Worst first, to within 1/1024 of the quality range (the bucket); within a bucket the
-    // newest first, which keeps the work near the faces just made.
-    const auto bucket = static_cast<std::size_t>(
-        std::min(static_cast<double>(kBuckets - 1), std::max(0.0, c.priority) * (kBuckets / 0.75)));
+    // Within a bucket the newest first, which keeps the work near the faces just made.
+    const std::size_t bucket = bucket_of(c.priority);
     buckets_[bucket].push_back(c);
     lowest_ = std::min(lowest_, bucket);
   }
+  // Smallest first: a bucket per half power of two of the shortest edge squared (its
+  // exponent and whether the mantissa passes sqrt(1/2)), the whole double range. Worst
+  // first: 1/1024 of the quality range, sin^2 of the smallest angle from 0 to 0.75.
+  std::size_t bucket_of(double priority) const {
+    if (options_.order == RefineOrder::smallest_first) {
+      int e;
+      const double m = std::frexp(priority, &e);  // priority = m 2^e, m in [0.5, 1), e in [-1073, 1024]
+      const long k = 2L * e + (m > 0.7071067811865476) + 2146;
+      return static_cast<std::size_t>(std::clamp(k, 0L, static_cast<long>(kBuckets) - 1));
+    }
+    return static_cast<std::size_t>(std::min(1023.0, std::max(0.0, priority) * (1024 / 0.75)));
+  }
+
   bool pop_bad(Candidate& c) {
     if (options_.order == RefineOrder::fifo) {
       if (fifo_.empty()) return false;
@@ -527,14 +540,19 @@ class Refiner {
     if (still_there(c)) push_bad(c);
   }
 
-  // Splits the segment of h: at its midpoint, or on a concentric shell around its one
-  // segment end (is_segment_end). `by`: the vertex or rejected point that encroached, for
+  // Splits the segment of h: at its midpoint, or on a concentric shell (split_point). `by`: the vertex or rejected point that encroached, for
   // the record.
   // Returns false, changing nothing, when the rounded split point would not leave both
   // halves with valid triangles (a subsegment a few ulps long): the floor of refinement.
   bool split_segment(HalfEdge h, VertexId by_vertex, const Point* by_point) {
     const VertexId a = mesh_.origin(h), b = mesh_.dest(h);
-    const Point p = split_point(a, b);
+    // Does another segment meet a-b at a (at b) in a triangle beside it?
+    bool corner_a = is_segment(mesh_.prev(h)), corner_b = is_segment(mesh_.next(h));
+    if (const HalfEdge t = mesh_.twin(h); t != kNone) {
+      corner_a = corner_a || is_segment(mesh_.next(t));
+      corner_b = corner_b || is_segment(mesh_.prev(t));
+    }
+    const Point p = split_point(a, b, corner_a, corner_b);
     if (!splits_cleanly(h, p) || !exact_range_.holds(p)) {
       ++unsplittable_;
       return false;
@@ -577,7 +595,9 @@ class Refiner {
     ++segment_splits_;
     segments_.push_back({std::min(a, b), v, kNone});
     segments_.push_back({v, std::max(a, b), kNone});
-    if (options_.delete_free_near_splits) {
+    // Not at a corner (Chew's rule, as Triangle): there the free vertices are what the
+    // shells and the triangles between the two segments are made of.
+    if (options_.delete_free_near_splits && !corner_a && !corner_b) {
       delete_free_vertices_near(a, b, v);
       out = mesh_.vertex_half_edge(v);
     }
@@ -638,17 +658,16 @@ class Refiner {
     return info;
   }
 
-  // A vertex where segments end: an input vertex, or one the triangulation put where two
-  // segments cross (a crossing makes small angles as surely as the input's own corners).
-  // Not a vertex that refinement put on a segment.
-  bool is_segment_end(VertexId v) const { return on_segment_[v].first == kNone; }
-
-  Point split_point(VertexId a, VertexId b) const {
+  // Where to split subsegment a-b, given whether another segment meets it at either end in
+  // a triangle beside it: there, on a concentric shell round that end (the power of two
+  // nearest half the length, so the pieces are at worst 1:2), else at the midpoint. With a
+  // corner at both ends, round the one with the smaller id: the same whichever way the data
+  // structure hands the edge over.
+  Point split_point(VertexId a, VertexId b, bool corner_a, bool corner_b) const {
     const Point &pa = point(a), &pb = point(b);
-    const bool a_end = is_segment_end(a), b_end = is_segment_end(b);
-    if (a_end == b_end) return {(pa.x + pb.x) / 2.0, (pa.y + pb.y) / 2.0};
-    // A shell around the segment's end: the power of two nearest half the length.
-    const Point &from = a_end ? pa : pb, &to = a_end ? pb : pa;
+    if (!corner_a && !corner_b) return {(pa.x + pb.x) / 2.0, (pa.y + pb.y) / 2.0};
+    const bool from_a = corner_a && (!corner_b || a < b);
+    const Point &from = from_a ? pa : pb, &to = from_a ? pb : pa;
     const double length = std::sqrt(quality::squared_distance(pa, pb));
     const double d = std::exp2(std::round(std::log2(length / 2.0)));
     const double t = d / length;
@@ -748,8 +767,8 @@ class Refiner {
   std::vector<std::pair<VertexId, VertexId>> on_segment_;
   std::vector<std::uint8_t> small_angle_;           // by vertex: two segments meet at < 60 degrees
   std::vector<Suspect> segments_;  // subsegments to check for encroachment
-  // Bad triangles by quality (sin^2 of the smallest angle, 0 to 0.75), worst bucket first.
-  static constexpr std::size_t kBuckets = 1024;
+  // Bad triangles by priority (bucket_of), the first bucket first.
+  static constexpr std::size_t kBuckets = 4196;  // enough for either order (bucket_of)
   std::vector<std::vector<Candidate>> buckets_ = std::vector<std::vector<Candidate>>(kBuckets);
   std::size_t lowest_ = kBuckets;
   std::deque<Candidate> fifo_;

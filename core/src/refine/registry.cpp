@@ -116,6 +116,7 @@ RefineOptions options_for(const AlgorithmInfo& algorithm) {
   RefineOptions o;
   o.algorithm = std::string(algorithm.name);
   o.selection = algorithm.selection;
+  o.encroachment = default_encroachment(algorithm.selection);
   o.insertion = algorithm.insertion;
   o.improve = algorithm.improve;
   return o;

@@ -18,6 +18,10 @@ struct ScaledCriteria {
   // The area bound of a triangle (its region's, the caller's); <= 0 or empty: none.
   std::function<double(const Point&, const Point&, const Point&)> max_area_for;
   double offcenter_beta = 0.0;   // radius-edge bound for off-centers
+  // The diametral lens (Encroachment::lens): p encroaches on segment ab when the angle apb
+  // is at least 180 - 2 theta, theta the angle bound (as Triangle); lens_cos2 is the square
+  // of that angle's cosine: dot(a - p, b - p) < 0 and dot^2 >= lens_cos2 |a - p|^2 |b - p|^2.
+  double lens_cos2 = 0.25;
   std::size_t max_triangles = 0, max_steiner = 0;
 };
 

@@ -310,7 +310,9 @@ class OverlayPainter {
         add(ShapeKind::lines, "encroached_segment", "encroached subsegment", style_.encroached.stroke, px::thick);
     line(seg, a, b);
     if (log_.parameter("encroachment") == "lens") {
-      lens(a, b);
+      // Logs before the lens followed the bound saw it at 120 degrees.
+      const std::string angle = log_.parameter("lens_angle");
+      lens(a, b, angle.empty() ? 120.0 : std::strtod(angle.c_str(), nullptr));
     } else {
       Shape& c = add(ShapeKind::circles, "diametral_circle", "diametral circle", style_.diametral.stroke, 2.0f);
       c.dashed = true;
@@ -319,24 +321,27 @@ class OverlayPainter {
     }
   }
 
-  // Shewchuk's diametral lens: the points that see a-b at more than 120 degrees, bounded by
-  // two arcs through a and b whose circles are centred on the perpendicular bisector, each
-  // on the far side of a-b, seen from a and b at 30 degrees to the segment (radius |ab|/sqrt 3).
-  void lens(const Point& a, const Point& b) {
+  // Shewchuk's diametral lens: the points that see a-b at `angle` degrees or more (180 - 2
+  // theta for the bound theta; 90 is the diametral circle), bounded by two arcs through a
+  // and b whose circles are centred on the perpendicular bisector, each on the far side of
+  // a-b (inscribed angle: radius |ab| / (2 sin angle), centre |cos angle| radii from a-b).
+  void lens(const Point& a, const Point& b, double angle) {
     const double length = std::sqrt(quality::squared_distance(a, b));
-    if (!(length > 0.0)) return;
+    if (!(length > 0.0) || !(angle >= 90.0 && angle < 180.0)) return;
     const Point m = midpoint(a, b);
     const Point u{(b.x - a.x) / length, (b.y - a.y) / length}, n{-u.y, u.x};
-    const double radius = length / std::sqrt(3.0), offset = length / (2.0 * std::sqrt(3.0));
-    Shape& s = add(ShapeKind::lines, "diametral_lens", "diametral lens (sees the segment at 120\u00B0)",
-                   style_.diametral.stroke, 2.0f);
+    const double phi = angle * std::numbers::pi / 180.0;
+    const double radius = length / (2.0 * std::sin(phi)), offset = -radius * std::cos(phi);
+    char label[64];
+    std::snprintf(label, sizeof label, "diametral lens (sees the segment at %g\u00B0)", angle);
+    Shape& s = add(ShapeKind::lines, "diametral_lens", label, style_.diametral.stroke, 2.0f);
     s.dashed = true;
     std::vector<Point> outline;
-    // Above a-b: the circle centred below, from a (psi = -60 degrees) to b (+60).
+    // Above a-b: the circle centred below, from a (psi = -(180 - angle) degrees) to b.
     for (const double side : {1.0, -1.0}) {
       const Point c{m.x - side * offset * n.x, m.y - side * offset * n.y};
       for (int i = 0; i <= kLensArcSegments; ++i) {
-        const double psi = side * (-1.0 + 2.0 * i / kLensArcSegments) * std::numbers::pi / 3.0;
+        const double psi = side * (-1.0 + 2.0 * i / kLensArcSegments) * (std::numbers::pi - phi);
         outline.push_back({c.x + radius * (std::sin(psi) * u.x + side * std::cos(psi) * n.x),
                            c.y + radius * (std::sin(psi) * u.y + side * std::cos(psi) * n.y)});
       }
