@@ -45,7 +45,11 @@ std::vector<Section> sections() {
   for (const AlgorithmInfo& a : algorithms())
     algorithm_rows.push_back({std::string(a.name), std::string(a.description) + " (selection " +
                                                        to_string(a.selection) + "; default --min-angle " +
-                                                       short_number(a.default_min_angle_deg) + ")"});
+                                                       short_number(a.default_min_angle_deg) +
+                                                       (a.known_to_end_deg > 0.0 ? "; ends in practice to " +
+                                                                                       short_number(a.known_to_end_deg) + " degrees"
+                                                                                 : std::string()) +
+                                                       ")"});
   return {
       {"algorithms", "Algorithms (refine --algorithm NAME)", std::move(algorithm_rows)},
       {"selections", "Selections (refine --select S): where a bad triangle's new vertex goes",

@@ -31,7 +31,7 @@ namespace {
 struct RefineArgs {
   std::string input;
   std::string prefix;
-  std::string algorithm = "offcenter";
+  std::string algorithm{kDefaultAlgorithm};
   std::string select;  // empty: the algorithm's own
   double min_angle = 0.0;
   double max_angle = 180.0;
@@ -233,15 +233,18 @@ int run_refine(const RefineArgs& args) {
   const bool budget_caps = budget_triangles && (!criteria.max_triangles || criteria.max_triangles > budget_triangles);
   const std::string budget_words = "the memory budget (" + memory_text(budget) + ", about " +
                                    std::to_string(budget_triangles) + " triangles; --max-memory to change)";
-  // Delaunay refinement is proven to end only to 20.7 degrees (Ruppert) or 28.6 (Shewchuk),
-  // and ends in practice to about 34, as Triangle's documentation says of its own.
-  constexpr double kKnownToEnd = 34.0;
-  if (criteria.min_angle_deg > kKnownToEnd && options.insertion != RefineInsertion::bisection)
-    print_warning(verbosity, "--min-angle " + header_number(criteria.min_angle_deg) + " is above about " + header_number(kKnownToEnd) +
-                                 " degrees, past which Delaunay refinement is not known to end" +
-                                 (budget_caps ? ": it stops at " + budget_words
-                                              : criteria.max_triangles || criteria.max_steiner ? ": it stops at your cap"
-                                                                                               : " (and no cap is set)"));
+  // Delaunay refinement is proven to end only to 20.7 degrees (Ruppert) or 28.6 (Shewchuk);
+  // in practice each algorithm ends to its registry's known_to_end_deg (34 for off-centers,
+  // as Triangle's documentation says of its own), judged with its own selection.
+  const AlgorithmInfo* selected = args.select.empty() ? algorithm : find_algorithm(args.select);
+  const double known_to_end = (selected ? selected : algorithm)->known_to_end_deg;
+  if (known_to_end > 0.0 && criteria.min_angle_deg > known_to_end && options.insertion != RefineInsertion::bisection)
+    print_warning(verbosity, "--min-angle " + header_number(criteria.min_angle_deg) + " is above " +
+                                 header_number(known_to_end) + " degrees, past which " +
+                                 to_string(options.selection) + " refinement is not known to end" +
+                                 (criteria.max_triangles || criteria.max_steiner ? ": it stops at your cap"
+                                  : budget_caps                                  ? ": it stops at " + budget_words
+                                                                                 : " (and no cap is set)"));
 
   const bool no_bound = criteria.min_angle_deg <= 0.0 && criteria.max_angle_deg >= 180.0 &&
                         criteria.max_aspect <= 0.0 && criteria.max_area <= 0.0 && !criteria.size && !area_file;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "mesh_validate.hpp"
+#include "meshstep/huge_pages.hpp"
 #include "meshstep/mesh/concept.hpp"
 #include "meshstep/mesh/dcel.hpp"
 #include "meshstep/mesh/tds.hpp"
@@ -786,6 +787,23 @@ TEST(Release, GivesTheMemoryBack) {
   release(v);
   EXPECT_TRUE(v.empty());
   EXPECT_EQ(v.capacity(), 0u);  // `v = {}` would keep all 1000
+}
+
+TEST(HugePages, GrowHugeDoublesAndKeepsTheElements) {
+  std::vector<std::uint32_t> v;
+  std::size_t reallocations = 0;
+  for (std::uint32_t i = 0; i < 100000; ++i) {
+    const std::size_t before = v.capacity();
+    grow_huge(v);
+    reallocations += v.capacity() != before;
+    ASSERT_GT(v.capacity(), v.size());
+    v.push_back(i);
+  }
+  EXPECT_LE(reallocations, 18u);  // geometric: about log2(100000) + 1
+  for (std::uint32_t i = 0; i < v.size(); ++i) ASSERT_EQ(v[i], i);
+  const std::size_t capacity = v.capacity();
+  grow_huge(v, capacity - v.size());  // room enough already
+  EXPECT_EQ(v.capacity(), capacity);
 }
 
 TEST(Dcel, FlipReusesTheEdgePair) {

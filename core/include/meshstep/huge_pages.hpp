@@ -36,4 +36,12 @@ void reserve_huge(std::vector<T>& v, std::size_t n) {
   v.swap(bigger);
 }
 
+// Room for `extra` more elements, as reserve_huge grows: call before push_back on arrays
+// that grow to tens of megabytes while an algorithm runs (a refinement's faces and
+// points), where each doubling would otherwise fault in fresh 4 KiB pages one by one.
+template <class T>
+void grow_huge(std::vector<T>& v, std::size_t extra = 1) {
+  if (v.capacity() - v.size() < extra) reserve_huge(v, v.size() + extra);
+}
+
 }  // namespace meshstep

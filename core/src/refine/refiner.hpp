@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "meshstep/delaunay/triangulation.hpp"
+#include "meshstep/huge_pages.hpp"
 #include "meshstep/refine/lepp.hpp"
 #include "meshstep/refine/quality.hpp"
 #include "meshstep/refine/refine.hpp"
@@ -286,6 +287,7 @@ class Refiner {
     }
     // Within a bucket the newest first, which keeps the work near the faces just made.
     const std::size_t bucket = bucket_of(c.priority);
+    grow_huge(buckets_[bucket]);
     buckets_[bucket].push_back(c);
     lowest_ = std::min(lowest_, bucket);
   }
@@ -528,6 +530,7 @@ class Refiner {
                          std::span<const Point>(alternatives, p == alternative ? 0 : 1));
     }
     const VertexId v = tri_.add_point(p);
+    grow_huge(on_segment_);
     on_segment_.push_back({kNone, kNone});
     const HalfEdge out = tri_.insert_in_step(v, w.h);
     ++triangles_split_;
@@ -589,6 +592,7 @@ class Refiner {
     away_from_v_.erase(std::unique(away_from_v_.begin(), away_from_v_.end()), away_from_v_.end());
     check_faces(away_from_v_);
     out = mesh_.vertex_half_edge(v);
+    grow_huge(on_segment_);
     on_segment_.push_back({info.a, info.b});
     subsegments_[key(a, v)] = info;
     subsegments_[key(v, b)] = info;

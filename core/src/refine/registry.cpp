@@ -9,17 +9,17 @@ namespace {
 
 constexpr std::array kAlgorithms = {
     AlgorithmInfo{"circumcenter",
-                  "Ruppert/Chew Delaunay refinement: the worst triangle's circumcenter, encroached "
-                  "segments split on concentric shells",
-                  Selection::circumcenter, 20.7},
+                  "Ruppert/Chew Delaunay refinement: a bad triangle's circumcenter (shortest edge "
+                  "first), encroached segments split on concentric shells where segments meet",
+                  Selection::circumcenter, 20.7, RefineInsertion::delaunay, 0.0, false, false, 33.0},
     AlgorithmInfo{"offcenter",
-                  "Ungor's off-centers: on the shortest edge's bisector, only as far as the angle "
-                  "bound needs; otherwise as circumcenter",
+                  "the default: Ungor's off-centers, on the shortest edge's bisector only as far "
+                  "as the angle bound needs (as Triangle); otherwise as circumcenter",
                   Selection::offcenter, 20.7},
     AlgorithmInfo{"lepp-midpoint",
                   "Rivara's Lepp-Delaunay: follow longest edges from the bad triangle to a terminal "
                   "edge, insert its midpoint, repeat until the triangle is gone",
-                  Selection::lepp_midpoint, 20.7},
+                  Selection::lepp_midpoint, 20.7, RefineInsertion::delaunay, 0.0, false, false, 33.0},
     AlgorithmInfo{"lepp-centroid",
                   "Lepp-Delaunay inserting the centroid of the two terminal triangles instead "
                   "(the terminal edge's midpoint on the boundary)",
@@ -28,11 +28,11 @@ constexpr std::array kAlgorithms = {
                   "Rivara's Lepp longest-edge bisection to an area or size bound (--max-area, --size): "
                   "bisects the terminal triangles until the target is cut; not Delaunay, conforming, "
                   "angles never below half the starting mesh's smallest",
-                  Selection::lepp_midpoint, 0.0, RefineInsertion::bisection},
+                  Selection::lepp_midpoint, 0.0, RefineInsertion::bisection, 0.0, false, false, 0.0},
     AlgorithmInfo{"midpoint-area",
                   "Delaunay refinement to an area or size bound (--max-area, --size) inserting the "
                   "midpoint of each too-large triangle's longest edge",
-                  Selection::longest_edge_midpoint, 0.0},
+                  Selection::longest_edge_midpoint, 0.0, RefineInsertion::delaunay, 0.0, false, false, 0.0},
     AlgorithmInfo{"lepp-aspect",
                   "Lepp-Delaunay (terminal-triangles centroid) to an aspect-ratio bound "
                   "(--max-aspect, default 2.83 = 1/sin 20.7 degrees)",
@@ -41,7 +41,7 @@ constexpr std::array kAlgorithms = {
                   "improvement + refinement (Coll et al.): Delaunay refinement (circumcenter; --select "
                   "another), then removal of every free Steiner vertex whose removal raises the smallest "
                   "angle round it and keeps the bounds",
-                  Selection::circumcenter, 20.7, RefineInsertion::delaunay, 0.0, false, true},
+                  Selection::circumcenter, 20.7, RefineInsertion::delaunay, 0.0, false, true, 33.0},
     AlgorithmInfo{"combined",
                   "combined criteria: a Lepp-centroid phase to an aspect-ratio bound (--max-aspect, "
                   "default 2.83), then a phase to the minimum angle (--min-angle, default 20.7)",

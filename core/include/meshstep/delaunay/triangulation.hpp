@@ -16,6 +16,7 @@
 #include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/geometry/predicates.hpp"
+#include "meshstep/huge_pages.hpp"
 #include "meshstep/mesh/concept.hpp"
 #include "meshstep/replay/recorder.hpp"
 
@@ -118,6 +119,8 @@ class Triangulation {
   }
 
   VertexId add_point(const Point& p) {
+    grow_huge(points_);
+    grow_huge(merged_into_);
     points_.push_back(p);
     merged_into_.push_back(kNone);
     mesh_.set_vertex_count(points_.size());

@@ -95,7 +95,10 @@ class Dcel {
     reserve_huge(next_, 3 * faces);
     reserve_huge(face_, 3 * faces);
   }
-  void set_vertex_count(std::size_t n) { vertex_half_edge_.resize(n + kSlotOffset, kNone); }
+  void set_vertex_count(std::size_t n) {
+    reserve_huge(vertex_half_edge_, n + kSlotOffset);
+    vertex_half_edge_.resize(n + kSlotOffset, kNone);
+  }
   // origin_, next_ and the faces' half-edges stay (dest and apex read origin_ through them).
   void drop_adjacency() {
     release(face_);
@@ -320,6 +323,9 @@ class Dcel {
     }
     const HalfEdge h = static_cast<HalfEdge>(origin_.size());
     assert(h < kLinkMask - 1);  // half-edge ids must stay below kLinkMask
+    grow_huge(origin_, 2);
+    grow_huge(next_, 2);
+    grow_huge(face_, 2);
     origin_.push_back(u);
     origin_.push_back(w);
     next_.push_back(kLinkMask);
@@ -348,6 +354,7 @@ class Dcel {
       free_face_ = face_half_edge_[f] & ~kDeadFace;
       return f;
     }
+    grow_huge(face_half_edge_);
     face_half_edge_.push_back(kNone);
     return static_cast<FaceId>(face_half_edge_.size() - 1);
   }

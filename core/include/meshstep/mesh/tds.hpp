@@ -62,7 +62,10 @@ class Tds {
     reserve_huge(vertices_, 3 * faces);
     reserve_huge(twins_, 3 * faces);
   }
-  void set_vertex_count(std::size_t n) { vertex_half_edges_.resize(n, kNone); }
+  void set_vertex_count(std::size_t n) {
+    reserve_huge(vertex_half_edges_, n);
+    vertex_half_edges_.resize(n, kNone);
+  }
   // The corners stay (is_live, origin, next are arithmetic on them): 28 of 52 bytes a point go.
   void drop_adjacency() {
     release(twins_);
@@ -256,6 +259,8 @@ class Tds {
       free_faces_.pop_back();
     } else {
       f = static_cast<FaceId>(face_capacity());
+      grow_huge(vertices_, 3);
+      grow_huge(twins_, 3);
       for (int i = 0; i < 3; ++i) {
         vertices_.push_back(kNone);
         twins_.push_back(kTwinMask);

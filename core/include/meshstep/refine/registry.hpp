@@ -22,7 +22,14 @@ struct AlgorithmInfo {
   bool aspect_then_angle = false;
   // Removes Steiner vertices after refining (improvement + refinement, RefineOptions::improve).
   bool improve = false;
+  // The highest angle bound it ended at on every input of the corpus where Triangle 1.6 ends
+  // (../shared/data/pslg at 20-34 degrees; docs/refinement.md); above it the command warns
+  // and relies on a cap. 0: not meant for an angle bound.
+  double known_to_end_deg = 34.0;
 };
+
+// The refinement meshstep refine runs without --algorithm (Triangle's own choice).
+inline constexpr std::string_view kDefaultAlgorithm = "offcenter";
 
 // 1 / sin(20.7 degrees): a triangle whose aspect ratio (longest edge over shortest altitude,
 // which is at least 1 / sin of the smallest angle) is below it has no angle under 20.7.
