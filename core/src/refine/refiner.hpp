@@ -543,8 +543,8 @@ class Refiner {
     if (still_there(c)) push_bad(c);
   }
 
-  // Splits the segment of h: at its midpoint, or on a concentric shell (split_point). `by`: the vertex or rejected point that encroached, for
-  // the record.
+  // Splits the segment of h: at its midpoint, or on a concentric shell (split_point).
+  // `by`: the vertex or rejected point that encroached, for the record.
   // Returns false, changing nothing, when the rounded split point would not leave both
   // halves with valid triangles (a subsegment a few ulps long): the floor of refinement.
   bool split_segment(HalfEdge h, VertexId by_vertex, const Point* by_point) {
