@@ -18,7 +18,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <exception>
@@ -104,17 +103,6 @@ struct Input {
   std::string path;
 };
 
-// The first number of the first line that is not a comment.
-std::optional<std::size_t> leading_count(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  for (std::string line; std::getline(in, line);) {
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
-    return std::strtoull(line.c_str() + first, nullptr, 10);
-  }
-  return std::nullopt;
-}
-
 // Triangle's Steiner vertices at `bound` (output vertices less input vertices), or nothing
 // when it fails or takes more than a minute. It writes beside its input: a copy in a
 // temporary folder.
@@ -131,8 +119,11 @@ std::optional<std::size_t> triangle_steiner(const std::string& triangle, const I
                               " -Q '" + poly.string() + "'";
   std::optional<std::size_t> steiner;
   if (std::system(command.c_str()) == 0) {
-    const auto out = leading_count(dir / (in.name + ".1.node")), input = leading_count(poly);
-    if (out && input && *out >= *input) steiner = *out - *input;
+    try {
+      const std::size_t out = io::read_node((dir / (in.name + ".1.node")).string()).points.size();
+      if (out >= in.pslg.points.size()) steiner = out - in.pslg.points.size();
+    } catch (const InputError&) {  // no output, or not one we read: no figure
+    }
   }
   fs::remove_all(dir);
   return steiner;

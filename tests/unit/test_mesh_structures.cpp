@@ -128,6 +128,20 @@ struct StructureName {
 template <class M>
 class MeshStructures : public ::testing::Test {};
 using Structures = ::testing::Types<Tds, Dcel>;
+// A closed surface of vertices 0..n-1 and I: the first triangle, then every vertex split
+// into a face chosen at random (not Delaunay: only the structure is under test).
+template <class M>
+void grow_at_random(M& m, VertexId n, unsigned seed) {
+  std::mt19937 rng(seed);
+  m.init_sphere(0, 1, 2, I);
+  for (VertexId v = 3; v < n; ++v) {
+    FaceId f;
+    do f = static_cast<FaceId>(rng() % m.face_capacity());
+    while (!m.is_live(f));
+    m.split_face(f, v);
+  }
+}
+
 TYPED_TEST_SUITE(MeshStructures, Structures, StructureName);
 
 // ---------------------------------------------------------------------------------------
@@ -523,14 +537,7 @@ TYPED_TEST(MeshStructures, DropAdjacencyKeepsEveryFaceAndFreesMemory) {
   TypeParam m;
   m.reserve(n, 2 * n);
   m.set_vertex_count(n);
-  std::mt19937 rng(11);
-  m.init_sphere(0, 1, 2, I);
-  for (VertexId v = 3; v < n; ++v) {
-    FaceId f;
-    do f = static_cast<FaceId>(rng() % m.face_capacity());
-    while (!m.is_live(f));
-    m.split_face(f, v);
-  }
+  grow_at_random(m, n, 11);
   for (FaceId f = 0; f < m.face_capacity(); ++f)
     if (m.is_live(f) && (f % 7 == 0 || std::ranges::count(triple(m, f), I) > 0)) m.remove_face(f);
   const auto faces = face_set(m);
@@ -857,14 +864,7 @@ TEST(Dcel, AtMostNinetyBytesPerVertexAndNoGrowthAfterReserve) {
   m.reserve(n, 2 * n);
   m.set_vertex_count(n);
   const std::size_t reserved = m.memory_bytes();
-  std::mt19937 rng(7);
-  m.init_sphere(0, 1, 2, I);
-  for (VertexId v = 3; v < n; ++v) {
-    FaceId f;
-    do f = static_cast<FaceId>(rng() % m.face_capacity());
-    while (!m.is_live(f));
-    m.split_face(f, v);
-  }
+  grow_at_random(m, n, 7);
   // n finite vertices plus I: 2(n+1) - 4 faces, 3(n+1) - 6 edges.
   EXPECT_EQ(m.face_count(), 2 * n - 2);
   EXPECT_EQ(m.edge_count(), 3 * n - 3);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <iterator>
+#include <type_traits>
 #include <cstdint>
 #include <vector>
 
@@ -34,6 +35,13 @@ void reserve_huge(std::vector<T>& v, std::size_t n) {
   advise_huge_pages(bigger.data(), bigger.capacity() * sizeof(T));
   bigger.insert(bigger.end(), std::make_move_iterator(v.begin()), std::make_move_iterator(v.end()));
   v.swap(bigger);
+}
+
+// v.resize(n, value), the new storage advised (reserve_huge) before resize touches it.
+template <class T>
+void resize_huge(std::vector<T>& v, std::size_t n, const std::type_identity_t<T>& value = T()) {
+  reserve_huge(v, n);
+  v.resize(n, value);
 }
 
 // Room for `extra` more elements, as reserve_huge grows: call before push_back on arrays

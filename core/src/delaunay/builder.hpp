@@ -106,8 +106,7 @@ struct SortedPoints {
 inline SortedPoints sort_points(Pslg& in, int exponent) {
   SortedPoints sorted;
   sorted.input_of = brio_order(in.points);
-  reserve_huge(sorted.points, in.points.size());
-  sorted.points.resize(in.points.size());
+  resize_huge(sorted.points, in.points.size());
   for (std::size_t i = 0; i < sorted.input_of.size(); ++i) sorted.points[i] = in.points[sorted.input_of[i]];
   release(in.points);  // the triangulation owns the points now
   scale_points(sorted.points, exponent);
@@ -481,8 +480,7 @@ class Builder {
 
     // The vertices last, once the mesh is released: a lower peak for large inputs.
     tri_.mesh() = Mesh{};
-    reserve_huge(out.points, vertex_count);
-    out.points.resize(vertex_count);
+    resize_huge(out.points, vertex_count);
     for (VertexId v = 0; v < tri_.points().size(); ++v)
       if (const std::uint32_t i = external(v); i != kNone) out.points[i] = tri_.point(v);
     scale_points(out.points, -exponent_);

@@ -91,8 +91,7 @@ class KeyGrid {
 // bits, small enough for the bucket heads to stay in cache. Stable, so equal keys stay in
 // index order.
 void radix_sort_by_key(std::span<std::uint64_t> items, std::vector<std::uint64_t>& scratch) {
-  reserve_huge(scratch, items.size());
-  scratch.resize(items.size());
+  resize_huge(scratch, items.size());
   std::array<std::uint32_t, 2048> count;
   std::span<std::uint64_t> from = items, to{scratch.data(), items.size()};
   for (int shift = 32; shift < 64; shift += 11) {
@@ -170,8 +169,7 @@ std::vector<std::uint32_t> brio_order(std::span<const Point> points) {
   for (const Point& p : points) box.add(p);
   const KeyGrid grid(box, n);
   std::vector<std::uint64_t> keyed;
-  reserve_huge(keyed, n);
-  keyed.resize(n);
+  resize_huge(keyed, n);
   for (std::size_t i = 0; i < n; ++i) {
     keyed[i] = (std::uint64_t{grid.valid() ? grid.key(points[i]) : 0u} << 32) | i;
     ++round_size[round_of(i)];
@@ -184,8 +182,7 @@ std::vector<std::uint32_t> brio_order(std::span<const Point> points) {
     offset += round_size[r];
   }
   std::vector<std::uint64_t> items;
-  reserve_huge(items, n);
-  items.resize(n);
+  resize_huge(items, n);
   {
     std::vector<std::size_t> next(start.begin(), start.end() - 1);
     for (std::size_t i = 0; i < n; ++i) items[next[round_of(i)]++] = keyed[i];

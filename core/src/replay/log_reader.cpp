@@ -310,14 +310,14 @@ void LogReader::index_events(std::size_t block, const DecodedEvents& events) {
     }
     if (keep_writes_) {
       const auto w = events.writes_of(i);
-      reserve_huge(writes_, writes_.size() + w.size());
-      reserve_huge(write_end_, write_end_.size() + 1);
+      grow_huge(writes_, w.size());
+      grow_huge(write_end_);
       writes_.insert(writes_.end(), w.begin(), w.end());
       write_end_.push_back(writes_.size());
     }
     if (h.type == EventType::step_begin) {
-      reserve_huge(step_starts_, step_starts_.size() + 1);
-      reserve_huge(step_kinds_, step_kinds_.size() + 1);
+      grow_huge(step_starts_);
+      grow_huge(step_kinds_);
       step_starts_.push_back(e);
       step_kinds_.push_back(static_cast<StepKind>(h.code));
     }
@@ -335,10 +335,7 @@ void LogReader::index_events(std::size_t block, const DecodedEvents& events) {
       if (v >= vertex_bound_)
         throw InputError(path_, 0, where(block) + ": event " + std::to_string(e) + " introduces vertex " + std::to_string(v) +
                                        ", more than the log can introduce (the file is corrupted)");
-      if (v >= vertices_.size()) {
-        reserve_huge(vertices_, std::size_t{v} + 1);
-        vertices_.resize(std::size_t{v} + 1, VertexInfo{{0, 0}, kNone, kNone, kNone, UINT64_MAX});
-      }
+      if (v >= vertices_.size()) resize_huge(vertices_, std::size_t{v} + 1, VertexInfo{{0, 0}, kNone, kNone, kNone, UINT64_MAX});
       VertexInfo& info = vertices_[v];
       info.point = h.point;
       info.event = e;

@@ -95,10 +95,7 @@ class Dcel {
     reserve_huge(next_, 3 * faces);
     reserve_huge(face_, 3 * faces);
   }
-  void set_vertex_count(std::size_t n) {
-    reserve_huge(vertex_half_edge_, n + kSlotOffset);
-    vertex_half_edge_.resize(n + kSlotOffset, kNone);
-  }
+  void set_vertex_count(std::size_t n) { resize_huge(vertex_half_edge_, n + kSlotOffset, kNone); }
   // origin_, next_ and the faces' half-edges stay (dest and apex read origin_ through them).
   void drop_adjacency() {
     release(face_);

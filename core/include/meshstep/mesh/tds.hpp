@@ -62,10 +62,7 @@ class Tds {
     reserve_huge(vertices_, 3 * faces);
     reserve_huge(twins_, 3 * faces);
   }
-  void set_vertex_count(std::size_t n) {
-    reserve_huge(vertex_half_edges_, n);
-    vertex_half_edges_.resize(n, kNone);
-  }
+  void set_vertex_count(std::size_t n) { resize_huge(vertex_half_edges_, n, kNone); }
   // The corners stay (is_live, origin, next are arithmetic on them): 28 of 52 bytes a point go.
   void drop_adjacency() {
     release(twins_);
