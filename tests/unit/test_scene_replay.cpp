@@ -28,6 +28,7 @@
 #include "meshstep/replay/log_writer.hpp"
 #include "meshstep/replay/replay.hpp"
 #include "meshstep/scene/build.hpp"
+#include "meshstep/scene/explain.hpp"
 #include "temp_dir.hpp"
 
 namespace meshstep::scene {
@@ -711,6 +712,31 @@ TEST_F(SceneReplay, DiametralLensSeesTheSegmentAtTheBoundsAngle) {
       ++checked;
   }
   EXPECT_GT(checked, 2u);
+  }
+}
+
+// The explanation of a point rejected for encroaching names the test the run applied: the
+// diametral circle, or the lens at the bound's angle.
+TEST_F(SceneReplay, RejectedPointsAreExplainedByTheRunsEncroachmentTest) {
+  for (const auto& [path, words] : {std::pair{circumcenter_, std::string("inside the segment's diametral circle")},
+                                    std::pair{lens_, std::string("at 120\u00B0 or more: inside its diametral lens")},
+                                    std::pair{lens25_, std::string("at 130\u00B0 or more: inside its diametral lens")}}) {
+    SCOPED_TRACE(words);
+    const replay::LogReader log(path);
+    replay::Replay cursor(log);
+    std::size_t checked = 0;
+    for (std::uint64_t e = 0; e < log.event_count() && checked < 3; ++e) {
+      const Event ev = log.event(e);
+      if (ev.type != EventType::encroached || ev.ids[2] != kNone) continue;  // a rejected point's
+      cursor.seek_event(e + 1);
+      const Explanation x = explain_step(cursor);
+      const auto said = std::find_if(x.lines.begin(), x.lines.end(),
+                                     [](const std::string& l) { return l.starts_with("rejected: the point"); });
+      ASSERT_NE(said, x.lines.end()) << "event " << e;
+      EXPECT_NE(said->find(words), std::string::npos) << *said;
+      ++checked;
+    }
+    EXPECT_GT(checked, 0u);
   }
 }
 

@@ -309,10 +309,8 @@ class OverlayPainter {
     Shape& seg =
         add(ShapeKind::lines, "encroached_segment", "encroached subsegment", style_.encroached.stroke, px::thick);
     line(seg, a, b);
-    if (log_.parameter("encroachment") == "lens") {
-      // Logs before the lens followed the bound saw it at 120 degrees.
-      const std::string angle = log_.parameter("lens_angle");
-      lens(a, b, angle.empty() ? 120.0 : std::strtod(angle.c_str(), nullptr));
+    if (const double angle = encroachment_angle(log_); angle > 90.0) {
+      lens(a, b, angle);
     } else {
       Shape& c = add(ShapeKind::circles, "diametral_circle", "diametral circle", style_.diametral.stroke, 2.0f);
       c.dashed = true;

@@ -150,20 +150,25 @@ class Explainer {
   void encroachment() {
     if (!story_.encroached) return;
     const auto& e = *story_.encroached;
-    if (e.by == kNone)
-      add("rejected: the point " + point_text(e.point) + " encroaches segment " + edge_name(e.a, e.b) +
-          " (it lies inside the segment's diametral circle), so the segment is split instead");
-    else
+    if (e.by == kNone) {
+      const double angle = detail::encroachment_angle(cursor_.log());
+      char inside[96] = "it lies inside the segment's diametral circle";
+      if (angle > 90.0)
+        std::snprintf(inside, sizeof inside, "it sees the segment at %g\u00B0 or more: inside its diametral lens", angle);
+      add("rejected: the point " + point_text(e.point) + " encroaches segment " + edge_name(e.a, e.b) + " (" + inside +
+          "), so the segment is split instead");
+    } else {
       add("segment " + edge_name(e.a, e.b) + " is encroached by vertex " + vertex_name(e.by) + " " +
           point_text(e.point));
+    }
     if (e.split == kNone) return;
     const Point *a = point(e.a), *b = point(e.b), *p = point(e.split);
     if (!a || !b || !p) return;
     const bool middle = *p == Point{0.5 * (a->x + b->x), 0.5 * (a->y + b->y)};
     add("split by vertex " + vertex_name(e.split) + " " + point_text(*p) +
         (middle ? ": at its midpoint"
-                : ": on a concentric shell round its input endpoint (a power-of-two distance), so "
-                  "that splits near a small input angle cannot cascade"));
+                : ": on a concentric shell round the end where another segment meets it (a power-of-two "
+                  "distance), so that splits near a small input angle cannot cascade"));
   }
 
   void recovery() {

@@ -203,6 +203,12 @@ StepStory read_step(const replay::Replay& cursor) {
   return story;
 }
 
+double encroachment_angle(const replay::LogReader& log) {
+  if (log.parameter("encroachment") != "lens") return 90.0;
+  const std::string angle = log.parameter("lens_angle");
+  return angle.empty() ? 120.0 : std::strtod(angle.c_str(), nullptr);
+}
+
 std::string chosen_point_name(const StepStory::Selected& selected, const std::optional<StepStory::Lepp>& lepp) {
   const auto strategy = static_cast<Selection>(selected.strategy);
   // Every strategy weighs its point against the circumcenter and records the circumcenter

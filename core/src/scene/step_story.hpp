@@ -120,6 +120,11 @@ StepStory read_step(const replay::Replay& cursor);
 // it, a Lepp point too close to a vertex) records no alternative: that is named too.
 std::string chosen_point_name(const StepStory::Selected& selected, const std::optional<StepStory::Lepp>& lepp);
 
+// The angle apb from which a point p encroached on a segment ab in the log's run: 90 for
+// the diametral circle, the lens's angle otherwise (its `lens_angle` parameter; 120 in logs
+// from before the lens followed the bound).
+double encroachment_angle(const replay::LogReader& log);
+
 // A failed criterion test as people read it: the measured value against the run's bound
 // from the log's parameters ("22.4° < 30°", "area 0.71 > 0.5"); a bound that varies from
 // place to place (regional, old mesh) is not among them and is named in words.
