@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "meshstep/delaunay/triangulation.hpp"
+#include "meshstep/huge_array.hpp"
 #include "meshstep/huge_pages.hpp"
 #include "meshstep/refine/lepp.hpp"
 #include "meshstep/refine/quality.hpp"
@@ -131,13 +132,16 @@ class Refiner {
     HalfEdge hint;
   };
 
+  // A bad triangle waiting in the queue: its slot and its vertices, to tell whether it is
+  // still there when its turn comes. 16 bytes: the queue holds most of a mesh under an
+  // area bound (790k of 1.3M triangles on A.poly), so each byte counts.
   struct Candidate {
-    double priority;  // smaller: sooner (shortest edge squared, or sin^2 of the smallest angle)
-    std::array<VertexId, 3> key;  // the vertices, sorted: ties go by vertex ids
     FaceId face;
     VertexId a, b, c;
-    bool operator>(const Candidate& o) const {
-      return priority != o.priority ? priority > o.priority : key > o.key;
+    std::array<VertexId, 3> key() const {
+      std::array<VertexId, 3> k{a, b, c};
+      std::sort(k.begin(), k.end());
+      return k;
     }
   };
 
@@ -220,12 +224,11 @@ class Refiner {
     const HalfEdge h = first_edge(f);
     const VertexId a = mesh_.origin(h), b = mesh_.dest(h), c = mesh_.apex(h);
     const quality::Shape s = quality::shape(point(a), point(b), point(c));
-    const double sin2 = s.sin2_min_angle();
     const bool angle_bad = this->angle_bad(s);
     const bool size_bad = too_large(criteria_, s, point(a), point(b), point(c));
     if (!angle_bad && !size_bad) return;
     if (!size_bad && cannot_improve(h, s)) return;
-    push_bad({options_.order == RefineOrder::smallest_first ? s.shortest2 : sin2, face_key(f), f, a, b, c});
+    push_bad(priority(s), {f, a, b, c});
   }
 
   // Triangles refinement leaves alone when only their angles are bad: the smallest angle
@@ -280,14 +283,18 @@ class Refiner {
     segments_.clear();
   }
 
-  void push_bad(const Candidate& c) {
+  // Smaller: sooner. The shortest edge squared, or sin^2 of the smallest angle.
+  double priority(const quality::Shape& s) const {
+    return options_.order == RefineOrder::smallest_first ? s.shortest2 : s.sin2_min_angle();
+  }
+
+  void push_bad(double priority, const Candidate& c) {
     if (options_.order == RefineOrder::fifo) {
       fifo_.push_back(c);
       return;
     }
     // Within a bucket the newest first, which keeps the work near the faces just made.
-    const std::size_t bucket = bucket_of(c.priority);
-    grow_huge(buckets_[bucket]);
+    const std::size_t bucket = bucket_of(priority);
     buckets_[bucket].push_back(c);
     lowest_ = std::min(lowest_, bucket);
   }
@@ -330,7 +337,7 @@ class Refiner {
   // run 1.2 to 1.6 times slower.
   bool still_there(Candidate& c) const {
     if (holds_triangle(mesh_, c.face, c.a, c.b, c.c)) return true;
-    if (recreated_.empty() || !recreated_.contains(triangle_hash(c.key))) return false;
+    if (recreated_.empty() || !recreated_.contains(triangle_hash(c.key()))) return false;
     const HalfEdge h = tri_.find_edge(c.a, c.b);
     if (h == kNone || mesh_.apex(h) != c.c) return false;
     c.face = mesh_.face(h);
@@ -540,7 +547,7 @@ class Refiner {
   }
 
   void requeue(Candidate c) {
-    if (still_there(c)) push_bad(c);
+    if (still_there(c)) push_bad(priority(quality::shape(point(c.a), point(c.b), point(c.c))), c);
   }
 
   // Splits the segment of h: at its midpoint, or on a concentric shell (split_point).
@@ -773,7 +780,7 @@ class Refiner {
   std::vector<Suspect> segments_;  // subsegments to check for encroachment
   // Bad triangles by priority (bucket_of), the first bucket first.
   static constexpr std::size_t kBuckets = 4196;  // enough for either order (bucket_of)
-  std::vector<std::vector<Candidate>> buckets_ = std::vector<std::vector<Candidate>>(kBuckets);
+  std::vector<HugeArray<Candidate>> buckets_ = std::vector<HugeArray<Candidate>>(kBuckets);
   std::size_t lowest_ = kBuckets;
   std::deque<Candidate> fifo_;
   std::vector<FaceId> star_;

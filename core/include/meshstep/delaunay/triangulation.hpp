@@ -16,6 +16,7 @@
 #include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/geometry/predicates.hpp"
+#include "meshstep/huge_array.hpp"
 #include "meshstep/huge_pages.hpp"
 #include "meshstep/mesh/concept.hpp"
 #include "meshstep/replay/recorder.hpp"
@@ -120,7 +121,6 @@ class Triangulation {
 
   VertexId add_point(const Point& p) {
     grow_huge(points_);
-    grow_huge(merged_into_);
     points_.push_back(p);
     merged_into_.push_back(kNone);
     mesh_.set_vertex_count(points_.size());
@@ -427,7 +427,7 @@ class Triangulation {
   Insertion insertion_;
   Mesh mesh_;
   std::vector<VertexId> removed_;
-  std::vector<VertexId> merged_into_;
+  HugeArray<VertexId> merged_into_;
   std::size_t duplicates_ = 0;
   std::array<VertexId, 3> first_{kNone, kNone, kNone};
   mutable std::uint32_t random_ = 0x9E3779B9u;

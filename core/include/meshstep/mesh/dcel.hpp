@@ -23,7 +23,7 @@
 #include <span>
 #include <vector>
 
-#include "meshstep/huge_pages.hpp"
+#include "meshstep/huge_array.hpp"
 #include "meshstep/mesh/handles.hpp"
 #include "meshstep/release.hpp"
 
@@ -88,14 +88,14 @@ class Dcel {
 
   // Construction and mutation ---------------------------------------------------------------
   void reserve(std::size_t vertices, std::size_t faces) {
-    reserve_huge(vertex_half_edge_, vertices + kSlotOffset);
-    reserve_huge(face_half_edge_, faces);
+    vertex_half_edge_.reserve(vertices + kSlotOffset);
+    face_half_edge_.reserve(faces);
     // A closed surface has 3F/2 edges, so 3F half-edges.
-    reserve_huge(origin_, 3 * faces);
-    reserve_huge(next_, 3 * faces);
-    reserve_huge(face_, 3 * faces);
+    origin_.reserve(3 * faces);
+    next_.reserve(3 * faces);
+    face_.reserve(3 * faces);
   }
-  void set_vertex_count(std::size_t n) { resize_huge(vertex_half_edge_, n + kSlotOffset, kNone); }
+  void set_vertex_count(std::size_t n) { vertex_half_edge_.resize(n + kSlotOffset, kNone); }
   // origin_, next_ and the faces' half-edges stay (dest and apex read origin_ through them).
   void drop_adjacency() {
     release(face_);
@@ -320,9 +320,6 @@ class Dcel {
     }
     const HalfEdge h = static_cast<HalfEdge>(origin_.size());
     assert(h < kLinkMask - 1);  // half-edge ids must stay below kLinkMask
-    grow_huge(origin_, 2);
-    grow_huge(next_, 2);
-    grow_huge(face_, 2);
     origin_.push_back(u);
     origin_.push_back(w);
     next_.push_back(kLinkMask);
@@ -351,7 +348,6 @@ class Dcel {
       free_face_ = face_half_edge_[f] & ~kDeadFace;
       return f;
     }
-    grow_huge(face_half_edge_);
     face_half_edge_.push_back(kNone);
     return static_cast<FaceId>(face_half_edge_.size() - 1);
   }
@@ -374,13 +370,13 @@ class Dcel {
     if (face_[h ^ 1] == kNone) free_pair(h >> 1);
   }
 
-  std::vector<VertexId> origin_;  // per half-edge; kNone in a freed pair
+  HugeArray<VertexId> origin_;  // per half-edge; kNone in a freed pair
   // Per half-edge: next | kConstrainedBit; kLinkMask as next when faceless. In a freed pair
   // next_[2e] holds the next free pair.
-  std::vector<HalfEdge> next_;
-  std::vector<FaceId> face_;                // per half-edge; kNone when faceless or freed
-  std::vector<HalfEdge> face_half_edge_;    // per face; kDeadFace | next free face when dead
-  std::vector<HalfEdge> vertex_half_edge_;  // per vertex, at slot(v)
+  HugeArray<HalfEdge> next_;
+  HugeArray<FaceId> face_;              // per half-edge; kNone when faceless or freed
+  HugeArray<HalfEdge> face_half_edge_;  // per face; kDeadFace | next free face when dead
+  HugeArray<HalfEdge> vertex_half_edge_;  // per vertex, at slot(v)
   std::uint32_t free_edge_ = kFreeEnd;
   std::uint32_t free_face_ = kFreeEnd;
   std::size_t live_edges_ = 0;

@@ -13,7 +13,7 @@
 #include <span>
 #include <vector>
 
-#include "meshstep/huge_pages.hpp"
+#include "meshstep/huge_array.hpp"
 #include "meshstep/mesh/handles.hpp"
 #include "meshstep/release.hpp"
 
@@ -58,11 +58,11 @@ class Tds {
 
   // Construction and mutation ---------------------------------------------------------------
   void reserve(std::size_t vertices, std::size_t faces) {
-    reserve_huge(vertex_half_edges_, vertices);
-    reserve_huge(vertices_, 3 * faces);
-    reserve_huge(twins_, 3 * faces);
+    vertex_half_edges_.reserve(vertices);
+    vertices_.reserve(3 * faces);
+    twins_.reserve(3 * faces);
   }
-  void set_vertex_count(std::size_t n) { resize_huge(vertex_half_edges_, n, kNone); }
+  void set_vertex_count(std::size_t n) { vertex_half_edges_.resize(n, kNone); }
   // The corners stay (is_live, origin, next are arithmetic on them): 28 of 52 bytes a point go.
   void drop_adjacency() {
     release(twins_);
@@ -256,8 +256,6 @@ class Tds {
       free_faces_.pop_back();
     } else {
       f = static_cast<FaceId>(face_capacity());
-      grow_huge(vertices_, 3);
-      grow_huge(twins_, 3);
       for (int i = 0; i < 3; ++i) {
         vertices_.push_back(kNone);
         twins_.push_back(kTwinMask);
@@ -286,9 +284,9 @@ class Tds {
     if (t != kTwinMask) twins_[t] = h | (across & kConstrainedBit);
   }
 
-  std::vector<VertexId> vertices_;      // 3 per face; vertices_[3f] == kNone marks a dead face
-  std::vector<std::uint32_t> twins_;    // 3 per face: twin half-edge | constraint bit
-  std::vector<HalfEdge> vertex_half_edges_;
+  HugeArray<VertexId> vertices_;     // 3 per face; vertices_[3f] == kNone marks a dead face
+  HugeArray<std::uint32_t> twins_;   // 3 per face: twin half-edge | constraint bit
+  HugeArray<HalfEdge> vertex_half_edges_;
   HalfEdge infinite_half_edge_ = kNone;
   std::vector<FaceId> free_faces_;
   // Scratch for star_cavity, kept to avoid allocating per insertion.
