@@ -1,6 +1,7 @@
-// Buffered text output that replaces its target file atomically: everything goes to a
-// temporary file in the target's folder, renamed over the target by commit(). Until then
-// the target is untouched; on any failure (or without commit) the temporary file is removed.
+// Buffered output (text, or raw bytes for binary formats) that replaces its target file
+// atomically: everything goes to a temporary file in the target's folder, renamed over the
+// target by commit(). Until then the target is untouched; on any failure (or without
+// commit) the temporary file is removed.
 #pragma once
 
 #include <cstddef>
@@ -20,6 +21,8 @@ class AtomicWriter {
   AtomicWriter& operator=(const AtomicWriter&) = delete;
 
   void text(std::string_view s);
+  // Raw bytes, for binary formats (text() copies its bytes verbatim too).
+  void bytes(const void* data, std::size_t n) { text({static_cast<const char*>(data), n}); }
   void ch(char c) {
     if (used_ == kBufferSize) flush();
     buffer_[used_++] = c;

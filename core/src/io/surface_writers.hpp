@@ -1,0 +1,19 @@
+// The writers behind write_surface (io/surface_io.hpp), one file per format family. Each
+// gets a surface write_surface has checked: indices in range, coordinates finite.
+#pragma once
+
+#include <string>
+
+#include "meshstep/io/surface_io.hpp"
+
+namespace meshstep::io::detail {
+
+void write_off(const std::string& path, const Surface& s);
+void write_obj(const std::string& path, const Surface& s);
+void write_ply(const std::string& path, const Surface& s, bool binary);
+void write_stl(const std::string& path, const Surface& s, bool binary);
+
+// "cannot write this surface: message", as InputError(path, 0, ...).
+[[noreturn]] void refuse_surface(const std::string& path, const std::string& message);
+
+}  // namespace meshstep::io::detail
