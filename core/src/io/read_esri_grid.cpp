@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "io/fields.hpp"
 #include "io/record_reader.hpp"
@@ -30,10 +32,11 @@ double EsriGrid::at(const Point& p, double outside) const {
   return has_nodata && v == nodata ? outside : v;
 }
 
-EsriGrid read_esri_grid(const std::string& path) {
+EsriGrid read_esri_grid_rows(const std::string& path, const EsriRowVisitor& visit) {
   detail::RecordReader r(path);
   EsriGrid g;
-  bool seen[6] = {};  // ncols, nrows, x, y, cellsize, nodata
+  std::size_t* const key_lines[6] = {&g.lines.ncols, &g.lines.nrows,    &g.lines.x0,
+                                     &g.lines.y0,    &g.lines.cellsize, &g.lines.nodata};
   bool x_center = false, y_center = false;
   const auto header_key = [](const std::string& key) -> int {
     if (key == "ncols") return 0;
@@ -50,34 +53,61 @@ EsriGrid read_esri_grid(const std::string& path) {
     const int k = header_key(key);
     if (k < 0) break;  // the values begin
     detail::expect_fields(r, 2, "key, value");
-    if (seen[k]) r.fail("'" + key + "' appears twice");
-    seen[k] = true;
+    if (*key_lines[k] != 0) r.fail("'" + key + "' appears twice");
+    *key_lines[k] = r.line();
+    // What a number means is checked at its own line, not where the values begin.
     switch (k) {
-      case 0: g.ncols = detail::parse_count(r, 1, "ncols"); break;
-      case 1: g.nrows = detail::parse_count(r, 1, "nrows"); break;
+      case 0:
+        g.ncols = detail::parse_count(r, 1, "ncols");
+        if (g.ncols == 0) r.fail("ncols must be positive");
+        break;
+      case 1:
+        g.nrows = detail::parse_count(r, 1, "nrows");
+        if (g.nrows == 0) r.fail("nrows must be positive");
+        break;
       case 2: g.x0 = detail::parse_real(r, 1, key); x_center = key == "xllcenter"; break;
       case 3: g.y0 = detail::parse_real(r, 1, key); y_center = key == "yllcenter"; break;
-      case 4: g.cellsize = detail::parse_real(r, 1, "cellsize"); break;
+      case 4:
+        g.cellsize = detail::parse_real(r, 1, "cellsize");
+        if (!(g.cellsize > 0.0)) r.fail("cellsize must be positive");
+        break;
       case 5: g.nodata = detail::parse_real(r, 1, "NODATA_value"); g.has_nodata = true; break;
     }
   }
   const char* names[] = {"ncols", "nrows", "xllcorner or xllcenter", "yllcorner or yllcenter", "cellsize"};
   for (int k = 0; k < 5; ++k)
-    if (!seen[k]) r.fail(std::string("the header has no ") + names[k]);
-  if (g.ncols == 0 || g.nrows == 0) r.fail("ncols and nrows must be positive");
-  if (!(g.cellsize > 0.0)) r.fail("cellsize must be positive");
+    if (*key_lines[k] == 0) r.fail(std::string("the header has no ") + names[k]);
   if (x_center) g.x0 -= g.cellsize / 2.0;
   if (y_center) g.y0 -= g.cellsize / 2.0;
   const std::uint64_t count = static_cast<std::uint64_t>(g.ncols) * g.nrows;
   if (count > (std::uint64_t{1} << 32)) r.fail("ncols x nrows = " + std::to_string(count) + " is too large a grid");
-  g.values.reserve(std::min<std::uint64_t>(count, std::uint64_t{1} << 24));  // the file may be short
+  // One row at a time: it grows with the values that arrive (the file may be short).
+  std::vector<double> row;
+  std::size_t rows_done = 0;
   for (; have_record; have_record = r.next())
     for (std::size_t i = 0; i < r.field_count(); ++i) {
-      if (g.values.size() == count) r.fail("more values than ncols x nrows = " + std::to_string(count));
-      g.values.push_back(detail::parse_real(r, i, "grid value"));
+      if (rows_done == g.nrows) r.fail("more values than ncols x nrows = " + std::to_string(count));
+      row.push_back(detail::parse_real(r, i, "grid value"));
+      if (row.size() == g.ncols) {
+        visit(g, rows_done++, row, r.line());
+        row.clear();
+      }
     }
-  if (g.values.size() != count)
-    r.fail("the grid has " + std::to_string(g.values.size()) + " values; ncols x nrows = " + std::to_string(count));
+  const std::uint64_t found = static_cast<std::uint64_t>(rows_done) * g.ncols + row.size();
+  if (found != count)
+    r.fail("the grid has " + std::to_string(found) + " values; ncols x nrows = " + std::to_string(count) +
+           " (the file is truncated, or the header's counts are wrong)");
+  return g;
+}
+
+EsriGrid read_esri_grid(const std::string& path) {
+  std::vector<double> values;
+  EsriGrid g = read_esri_grid_rows(path, [&](const EsriGrid& header, std::size_t row, std::span<const double> v,
+                                             std::size_t) {
+    if (row == 0) values.reserve(std::min<std::size_t>(header.ncols * header.nrows, std::size_t{1} << 24));
+    values.insert(values.end(), v.begin(), v.end());
+  });
+  g.values = std::move(values);
   return g;
 }
 
