@@ -10,6 +10,7 @@
 #include "command.hpp"
 #include "json_line.hpp"
 #include "meshstep/refine/registry.hpp"
+#include "meshstep/terrain/tin.hpp"
 
 namespace meshstep::app {
 namespace {
@@ -50,8 +51,12 @@ std::vector<Section> sections() {
                                                                                        short_number(a.known_to_end_deg) + " degrees"
                                                                                  : std::string()) +
                                                        ")"});
+  std::vector<Row> terrain_rows;
+  for (const terrain::TerrainAlgorithmInfo& a : terrain::terrain_algorithms())
+    terrain_rows.push_back({std::string(a.name), std::string(a.description)});
   return {
       {"algorithms", "Algorithms (refine --algorithm NAME)", std::move(algorithm_rows)},
+      {"terrain_algorithms", "Terrain algorithms (terrain --algorithm NAME)", std::move(terrain_rows)},
       {"selections", "Selections (refine --select S): where a bad triangle's new vertex goes",
        rows_of(meshstep::selections())},
       {"insertions", "Insertions (--insertion): how a vertex goes in", rows_of(meshstep::insertions())},

@@ -21,8 +21,8 @@ int main(int argc, char** argv) {
   using namespace meshstep::app;
   CLI::App app{"meshstep " MESHSTEP_VERSION
                ": 2D Delaunay and constrained Delaunay triangulation, Delaunay\n"
-               "refinement algorithms, mesh checking, replay logs to step through them, and\n"
-               "pictures and animations of any moment of a run.",
+               "refinement algorithms, terrain approximation, mesh checking, replay logs to\n"
+               "step through them, and pictures and animations of any moment of a run.",
                "meshstep"};
   app.footer(kFooter);
   app.set_version_flag("--version", "meshstep " MESHSTEP_VERSION);
@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
   std::vector<Command> commands = {add_triangulate_command(app), add_refine_command(app),
                                   add_check_command(app), add_list_command(app),
                                   add_log_command(app), add_render_command(app),
-                                  add_export_command(app), add_view_command(app)};
+                                  add_export_command(app), add_view_command(app),
+                                  add_terrain_command(app)};
 
   try {
     app.parse(argc, argv);

@@ -82,7 +82,9 @@ constexpr std::array kFileFormats = {
     PartInfo{".poly", "Triangle's PSLG: vertices, segments, holes, regions (input; output)"},
     PartInfo{".ele", "Triangle's triangles (output; with .node, a mesh to check or to refine again)"},
     PartInfo{".area", "Triangle's per-triangle maximum areas (input with a mesh to refine again; output)"},
-    PartInfo{".asc", "ESRI ASCII grid (input: refine --size GRID.asc)"},
+    PartInfo{".asc", "ESRI ASCII grid (input: refine --size GRID.asc; terrain heights, NODATA kept out)"},
+    PartInfo{".png", "8/16-bit greyscale heightmap (input: terrain); also pictures (render, export)"},
+    PartInfo{".obj / .off / .ply / .stl", "3D triangle surfaces (output: terrain; PLY and STL ASCII or binary)"},
     PartInfo{".edge / .neigh", "Triangle's edges and neighbours (output, -e / -n)"},
     PartInfo{".mslog", "meshstep replay log (--record; read by meshstep log)"},
 };

@@ -1,0 +1,356 @@
+// The terrain engine: Delaunay insertion of grid samples, each triangle's largest error
+// kept exact, and a policy that picks the next sample (greedy or Lepp-surface).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <queue>
+#include <tuple>
+#include <vector>
+
+#include "meshstep/delaunay/triangulation.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/terrain/tin.hpp"
+#include "triangle_scan.hpp"
+
+namespace meshstep::terrain::detail {
+
+template <TriangleMesh Mesh>
+class TinBuilder {
+ public:
+  TinBuilder(const HeightGrid& grid, const TerrainOptions& options)
+      : grid_(grid), options_(options), tri_(corners(grid), Insertion::flip),
+        used_(grid.nx * grid.ny, false) {}
+
+  Tin run(TerrainReport& report) {
+    const auto start = std::chrono::steady_clock::now();
+    tri_.insert_all();
+    for (VertexId v = 0; v < 4; ++v) {
+      samples_.push_back(corner_sample(v));
+      heights_.push_back(corner_height(v));
+      used_[samples_.back()] = true;
+    }
+    for (FaceId f = 0; f < mesh().face_capacity(); ++f)
+      if (mesh().is_live(f) && !tri_.is_ghost(f)) measure(f);
+
+    HalfEdge hint = mesh().vertex_half_edge(0);
+    while (true) {
+      const Worst worst = pop_stale();
+      if (worst.face == kNone || worst.error <= options_.max_error) {
+        report.worst_error = worst.face == kNone ? 0.0 : worst.error;
+        break;
+      }
+      if (options_.max_triangles > 0 && triangle_count() >= options_.max_triangles) {
+        report.worst_error = worst.error;
+        report.capped = true;
+        break;
+      }
+      std::uint32_t sample = worst.sample;
+      if (options_.algorithm == TerrainAlgorithm::lepp_surface) sample = lepp_sample(worst.face, report);
+      hint = insert(sample, hint);
+      if ((++report.insertions & 0xFFFF) == 0 && options_.progress) options_.progress(triangle_count(), worst.error);
+    }
+    if (options_.flips_3d) report.flips_3d = improve_by_3d_flips(std::max(options_.max_error, report.worst_error));
+    Tin tin = result();
+    report.vertices = tin.samples.size();
+    report.triangles = tin.triangles.size();
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return tin;
+  }
+
+ private:
+  static constexpr std::uint32_t kNoSample = std::numeric_limits<std::uint32_t>::max();
+
+  // A triangle's largest error and the sample where it is (error -1 when it covers no
+  // sample with data).
+  struct FaceWorst {
+    double error;
+    std::uint32_t sample;
+  };
+
+  // A triangle's largest error and the sample where it is; `stamp` tells a current entry
+  // of the queue from one the triangle's remeasure has replaced.
+  struct Worst {
+    double error;
+    std::uint32_t sample;
+    FaceId face;
+    std::uint32_t stamp;
+    std::array<VertexId, 3> corners;  // sorted: ties between faces go by vertex ids
+    // The queue's order: larger errors first, then the smaller sample, then the smaller
+    // corners (two triangles share the worst sample when it is on their edge). Never the
+    // face id, which differs between the data structures.
+    bool operator<(const Worst& o) const {
+      if (error != o.error) return error < o.error;
+      if (sample != o.sample) return sample > o.sample;
+      return corners > o.corners;
+    }
+  };
+
+  const Mesh& mesh() const { return tri_.mesh(); }
+
+  static std::vector<Point> corners(const HeightGrid& g) {
+    if (g.nx < 2 || g.ny < 2) throw InputError("a terrain needs a grid of at least 2 x 2 samples");
+    const double x = static_cast<double>(g.nx - 1) * g.dx, y = static_cast<double>(g.ny - 1) * g.dy;
+    return {{0, 0}, {x, 0}, {x, y}, {0, y}};
+  }
+  std::uint32_t corner_sample(VertexId v) const {
+    const std::size_t i = (v == 1 || v == 2) ? grid_.nx - 1 : 0, j = v >= 2 ? grid_.ny - 1 : 0;
+    return static_cast<std::uint32_t>(i + j * grid_.nx);
+  }
+  // A corner without data takes the height of the nearest sample that has some, by rings
+  // of growing Chebyshev distance, the first found in row order: the TIN must cover the
+  // whole rectangle, and a made-up height there is better than a hole in it.
+  float corner_height(VertexId v) const {
+    const std::size_t ci = samples_[v] % grid_.nx, cj = samples_[v] / grid_.nx;
+    if (grid_.has_data(ci, cj)) return grid_.at(ci, cj);
+    const std::size_t reach = std::max(grid_.nx, grid_.ny);
+    for (std::size_t r = 1; r < reach; ++r)
+      for (std::size_t j = cj >= r ? cj - r : 0; j <= std::min(grid_.ny - 1, cj + r); ++j)
+        for (std::size_t i = ci >= r ? ci - r : 0; i <= std::min(grid_.nx - 1, ci + r); ++i)
+          if (grid_.has_data(i, j)) return grid_.at(i, j);
+    return 0.0f;  // unreachable: the grid reader refuses a grid without data
+  }
+
+  GridIndex index_of(VertexId v) const {
+    return {static_cast<std::int64_t>(samples_[v] % grid_.nx), static_cast<std::int64_t>(samples_[v] / grid_.nx)};
+  }
+
+  // The largest error among the samples of the counter-clockwise triangle abc, and where.
+  FaceWorst scan_worst(VertexId a, VertexId b, VertexId c) const {
+    // From the smallest vertex id round, so that the sums below, and with them the last
+    // bits of every error, do not depend on where the data structure starts a face.
+    while (a > b || a > c) std::tie(a, b, c) = std::tuple(b, c, a);
+    const double za = heights_[a], zb = heights_[b], zc = heights_[c];
+    const GridIndex ia = index_of(a), ib = index_of(b), ic = index_of(c);
+    const std::int64_t area2 = edge_function(ia, ib, ic);
+    FaceWorst worst{-1.0, kNoSample};
+    scan_triangle(ia, ib, ic, [&](std::int64_t i, std::int64_t j, std::int64_t wa, std::int64_t wb, std::int64_t wc) {
+      const std::size_t s = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * grid_.nx;
+      const float z = grid_.z[s];
+      if (std::isnan(z)) return;
+      const double error = std::abs(static_cast<double>(z) - plane_height(wa, wb, wc, za, zb, zc, area2));
+      if (error > worst.error) worst = {error, static_cast<std::uint32_t>(s)};
+    });
+    return worst;
+  }
+
+  // Measures face f and queues it.
+  void measure(FaceId f) {
+    const HalfEdge h = mesh().half_edge(f);
+    const VertexId a = mesh().origin(h), b = mesh().dest(h), c = mesh().apex(h);
+    const FaceWorst worst = scan_worst(a, b, c);
+    if (stamps_.size() <= f) {
+      stamps_.resize(mesh().face_capacity(), 0);
+      worst_.resize(mesh().face_capacity(), {0.0, kNoSample});
+    }
+    worst_[f] = worst;
+    const std::uint32_t stamp = ++stamps_[f];
+    std::array<VertexId, 3> corners{a, b, c};
+    std::sort(corners.begin(), corners.end());
+    if (worst.sample != kNoSample) queue_.push({worst.error, worst.sample, f, stamp, corners});
+  }
+
+  // The worst triangle still current, without taking it off the queue; face kNone when
+  // no triangle covers a sample with data.
+  Worst pop_stale() {
+    while (!queue_.empty()) {
+      const Worst& top = queue_.top();
+      if (mesh().is_live(top.face) && stamps_[top.face] == top.stamp) return top;
+      queue_.pop();
+    }
+    return {0.0, kNoSample, kNone, 0, {}};
+  }
+
+  HalfEdge insert(std::uint32_t sample, HalfEdge hint) {
+    const std::size_t i = sample % grid_.nx, j = sample / grid_.nx;
+    used_[sample] = true;
+    samples_.push_back(sample);
+    heights_.push_back(grid_.z[sample]);
+    const VertexId v = tri_.add_point({static_cast<double>(i) * grid_.dx, static_cast<double>(j) * grid_.dy});
+    const HalfEdge out = tri_.insert(v, hint);
+    // Delaunay insertion changes exactly the triangles round the new vertex.
+    HalfEdge h = out;
+    do {
+      const FaceId f = mesh().face(h);
+      if (!tri_.is_ghost(f)) measure(f);
+      h = mesh().twin(mesh().prev(h));
+    } while (h != out);
+    border_vertices_ += on_border(sample);
+    return out;
+  }
+
+  // The data structure has a ghost face on every hull edge; the hull is the grid's
+  // rectangle, with an edge more for every vertex on its border past the corners.
+  std::size_t triangle_count() const { return mesh().face_count() - 4 - border_vertices_; }
+  bool on_border(std::uint32_t s) const {
+    const std::size_t i = s % grid_.nx, j = s / grid_.nx;
+    return i == 0 || j == 0 || i == grid_.nx - 1 || j == grid_.ny - 1;
+  }
+
+  // The edge flips that raise the smallest 3D angle of the two triangles beside an edge
+  // without raising their error past `bound`, until none is left. The planar Delaunay
+  // property goes: on a terrain, a thin triangle in the plane may be a fine one on the
+  // slope, and the other way round. Returns the number of flips.
+  std::size_t improve_by_3d_flips(double bound) {
+    std::vector<HalfEdge> stack;
+    for (FaceId f = 0; f < mesh().face_capacity(); ++f) {
+      if (!mesh().is_live(f) || tri_.is_ghost(f)) continue;
+      const HalfEdge h = mesh().half_edge(f);
+      for (const HalfEdge e : {h, mesh().next(h), mesh().prev(h)}) stack.push_back(e);
+    }
+    std::size_t flips = 0;
+    // Each flip raises the pair's smallest angle, so the process ends; the budget only
+    // bounds its time on a pathological grid.
+    for (std::size_t budget = 10 * stack.size() + 16; !stack.empty() && budget > 0; --budget) {
+      const HalfEdge h = stack.back();
+      stack.pop_back();
+      const HalfEdge t = mesh().twin(h);
+      const FaceId f = mesh().face(h), g = mesh().face(t);
+      if (!mesh().is_live(f) || !mesh().is_live(g) || tri_.is_ghost(f) || tri_.is_ghost(g)) continue;
+      // abc and bad, the quadrilateral a d b c; the flip makes adc and dbc.
+      const VertexId a = mesh().origin(h), b = mesh().dest(h), c = mesh().apex(h), d = mesh().apex(t);
+      if (edge_function(index_of(a), index_of(d), index_of(c)) <= 0 ||
+          edge_function(index_of(d), index_of(b), index_of(c)) <= 0)
+        continue;  // not convex in the plane
+      const double before = std::min(smallest_angle_3d(a, b, c), smallest_angle_3d(b, a, d));
+      const double after = std::min(smallest_angle_3d(a, d, c), smallest_angle_3d(d, b, c));
+      if (!(after > before * (1 + 1e-9))) continue;
+      const double error_before = std::max(worst_[f].error, worst_[g].error);
+      if (std::max(scan_worst(a, d, c).error, scan_worst(d, b, c).error) > std::max(bound, error_before)) continue;
+      const HalfEdge n = tri_.flip(h, replay::FlipReason::delaunay);
+      ++flips;
+      for (const HalfEdge e : {n, mesh().twin(n)}) {
+        measure(mesh().face(e));
+        stack.push_back(mesh().next(e));
+        stack.push_back(mesh().prev(e));
+      }
+    }
+    return flips;
+  }
+
+  // The smallest angle of triangle abc in 3D, in radians: the one with the largest cosine.
+  double smallest_angle_3d(VertexId a, VertexId b, VertexId c) const {
+    const auto position = [&](VertexId v) {
+      const Point& p = tri_.point(v);
+      return std::array<double, 3>{p.x, p.y, static_cast<double>(heights_[v])};
+    };
+    const std::array<double, 3> p[3] = {position(a), position(b), position(c)};
+    double largest_cos = -1.0;
+    for (int k = 0; k < 3; ++k) {
+      const auto &o = p[k], &u = p[(k + 1) % 3], &w = p[(k + 2) % 3];
+      const double x[3] = {u[0] - o[0], u[1] - o[1], u[2] - o[2]}, y[3] = {w[0] - o[0], w[1] - o[1], w[2] - o[2]};
+      const double dot = x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+      const double norms = std::sqrt((x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) * (y[0] * y[0] + y[1] * y[1] + y[2] * y[2]));
+      largest_cos = std::max(largest_cos, dot / norms);
+    }
+    return std::acos(std::clamp(largest_cos, -1.0, 1.0));
+  }
+
+  // Lepp-surface's sample for the worst triangle f. Its longest-edge propagating path
+  // (edges measured in 3D) ends at a terminal edge, the longest of the one or two
+  // triangles beside it: a point there splits long edges and leaves no sliver. If a
+  // terminal triangle still misses the bound, its worst sample goes in (error-driven, as
+  // greedy, but where the split keeps the shapes); else the sample nearest the terminal
+  // point (shape-driven, as the paper). f's own worst sample when that one is already a
+  // vertex or has no data.
+  std::uint32_t lepp_sample(FaceId f, TerrainReport& report) const {
+    const HalfEdge e = terminal_edge(f);
+    const FaceId near = mesh().face(e), far = mesh().face(mesh().twin(e));
+    const FaceWorst& worst =
+        tri_.is_ghost(far) || worst_[near].error >= worst_[far].error ? worst_[near] : worst_[far];
+    if (worst.error > options_.max_error) {
+      ++report.terminal_worst;
+      return worst.sample;
+    }
+    const auto p = terminal_point(e);
+    const double fi = std::round(p[0] / grid_.dx), fj = std::round(p[1] / grid_.dy);
+    const std::size_t i = static_cast<std::size_t>(std::clamp(fi, 0.0, static_cast<double>(grid_.nx - 1)));
+    const std::size_t j = static_cast<std::size_t>(std::clamp(fj, 0.0, static_cast<double>(grid_.ny - 1)));
+    const std::uint32_t s = static_cast<std::uint32_t>(i + j * grid_.nx);
+    if (used_[s] || !grid_.has_data(i, j)) return worst_[f].sample;
+    ++report.terminal_points;
+    return s;
+  }
+
+  HalfEdge terminal_edge(FaceId f) const {
+    HalfEdge e = longest_edge(mesh().half_edge(f));
+    while (true) {
+      const HalfEdge across = mesh().twin(e);
+      const FaceId g = mesh().face(across);
+      if (tri_.is_ghost(g)) return e;  // a border edge: one terminal triangle
+      const HalfEdge longest = longest_edge(mesh().half_edge(g));
+      if (longest == across) return e;  // the two share their longest edge
+      e = longest;
+    }
+  }
+
+  std::array<double, 2> terminal_point(HalfEdge e) const {
+    const Point& a = tri_.point(mesh().origin(e));
+    const Point& b = tri_.point(mesh().dest(e));
+    if (options_.terminal_point == TerminalPoint::midpoint) return {(a.x + b.x) / 2, (a.y + b.y) / 2};
+    const Point& c = tri_.point(mesh().apex(e));
+    const HalfEdge t = mesh().twin(e);
+    if (tri_.is_ghost(mesh().face(t))) return {(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
+    // The centroid of the quadrilateral the two terminal triangles make: their centroids
+    // weighted by their areas.
+    const Point& d = tri_.point(mesh().apex(t));
+    const double area_abc = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    const double area_bad = std::abs((a.x - b.x) * (d.y - b.y) - (a.y - b.y) * (d.x - b.x));
+    const double total = area_abc + area_bad;
+    return {(area_abc * (a.x + b.x + c.x) + area_bad * (b.x + a.x + d.x)) / (3 * total),
+            (area_abc * (a.y + b.y + c.y) + area_bad * (b.y + a.y + d.y)) / (3 * total)};
+  }
+
+  // The longest edge of h's face in 3D; ties go to the edge with the smaller vertex ids, so
+  // that both faces of an edge agree and a path cannot cycle.
+  HalfEdge longest_edge(HalfEdge h) const {
+    HalfEdge best = h;
+    auto best_key = edge_key(h);
+    for (HalfEdge e = mesh().next(h); e != h; e = mesh().next(e)) {
+      const auto key = edge_key(e);
+      if (key > best_key) {
+        best = e;
+        best_key = key;
+      }
+    }
+    return best;
+  }
+  std::array<double, 3> edge_key(HalfEdge e) const {
+    const VertexId u = mesh().origin(e), w = mesh().dest(e);
+    const Point& p = tri_.point(u);
+    const Point& q = tri_.point(w);
+    const double dz = static_cast<double>(heights_[u]) - heights_[w];
+    const double length2 = (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y) + dz * dz;
+    return {length2, -static_cast<double>(std::min(u, w)), -static_cast<double>(std::max(u, w))};
+  }
+
+  Tin result() const {
+    Tin tin;
+    tin.samples = samples_;
+    tin.heights = heights_;
+    tin.triangles.reserve(mesh().face_count());
+    for (FaceId f = 0; f < mesh().face_capacity(); ++f) {
+      if (!mesh().is_live(f) || tri_.is_ghost(f)) continue;
+      const HalfEdge h = mesh().half_edge(f);
+      tin.triangles.push_back({mesh().origin(h), mesh().dest(h), mesh().apex(h)});
+    }
+    return tin;
+  }
+
+  const HeightGrid& grid_;
+  const TerrainOptions& options_;
+  Triangulation<Mesh> tri_;
+  std::vector<bool> used_;               // by sample: already a vertex
+  std::vector<std::uint32_t> samples_;   // by vertex
+  std::vector<float> heights_;           // by vertex (a corner without data borrows one)
+  std::vector<std::uint32_t> stamps_;    // by face
+  std::vector<FaceWorst> worst_;         // by face
+  std::priority_queue<Worst> queue_;
+  std::size_t border_vertices_ = 0;     // inserted on the grid's border
+};
+
+}  // namespace meshstep::terrain::detail
