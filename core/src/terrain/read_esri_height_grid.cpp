@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "meshstep/error.hpp"
+#include "meshstep/huge_pages.hpp"
 #include "meshstep/io/esri_grid.hpp"
 #include "terrain/geographic.hpp"
 #include "terrain/height_grid_readers.hpp"
@@ -79,7 +80,7 @@ HeightGrid read_esri_height_grid(const std::string& path, const HeightGridOption
         throw InputError(path, header.ncols < 2 ? header.lines.ncols : header.lines.nrows,
                          too_few_samples(header.ncols, header.nrows));
       const std::size_t count = header.ncols * header.nrows;
-      if (file_can_hold(path, count)) grid.z.reserve(count);  // the one allocation
+      if (file_can_hold(path, count)) reserve_huge(grid.z, count);  // the one allocation
     }
     for (const double v : values) {
       if (header.has_nodata && v == header.nodata) {

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "meshstep/error.hpp"
+#include "meshstep/huge_pages.hpp"
 #include "terrain/height_grid_readers.hpp"
 
 namespace meshstep::terrain::detail {
@@ -55,7 +56,7 @@ void take_pixels(const std::string& path, const T* pixels, int channels, double 
                  HeightGrid& grid) {
   const bool has_alpha = channels == 2 || channels == 4;
   const bool has_colour = channels >= 3;
-  grid.z.resize(grid.nx * grid.ny);  // the one allocation
+  resize_huge(grid.z, grid.nx * grid.ny);  // the one allocation
   for (std::size_t y = 0; y < grid.ny; ++y) {
     const std::size_t j = grid.ny - 1 - y;  // the picture's top row is the grid's northernmost
     for (std::size_t i = 0; i < grid.nx; ++i) {

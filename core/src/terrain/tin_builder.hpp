@@ -37,9 +37,8 @@ class TinBuilder {
     for (FaceId f = 0; f < mesh().face_capacity(); ++f)
       if (mesh().is_live(f) && !tri_.is_ghost(f)) measure(f);
 
-    HalfEdge hint = mesh().vertex_half_edge(0);
     while (true) {
-      const Worst worst = pop_stale();
+      const Worst worst = pop_current();
       if (worst.face == kNone || worst.error <= options_.max_error) {
         report.worst_error = worst.face == kNone ? 0.0 : worst.error;
         break;
@@ -49,9 +48,11 @@ class TinBuilder {
         report.capped = true;
         break;
       }
-      std::uint32_t sample = worst.sample;
-      if (options_.algorithm == TerrainAlgorithm::lepp_surface) sample = lepp_sample(worst.face, report);
-      hint = insert(sample, hint);
+      // The next sample, and a triangle at or near it where the point location starts: the
+      // samples go in all over the grid, and a walk from the last one would cross it.
+      Choice next{worst.sample, worst.face};
+      if (options_.algorithm == TerrainAlgorithm::lepp_surface) next = lepp_sample(worst.face, report);
+      insert(next.sample, mesh().half_edge(next.near));
       if ((++report.insertions & 0xFFFF) == 0 && options_.progress) options_.progress(triangle_count(), worst.error);
     }
     if (options_.flips_3d) report.flips_3d = improve_by_3d_flips(std::max(options_.max_error, report.worst_error));
@@ -72,22 +73,18 @@ class TinBuilder {
     std::uint32_t sample;
   };
 
-  // A triangle's largest error and the sample where it is; `stamp` tells a current entry
-  // of the queue from one the triangle's remeasure has replaced.
+  // A queue entry: a triangle's largest error and the sample where it is. 16 bytes: the
+  // queue's sifts are a good part of a run. An entry is current while its face is live and
+  // still has that worst (pop_current): a face remeasured to the same error at the same
+  // sample leaves two current entries, and the second goes stale when the first's sample
+  // is inserted (a vertex has no error).
   struct Worst {
     double error;
     std::uint32_t sample;
     FaceId face;
-    std::uint32_t stamp;
-    std::array<VertexId, 3> corners;  // sorted: ties between faces go by vertex ids
-    // The queue's order: larger errors first, then the smaller sample, then the smaller
-    // corners (two triangles share the worst sample when it is on their edge). Never the
-    // face id, which differs between the data structures.
-    bool operator<(const Worst& o) const {
-      if (error != o.error) return error < o.error;
-      if (sample != o.sample) return sample > o.sample;
-      return corners > o.corners;
-    }
+    // Larger errors first, then the smaller sample. Two triangles share their worst sample
+    // when it is on their common edge: canonical_face settles which one is meant.
+    bool operator<(const Worst& o) const { return error != o.error ? error < o.error : sample > o.sample; }
   };
 
   const Mesh& mesh() const { return tri_.mesh(); }
@@ -124,17 +121,9 @@ class TinBuilder {
     // From the smallest vertex id round, so that the sums below, and with them the last
     // bits of every error, do not depend on where the data structure starts a face.
     while (a > b || a > c) std::tie(a, b, c) = std::tuple(b, c, a);
-    const double za = heights_[a], zb = heights_[b], zc = heights_[c];
-    const GridIndex ia = index_of(a), ib = index_of(b), ic = index_of(c);
-    const std::int64_t area2 = edge_function(ia, ib, ic);
-    FaceWorst worst{-1.0, kNoSample};
-    scan_triangle(ia, ib, ic, [&](std::int64_t i, std::int64_t j, std::int64_t wa, std::int64_t wb, std::int64_t wc) {
-      const std::size_t s = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * grid_.nx;
-      const float z = grid_.z[s];
-      if (std::isnan(z)) return;
-      const double error = std::abs(static_cast<double>(z) - plane_height(wa, wb, wc, za, zb, zc, area2));
-      if (error > worst.error) worst = {error, static_cast<std::uint32_t>(s)};
-    });
+    const WorstSample w = worst_sample(grid_.z.data(), grid_.nx, index_of(a), index_of(b), index_of(c),
+                                       heights_[a], heights_[b], heights_[c], kNoSample);
+    const FaceWorst worst{w.error, static_cast<std::uint32_t>(w.sample)};
     return worst;
   }
 
@@ -143,26 +132,48 @@ class TinBuilder {
     const HalfEdge h = mesh().half_edge(f);
     const VertexId a = mesh().origin(h), b = mesh().dest(h), c = mesh().apex(h);
     const FaceWorst worst = scan_worst(a, b, c);
-    if (stamps_.size() <= f) {
-      stamps_.resize(mesh().face_capacity(), 0);
-      worst_.resize(mesh().face_capacity(), {0.0, kNoSample});
-    }
+    if (worst_.size() <= f) worst_.resize(mesh().face_capacity(), {0.0, kNoSample});
     worst_[f] = worst;
-    const std::uint32_t stamp = ++stamps_[f];
-    std::array<VertexId, 3> corners{a, b, c};
-    std::sort(corners.begin(), corners.end());
-    if (worst.sample != kNoSample) queue_.push({worst.error, worst.sample, f, stamp, corners});
+    // A triangle within the bound never leaves the queue first: it stays out, and the queue
+    // stays a fraction of the mesh (its sifts were a quarter of a run).
+    if (worst.sample != kNoSample && worst.error > options_.max_error)
+      queue_.push({worst.error, worst.sample, f});
   }
 
   // The worst triangle still current, without taking it off the queue; face kNone when
-  // no triangle covers a sample with data.
-  Worst pop_stale() {
+  // none misses the bound.
+  Worst pop_current() {
     while (!queue_.empty()) {
-      const Worst& top = queue_.top();
-      if (mesh().is_live(top.face) && stamps_[top.face] == top.stamp) return top;
+      const Worst top = queue_.top();
+      if (mesh().is_live(top.face) && worst_[top.face].error == top.error && worst_[top.face].sample == top.sample)
+        return {top.error, top.sample, canonical_face(top.face, top.sample)};
       queue_.pop();
     }
-    return {0.0, kNoSample, kNone, 0, {}};
+    return {0.0, kNoSample, kNone};
+  }
+
+  // Of f and the triangle across the edge of f that holds `sample`, when both have it as
+  // their worst, the one with the smaller vertex ids: which of the two the queue gives
+  // first depends on the data structure, and Lepp-surface's path starts from it.
+  FaceId canonical_face(FaceId f, std::uint32_t sample) const {
+    const HalfEdge first = mesh().half_edge(f);
+    const GridIndex p{static_cast<std::int64_t>(sample % grid_.nx), static_cast<std::int64_t>(sample / grid_.nx)};
+    for (HalfEdge h = first;;) {
+      if (edge_function(index_of(mesh().origin(h)), index_of(mesh().dest(h)), p) == 0) {
+        const FaceId g = mesh().face(mesh().twin(h));
+        if (tri_.is_ghost(g) || worst_[g].error != worst_[f].error || worst_[g].sample != sample) return f;
+        return sorted_corners(g) < sorted_corners(f) ? g : f;
+      }
+      h = mesh().next(h);
+      if (h == first) return f;
+    }
+  }
+
+  std::array<VertexId, 3> sorted_corners(FaceId f) const {
+    const HalfEdge h = mesh().half_edge(f);
+    std::array<VertexId, 3> k{mesh().origin(h), mesh().dest(h), mesh().apex(h)};
+    std::sort(k.begin(), k.end());
+    return k;
   }
 
   HalfEdge insert(std::uint32_t sample, HalfEdge hint) {
@@ -257,23 +268,27 @@ class TinBuilder {
   // greedy, but where the split keeps the shapes); else the sample nearest the terminal
   // point (shape-driven, as the paper). f's own worst sample when that one is already a
   // vertex or has no data.
-  std::uint32_t lepp_sample(FaceId f, TerrainReport& report) const {
+  struct Choice {
+    std::uint32_t sample;
+    FaceId near;  // a triangle that holds the sample, or one near it
+  };
+  Choice lepp_sample(FaceId f, TerrainReport& report) const {
     const HalfEdge e = terminal_edge(f);
     const FaceId near = mesh().face(e), far = mesh().face(mesh().twin(e));
     const FaceWorst& worst =
         tri_.is_ghost(far) || worst_[near].error >= worst_[far].error ? worst_[near] : worst_[far];
     if (worst.error > options_.max_error) {
       ++report.terminal_worst;
-      return worst.sample;
+      return {worst.sample, &worst == &worst_[near] ? near : far};
     }
     const auto p = terminal_point(e);
     const double fi = std::round(p[0] / grid_.dx), fj = std::round(p[1] / grid_.dy);
     const std::size_t i = static_cast<std::size_t>(std::clamp(fi, 0.0, static_cast<double>(grid_.nx - 1)));
     const std::size_t j = static_cast<std::size_t>(std::clamp(fj, 0.0, static_cast<double>(grid_.ny - 1)));
     const std::uint32_t s = static_cast<std::uint32_t>(i + j * grid_.nx);
-    if (used_[s] || !grid_.has_data(i, j)) return worst_[f].sample;
+    if (used_[s] || !grid_.has_data(i, j)) return {worst_[f].sample, f};
     ++report.terminal_points;
-    return s;
+    return {s, near};
   }
 
   HalfEdge terminal_edge(FaceId f) const {
@@ -347,7 +362,6 @@ class TinBuilder {
   std::vector<bool> used_;               // by sample: already a vertex
   std::vector<std::uint32_t> samples_;   // by vertex
   std::vector<float> heights_;           // by vertex (a corner without data borrows one)
-  std::vector<std::uint32_t> stamps_;    // by face
   std::vector<FaceWorst> worst_;         // by face
   std::priority_queue<Worst> queue_;
   std::size_t border_vertices_ = 0;     // inserted on the grid's border

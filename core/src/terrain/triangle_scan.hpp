@@ -8,7 +8,11 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <utility>
 
 namespace meshstep::terrain::detail {
@@ -27,31 +31,43 @@ inline std::int64_t floor_div(std::int64_t n, std::int64_t d) { return n >= 0 ? 
 inline std::int64_t ceil_div(std::int64_t n, std::int64_t d) { return -floor_div(-n, d); }
 
 // The height at a sample of the plane through the corners' heights za, zb, zc, from the
-// sample's weights. One formula for the algorithm and for the measure of its result, so
-// that a sample the algorithm found within the bound is within it when measured again.
+// sample's weights and 1 / (twice the area). One formula for the algorithm and for the
+// measure of its result, so that a sample the algorithm found within the bound is within
+// it when measured again, to the last bit. (A product, not a quotient: this runs for
+// every sample of every triangle an insertion makes.)
 inline double plane_height(std::int64_t wa, std::int64_t wb, std::int64_t wc, double za, double zb, double zc,
-                           std::int64_t area2) {
-  return (static_cast<double>(wa) * za + static_cast<double>(wb) * zb + static_cast<double>(wc) * zc) /
-         static_cast<double>(area2);
+                           double inverse_area2) {
+  return (static_cast<double>(wa) * za + static_cast<double>(wb) * zb + static_cast<double>(wc) * zc) *
+         inverse_area2;
 }
 
-// Calls visit(i, j, wa, wb, wc) for every sample (i, j) inside or on the counter-clockwise
-// triangle abc, row by row, columns ascending; wa + wb + wc = twice the area, and wa is
-// a's weight (the edge function of the opposite edge bc). Degenerate triangles visit
-// nothing.
-template <class Visit>
-void scan_triangle(GridIndex a, GridIndex b, GridIndex c, Visit&& visit) {
+// How each weight changes from one column to the next: w(i + 1) = w(i) + step.
+inline std::array<std::int64_t, 3> column_steps(GridIndex a, GridIndex b, GridIndex c) {
+  return {-(c.j - b.j), -(a.j - c.j), -(b.j - a.j)};
+}
+
+// Calls visit_row(j, i_first, i_last, wa, wb, wc) for every row j that the counter-
+// clockwise triangle abc crosses, with the columns of the samples inside or on it and the
+// weights at i_first: wa + wb + wc = twice the area, and wa is a's weight (the edge
+// function of the opposite edge bc); along the row, each weight grows by its column
+// step (column_steps). Degenerate triangles visit nothing.
+// Only the rows in [rows.first, rows.second] when given.
+using RowRange = std::pair<std::int64_t, std::int64_t>;
+inline constexpr RowRange kAllRows{std::numeric_limits<std::int64_t>::min(), std::numeric_limits<std::int64_t>::max()};
+
+template <class VisitRow>
+void scan_rows(GridIndex a, GridIndex b, GridIndex c, VisitRow&& visit_row, RowRange rows = kAllRows) {
   const std::int64_t area2 = edge_function(a, b, c);
   if (area2 <= 0) return;
-  const std::int64_t j_lo = std::min({a.j, b.j, c.j}), j_hi = std::max({a.j, b.j, c.j});
+  const std::int64_t j_lo = std::max(std::min({a.j, b.j, c.j}), rows.first);
+  const std::int64_t j_hi = std::min(std::max({a.j, b.j, c.j}), rows.second);
   const std::int64_t i_lo = std::min({a.i, b.i, c.i}), i_hi = std::max({a.i, b.i, c.i});
-  // Each weight is linear in i along a row: w(i) = w(i_lo) + step * (i - i_lo).
-  const std::int64_t step_a = -(c.j - b.j), step_b = -(a.j - c.j), step_c = -(b.j - a.j);
+  const auto [step_a, step_b, step_c] = column_steps(a, b, c);
   for (std::int64_t j = j_lo; j <= j_hi; ++j) {
     const GridIndex row_start{i_lo, j};
-    std::int64_t wa = edge_function(b, c, row_start);
-    std::int64_t wb = edge_function(c, a, row_start);
-    std::int64_t wc = edge_function(a, b, row_start);
+    const std::int64_t wa = edge_function(b, c, row_start);
+    const std::int64_t wb = edge_function(c, a, row_start);
+    const std::int64_t wc = edge_function(a, b, row_start);
     // The columns where all three weights are >= 0, from each weight's sign change.
     std::int64_t first = 0, last = i_hi - i_lo;
     bool empty = false;
@@ -65,16 +81,81 @@ void scan_triangle(GridIndex a, GridIndex b, GridIndex c, Visit&& visit) {
       }
     }
     if (empty || first > last) continue;
-    wa += step_a * first;
-    wb += step_b * first;
-    wc += step_c * first;
-    for (std::int64_t k = first; k <= last; ++k) {
-      visit(i_lo + k, j, wa, wb, wc);
+    visit_row(j, i_lo + first, i_lo + last, wa + step_a * first, wb + step_b * first, wc + step_c * first);
+  }
+}
+
+// Calls visit(i, j, wa, wb, wc) for every sample (i, j) inside or on the triangle, row by
+// row, columns ascending.
+template <class Visit>
+void scan_triangle(GridIndex a, GridIndex b, GridIndex c, Visit&& visit) {
+  const auto [step_a, step_b, step_c] = column_steps(a, b, c);
+  scan_rows(a, b, c, [&](std::int64_t j, std::int64_t first, std::int64_t last, std::int64_t wa, std::int64_t wb,
+                         std::int64_t wc) {
+    for (std::int64_t i = first; i <= last; ++i) {
+      visit(i, j, wa, wb, wc);
       wa += step_a;
       wb += step_b;
       wc += step_c;
     }
-  }
+  });
+}
+
+// Calls visit(sample, error) for every sample inside or on the triangle abc of a grid of
+// heights z (row-major, nx a row), its error measured against the
+// plane through the corners' heights za, zb, zc. The one measure of the algorithm and of
+// the check of its result, so that both agree to the last bit; the plane along a row is
+// its value at the row's first sample plus a slope times the column offset. A sample
+// without data (NaN) has a NaN error: `error > worst` is false for it, and a caller that
+// sums errors must skip it.
+template <class Visit>
+void scan_errors(const float* z, std::size_t nx, GridIndex a, GridIndex b, GridIndex c, double za, double zb,
+                 double zc, Visit&& visit, RowRange rows = kAllRows) {
+  const double inverse_area2 = 1.0 / static_cast<double>(edge_function(a, b, c));
+  const auto [step_a, step_b, step_c] = column_steps(a, b, c);
+  const double slope = plane_height(step_a, step_b, step_c, za, zb, zc, inverse_area2);
+  scan_rows(a, b, c, [&](std::int64_t j, std::int64_t first, std::int64_t last, std::int64_t wa, std::int64_t wb,
+                         std::int64_t wc) {
+    const double start = plane_height(wa, wb, wc, za, zb, zc, inverse_area2);
+    const std::size_t row = static_cast<std::size_t>(j) * nx;
+    for (std::int64_t i = first; i <= last; ++i) {
+      const double height = z[row + static_cast<std::size_t>(i)];
+      visit(row + static_cast<std::size_t>(i), std::abs(height - (start + slope * static_cast<double>(i - first))));
+    }
+  }, rows);
+}
+
+// The largest error among the samples with data inside or on the triangle abc, and its
+// sample (error -1 and sample `none` when it holds no sample with data): scan_errors'
+// arithmetic, to the bit, in a loop that keeps its running maximum in registers (through
+// a visitor it went to memory on every sample, and this loop is most of a terrain run).
+struct WorstSample {
+  double error;
+  std::size_t sample;
+};
+inline WorstSample worst_sample(const float* z, std::size_t nx, GridIndex a, GridIndex b, GridIndex c, double za,
+                                double zb, double zc, std::size_t none) {
+  const double inverse_area2 = 1.0 / static_cast<double>(edge_function(a, b, c));
+  const auto [step_a, step_b, step_c] = column_steps(a, b, c);
+  const double slope = plane_height(step_a, step_b, step_c, za, zb, zc, inverse_area2);
+  WorstSample worst{-1.0, none};
+  scan_rows(a, b, c, [&](std::int64_t j, std::int64_t first, std::int64_t last, std::int64_t wa, std::int64_t wb,
+                         std::int64_t wc) {
+    const double start = plane_height(wa, wb, wc, za, zb, zc, inverse_area2);
+    const float* row = z + static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(first);
+    const std::int64_t n = last - first + 1;
+    double best = worst.error;
+    std::int64_t best_k = -1;
+    for (std::int64_t k = 0; k < n; ++k) {
+      const double error = std::abs(static_cast<double>(row[k]) - (start + slope * static_cast<double>(k)));
+      if (error > best) {  // false for NaN: no data
+        best = error;
+        best_k = k;
+      }
+    }
+    if (best_k >= 0) worst = {best, static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(first + best_k)};
+  });
+  return worst;
 }
 
 }  // namespace meshstep::terrain::detail
