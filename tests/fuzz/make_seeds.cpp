@@ -75,6 +75,21 @@ int main(int argc, char** argv) {
   write(out / "esri_grid" / "nodata.asc",
         "ncols 2\nnrows 2\nxllcenter 10\nyllcenter -5\ncellsize 0.25\nNODATA_value -9999\n-9999 2\n3.5e2 4\n");
 
+  // Surfaces: the first byte picks the reader (0 .off, 1 .obj, 2 .ply, 3 .stl).
+  write(out / "surface" / "square.off", std::string(1, '\0') + "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 1\n3 0 1 2\n3 0 2 3\n");
+  write(out / "surface" / "tetra.obj", std::string(1, '\1') + "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
+  write(out / "surface" / "quad.ply", std::string(1, '\2') +
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
+  write(out / "surface" / "one.stl", std::string(1, '\3') +
+        "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid s\n");
+
+  // Terrains: small height grids, one with a hole of no data and a corner without any.
+  write(out / "terrain" / "hill.asc",
+        "ncols 5\nnrows 4\nxllcorner 0\nyllcorner 0\ncellsize 10\n1 2 3 2 1\n2 4 6 4 2\n2 5 9 5 2\n1 2 3 2 1\n");
+  write(out / "terrain" / "holes.asc",
+        "ncols 4\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 1\nNODATA_value -1\n-1 2 3 4\n5 -1 7 8\n9 10 11 -1\n");
+
   // The pipeline: a byte of choices, then the .poly.
   for (const auto& [name, text] : polys)
     for (const char choice : {'\0', '\7', '\x19'}) write(out / "pipeline" / (name + "_" + std::to_string(int(choice))), choice + text);

@@ -41,7 +41,8 @@ inline double plane_height(std::int64_t wa, std::int64_t wb, std::int64_t wc, do
          inverse_area2;
 }
 
-// How each weight changes from one column to the next: w(i + 1) = w(i) + step.
+// How each weight changes from one column to the next: w(i + 1) = w(i) + step. (Callers
+// name the three in plain variables: clang 15's lambdas cannot capture a structured binding.)
 inline std::array<std::int64_t, 3> column_steps(GridIndex a, GridIndex b, GridIndex c) {
   return {-(c.j - b.j), -(a.j - c.j), -(b.j - a.j)};
 }
@@ -62,7 +63,8 @@ void scan_rows(GridIndex a, GridIndex b, GridIndex c, VisitRow&& visit_row, RowR
   const std::int64_t j_lo = std::max(std::min({a.j, b.j, c.j}), rows.first);
   const std::int64_t j_hi = std::min(std::max({a.j, b.j, c.j}), rows.second);
   const std::int64_t i_lo = std::min({a.i, b.i, c.i}), i_hi = std::max({a.i, b.i, c.i});
-  const auto [step_a, step_b, step_c] = column_steps(a, b, c);
+  const std::array<std::int64_t, 3> steps = column_steps(a, b, c);
+  const std::int64_t step_a = steps[0], step_b = steps[1], step_c = steps[2];
   for (std::int64_t j = j_lo; j <= j_hi; ++j) {
     const GridIndex row_start{i_lo, j};
     const std::int64_t wa = edge_function(b, c, row_start);
@@ -89,7 +91,8 @@ void scan_rows(GridIndex a, GridIndex b, GridIndex c, VisitRow&& visit_row, RowR
 // row, columns ascending.
 template <class Visit>
 void scan_triangle(GridIndex a, GridIndex b, GridIndex c, Visit&& visit) {
-  const auto [step_a, step_b, step_c] = column_steps(a, b, c);
+  const std::array<std::int64_t, 3> steps = column_steps(a, b, c);
+  const std::int64_t step_a = steps[0], step_b = steps[1], step_c = steps[2];
   scan_rows(a, b, c, [&](std::int64_t j, std::int64_t first, std::int64_t last, std::int64_t wa, std::int64_t wb,
                          std::int64_t wc) {
     for (std::int64_t i = first; i <= last; ++i) {
@@ -112,7 +115,8 @@ template <class Visit>
 void scan_errors(const float* z, std::size_t nx, GridIndex a, GridIndex b, GridIndex c, double za, double zb,
                  double zc, Visit&& visit, RowRange rows = kAllRows) {
   const double inverse_area2 = 1.0 / static_cast<double>(edge_function(a, b, c));
-  const auto [step_a, step_b, step_c] = column_steps(a, b, c);
+  const std::array<std::int64_t, 3> steps = column_steps(a, b, c);
+  const std::int64_t step_a = steps[0], step_b = steps[1], step_c = steps[2];
   const double slope = plane_height(step_a, step_b, step_c, za, zb, zc, inverse_area2);
   scan_rows(a, b, c, [&](std::int64_t j, std::int64_t first, std::int64_t last, std::int64_t wa, std::int64_t wb,
                          std::int64_t wc) {
@@ -136,7 +140,8 @@ struct WorstSample {
 inline WorstSample worst_sample(const float* z, std::size_t nx, GridIndex a, GridIndex b, GridIndex c, double za,
                                 double zb, double zc, std::size_t none) {
   const double inverse_area2 = 1.0 / static_cast<double>(edge_function(a, b, c));
-  const auto [step_a, step_b, step_c] = column_steps(a, b, c);
+  const std::array<std::int64_t, 3> steps = column_steps(a, b, c);
+  const std::int64_t step_a = steps[0], step_b = steps[1], step_c = steps[2];
   const double slope = plane_height(step_a, step_b, step_c, za, zb, zc, inverse_area2);
   WorstSample worst{-1.0, none};
   scan_rows(a, b, c, [&](std::int64_t j, std::int64_t first, std::int64_t last, std::int64_t wa, std::int64_t wb,
