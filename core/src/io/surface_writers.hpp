@@ -13,6 +13,12 @@ void write_obj(const std::string& path, const Surface& s);
 void write_ply(const std::string& path, const Surface& s, bool binary);
 void write_stl(const std::string& path, const Surface& s, bool binary);
 
+class AtomicWriter;
+
+// The body OFF and ASCII PLY share: a line "x y z" a vertex (shortest exact doubles), then
+// a line "3 a b c" a triangle.
+void write_vertex_and_face_lines(AtomicWriter& w, const Surface& s);
+
 // "cannot write this surface: message", as InputError(path, 0, ...).
 [[noreturn]] void refuse_surface(const std::string& path, const std::string& message);
 

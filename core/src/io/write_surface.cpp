@@ -49,17 +49,7 @@ void write_point(AtomicWriter& w, const Point3& p) {
 
 }  // namespace
 
-void refuse_surface(const std::string& path, const std::string& message) {
-  throw InputError(path, 0, "cannot write this surface: " + message);
-}
-
-void write_off(const std::string& path, const Surface& s) {
-  AtomicWriter w(path);
-  w.text("OFF\n");
-  w.integer(static_cast<std::int64_t>(s.vertices.size()));
-  w.ch(' ');
-  w.integer(static_cast<std::int64_t>(s.triangles.size()));
-  w.text(" 0\n");
+void write_vertex_and_face_lines(AtomicWriter& w, const Surface& s) {
   for (const Point3& p : s.vertices) {
     write_point(w, p);
     w.ch('\n');
@@ -72,6 +62,20 @@ void write_off(const std::string& path, const Surface& s) {
     }
     w.ch('\n');
   }
+}
+
+void refuse_surface(const std::string& path, const std::string& message) {
+  throw InputError(path, 0, "cannot write this surface: " + message);
+}
+
+void write_off(const std::string& path, const Surface& s) {
+  AtomicWriter w(path);
+  w.text("OFF\n");
+  w.integer(static_cast<std::int64_t>(s.vertices.size()));
+  w.ch(' ');
+  w.integer(static_cast<std::int64_t>(s.triangles.size()));
+  w.text(" 0\n");
+  write_vertex_and_face_lines(w, s);
   w.commit();
 }
 

@@ -17,25 +17,6 @@ void write_header(AtomicWriter& w, const Surface& s, bool binary) {
   w.text("\nproperty list uchar uint vertex_indices\nend_header\n");
 }
 
-void write_ascii_body(AtomicWriter& w, const Surface& s) {
-  for (const Point3& p : s.vertices) {
-    w.real(p.x);
-    w.ch(' ');
-    w.real(p.y);
-    w.ch(' ');
-    w.real(p.z);
-    w.ch('\n');
-  }
-  for (const auto& t : s.triangles) {
-    w.ch('3');
-    for (const std::uint32_t v : t) {
-      w.ch(' ');
-      w.integer(v);
-    }
-    w.ch('\n');
-  }
-}
-
 void write_binary_body(AtomicWriter& w, const Surface& s) {
   char record[24];
   for (const Point3& p : s.vertices) {
@@ -59,7 +40,7 @@ void write_ply(const std::string& path, const Surface& s, bool binary) {
   if (binary) {
     write_binary_body(w, s);
   } else {
-    write_ascii_body(w, s);
+    write_vertex_and_face_lines(w, s);
   }
   w.commit();
 }
