@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "refine_surface.hpp"
 #include "console.hpp"
 #include "json_line.hpp"
 #include "meshstep/check/quality.hpp"
@@ -142,7 +143,34 @@ std::size_t midpoint_shape_cap(const RefineOptions& o, std::size_t input_vertice
   return 100'000 + 100 * input_vertices;
 }
 
+// A 3D surface goes to longest-edge bisection in 3D; only its own options apply.
+int refine_surface(const RefineArgs& args) {
+  for (const CLI::Option* bound : args.bounds)
+    if (bound->count() > 0 && bound->get_name() != "--size" && bound->get_name() != "--max-area" &&
+        bound->get_name() != "--max-triangles") {
+      print_error(bound->get_name() + " does not apply to a 3D surface: it takes --size L, --max-area A and "
+                                      "--max-triangles N");
+      return kExitUsage;
+    }
+  SurfaceRefineArgs surface;
+  surface.input = args.input;
+  surface.output = args.prefix;
+  surface.algorithm = args.algorithm;
+  if (!args.size.empty() && !parse_number(args.size, surface.max_edge)) {
+    print_error("--size: a 3D surface takes a length, not '" + args.size + "'");
+    return kExitUsage;
+  }
+  surface.max_area = args.max_area;
+  surface.max_triangles = args.max_triangles;
+  surface.ds = args.ds;
+  surface.stats = args.stats;
+  surface.no_output = args.no_output;
+  surface.quiet = args.quiet;
+  return run_refine_surface(surface);
+}
+
 int run_refine(const RefineArgs& args) {
+  if (is_surface_file(args.input)) return refine_surface(args);
   const Verbosity verbosity =
       args.quiet ? Verbosity::quiet : args.verbose ? Verbosity::verbose : Verbosity::normal;
 
@@ -482,7 +510,9 @@ Command add_refine_command(CLI::App& parent) {
       "for lepp-aspect; lepp-bisection and midpoint-area need --max-area or --size. INPUT may\n"
       "also be a mesh PREFIX (PREFIX.node + PREFIX.ele [+ PREFIX.area]) to refine again.");
   cmd->add_option("INPUT", args->input, "Input .poly or .node file (Triangle's formats), or a mesh PREFIX\n"
-                  "(PREFIX.node + PREFIX.ele, optionally PREFIX.area) to refine again, as Triangle's -r")->required();
+                  "(PREFIX.node + PREFIX.ele, optionally PREFIX.area) to refine again, as Triangle's -r;\n"
+                  "or a 3D surface (.off, .obj, .ply, .stl): --algorithm lepp-bisection with --size L\n"
+                  "and/or --max-area A, edges and areas in 3D; -o names the output surface file")->required();
 
   std::vector<std::string> algorithm_names, selection_names;
   for (const AlgorithmInfo& a : algorithms()) algorithm_names.emplace_back(a.name);

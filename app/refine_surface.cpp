@@ -1,0 +1,86 @@
+#include "refine_surface.hpp"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "command.hpp"
+#include "console.hpp"
+#include "json_line.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/io/surface_io.hpp"
+#include "meshstep/surface/surface_refine.hpp"
+
+namespace meshstep::app {
+
+bool is_surface_file(const std::string& path) { return io::surface_format_for(path).has_value(); }
+
+namespace {
+
+// INPUT.off -> INPUT.1.off, as Triangle numbers its outputs.
+std::string default_output(const std::string& input) {
+  const std::filesystem::path p(input);
+  return (p.parent_path() / (p.stem().string() + ".1" + p.extension().string())).string();
+}
+
+}  // namespace
+
+int run_refine_surface(const SurfaceRefineArgs& args) {
+  const Verbosity verbosity = args.quiet ? Verbosity::quiet : Verbosity::normal;
+  if (args.algorithm != "lepp-bisection") {
+    print_error(args.input + ": a 3D surface is refined by --algorithm lepp-bisection (longest-edge bisection "
+                             "keeps it on the surface); '" + args.algorithm + "' works in the plane");
+    return kExitUsage;
+  }
+  if (args.max_edge <= 0.0 && args.max_area <= 0.0) {
+    print_error("refining a surface needs --size L (longest edge) or --max-area A");
+    return kExitUsage;
+  }
+  const std::string output = args.output.empty() ? default_output(args.input) : args.output;
+  const auto format = io::surface_format_for(output);
+  if (!args.no_output && !format) {
+    print_error(output + ": not a surface file name (.off, .obj, .ply, .stl)");
+    return kExitUsage;
+  }
+  try {
+    const io::Surface in = io::read_surface(args.input);
+    surface::BisectionOptions options;
+    options.max_edge = args.max_edge;
+    options.max_area = args.max_area;
+    options.max_triangles = args.max_triangles;
+    options.data_structure = args.ds == "dcel" ? DataStructure::dcel : DataStructure::tds;
+    surface::BisectionReport report;
+    Stopwatch clock;
+    const io::Surface out = surface::bisect_surface(in, options, &report);
+    const double refine_ms = clock.lap_ms();
+    if (!args.no_output) io::write_surface(output, out, *format);
+    if (report.capped)
+      print_warning(verbosity, "stopped at --max-triangles " + std::to_string(args.max_triangles) +
+                                   " before every bound was met");
+    if (verbosity != Verbosity::quiet)
+      std::printf("%s: %zu triangles -> %zu (%zu bisections); smallest angle %.2f -> %.2f degrees; area %.17g%s\n",
+                  args.input.c_str(), in.triangles.size(), report.triangles, report.bisections,
+                  report.smallest_angle_before_deg, report.smallest_angle_after_deg, report.area_after,
+                  args.no_output ? " (not written)" : (", written to " + output).c_str());
+    if (args.stats == "json") {
+      JsonLine stats;
+      stats.field("input", args.input)
+          .field("triangles_before", in.triangles.size())
+          .field("triangles", report.triangles)
+          .field("vertices", out.vertices.size())
+          .field("bisections", report.bisections)
+          .field("min_angle_before", report.smallest_angle_before_deg)
+          .field("min_angle", report.smallest_angle_after_deg)
+          .field("area_before", report.area_before)
+          .field("area", report.area_after)
+          .field("capped", report.capped)
+          .field("ms", refine_ms);
+      std::printf("%s\n", stats.str().c_str());
+    }
+  } catch (const InputError& e) {
+    print_error(input_error_text(args.input, e));
+    return kExitBadInput;
+  }
+  return kExitOk;
+}
+
+}  // namespace meshstep::app

@@ -1,0 +1,55 @@
+// Refinement of a 3D triangle surface by Rivara's longest-edge bisection with Lepp.
+//
+// Each step takes a triangle that breaks a size bound, follows its longest-edge
+// propagating path (Lepp: across the longest edge, again and again, until the edge is on
+// the border or is also the longest edge of the triangle across it) and cuts the one or two
+// terminal triangles at the midpoint of that terminal edge, until the triangle itself has
+// been cut. Every cut is across a triangle's longest edge, so the mesh never has a hanging
+// vertex and no angle falls below half the smallest angle of the input (Rivara's bound:
+// each triangle is cut in its own plane). Midpoints lie on their edges (up to the rounding
+// of their coordinates), so the surface, its border and its area do not change.
+//
+// Triangles are taken the most oversized first (to within a factor of 2^(1/4), by buckets),
+// so a run stopped by the cap has spent its triangles where they were needed most.
+//
+// Lengths and areas are measured in 3D. Between edges of equal length the one with the
+// smaller pair of vertex ids counts as longer, so the result depends on the geometry and
+// the numbering only: both data structures give the same surface, run after run.
+#pragma once
+
+#include <cstddef>
+
+#include "meshstep/delaunay/triangulate.hpp"
+#include "meshstep/io/surface_io.hpp"
+
+namespace meshstep::surface {
+
+struct BisectionOptions {
+  double max_edge = 0.0;          // every edge at most this long at the end (0: no bound)
+  double max_area = 0.0;          // every triangle's area at most this (0: no bound)
+  std::size_t max_triangles = 0;  // never more triangles than this (0: no cap)
+  DataStructure data_structure = DataStructure::tds;
+};
+
+struct BisectionReport {
+  std::size_t bisections = 0;  // edges cut, each adding one vertex
+  std::size_t triangles = 0;   // in the output
+  double smallest_angle_before_deg = 0.0;
+  double smallest_angle_after_deg = 0.0;
+  double area_before = 0.0;
+  double area_after = 0.0;
+  bool capped = false;  // max_triangles stopped the run before every bound was met
+};
+
+// The refined surface: the input's vertices first, in their order, then one midpoint per
+// bisection in the order they were made; triangles oriented as the input's, each listed
+// from its smallest vertex id, sorted. Throws InputError for an input that is not a
+// manifold surface (border allowed): degenerate or duplicate triangles, edges of more than
+// two triangles, neighbours of opposite orientation, coordinates that are not finite; and
+// for a negative or non-finite bound. Vertices of no triangle are kept as they are. A
+// triangle whose terminal edge is too short for its rounded midpoint to differ from its
+// ends (a bound near the precision of the coordinates) is left as it is.
+io::Surface bisect_surface(const io::Surface& in, const BisectionOptions& options,
+                           BisectionReport* report = nullptr);
+
+}  // namespace meshstep::surface

@@ -1,0 +1,78 @@
+// meshstep refine on a 3D surface: longest-edge bisection with edges measured in 3D.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "meshstep/io/surface_io.hpp"
+#include "run_cli.hpp"
+#include "temp_dir.hpp"
+
+namespace meshstep {
+namespace {
+
+using testing::run_meshstep;
+using testing::TempDir;
+
+// A unit cube, 12 triangles facing out.
+std::filesystem::path write_cube(const std::filesystem::path& dir) {
+  const auto path = dir / "cube.off";
+  std::ofstream(path) << "OFF\n8 12 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                         "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n"
+                         "3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n";
+  return path;
+}
+
+double area(const io::Surface& s) {
+  double sum = 0.0;
+  for (const auto& t : s.triangles) {
+    const auto &a = s.vertices[t[0]], &b = s.vertices[t[1]], &c = s.vertices[t[2]];
+    const double u[3] = {b.x - a.x, b.y - a.y, b.z - a.z}, v[3] = {c.x - a.x, c.y - a.y, c.z - a.z};
+    sum += 0.5 * std::hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]);
+  }
+  return sum;
+}
+
+TEST(SurfaceRefineCli, BisectsACubeKeepingItClosedAndItsArea) {
+  TempDir dir;
+  const auto cube = write_cube(dir.path());
+  const auto out = dir.path() / "fine.ply";
+  const auto r = run_meshstep("refine " + cube.string() + " --algorithm lepp-bisection --size 0.2 -o " + out.string(),
+                              dir.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const io::Surface s = io::read_surface(out.string());
+  EXPECT_GT(s.triangles.size(), 12u * 16);
+  const io::SurfaceReport report = io::report_surface(s);
+  EXPECT_TRUE(report.clean()) << io::describe(report);
+  EXPECT_EQ(report.boundary_edges, 0u);
+  EXPECT_NEAR(area(s), 6.0, 1e-12);
+  for (const auto& t : s.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const auto &p = s.vertices[t[k]], &q = s.vertices[t[(k + 1) % 3]];
+      EXPECT_LE(std::hypot(p.x - q.x, p.y - q.y, p.z - q.z), 0.2);
+    }
+}
+
+TEST(SurfaceRefineCli, TheDefaultOutputIsNumberedLikeTriangles) {
+  TempDir dir;
+  const auto cube = write_cube(dir.path());
+  const auto r = run_meshstep("refine " + cube.string() + " --algorithm lepp-bisection --max-area 0.1 -q", dir.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "cube.1.off"));
+}
+
+TEST(SurfaceRefineCli, RefusesWhatDoesNotApplyAndBadFiles) {
+  TempDir dir;
+  const auto cube = write_cube(dir.path());
+  EXPECT_EQ(run_meshstep("refine " + cube.string() + " --size 0.2", dir.path()).status, 2);  // offcenter
+  EXPECT_EQ(run_meshstep("refine " + cube.string() + " --algorithm lepp-bisection --min-angle 20", dir.path()).status, 2);
+  EXPECT_EQ(run_meshstep("refine " + cube.string() + " --algorithm lepp-bisection", dir.path()).status, 2);
+  const auto bad = dir.path() / "bad.off";
+  std::ofstream(bad) << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 x\n3 0 1 2\n";
+  const auto r = run_meshstep("refine " + bad.string() + " --algorithm lepp-bisection --size 1", dir.path());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find(bad.string() + ":5:"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace meshstep
