@@ -101,4 +101,11 @@ void ImGuiGl::draw(const ImDrawData& data, int width, int height, bool y_down) {
   glBindTexture(GL_TEXTURE_2D, 0);
 }
 
+void opaque_image(ImTextureID texture, ImVec2 size) {
+  ImDrawList* list = ImGui::GetWindowDrawList();
+  list->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisable(GL_BLEND); }, nullptr);
+  ImGui::Image(texture, size);
+  list->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glEnable(GL_BLEND); }, nullptr);
+}
+
 }  // namespace meshstep::viewer

@@ -38,6 +38,11 @@ class ImGuiGl {
   std::size_t vertex_capacity_ = 0, index_capacity_ = 0;
 };
 
+// An image that covers what is under it (the canvas's picture), drawn without blending:
+// on llvmpipe, blending the canvas's million pixels into the frame cost as much as the rest
+// of the window together. The window under it should not draw a background either.
+void opaque_image(ImTextureID texture, ImVec2 size);
+
 // A GL texture name as ImGui carries it, and back.
 inline ImTextureID texture_id(GLuint name) { return reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(name)); }
 inline GLuint texture_name(ImTextureID id) { return static_cast<GLuint>(reinterpret_cast<std::uintptr_t>(id)); }

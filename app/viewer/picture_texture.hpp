@@ -1,9 +1,9 @@
 // A picture drawn on another thread (the canvas's worker), shown as an ImGui image: three GL
-// textures filled in turn. An upload never touches a texture that the frames still queued
-// in the driver draw: llvmpipe would finish those frames first, and while the worker's
-// picture of a million triangles holds the CPU that took up to a second. With two, the
-// frames queued behind the worker still reached back to the older one (0.3-0.6 s uploads
-// at 1e6); with three, the worst scrubbing frame is 40-70 ms.
+// textures filled in turn. An upload never touches a texture that a frame still queued in
+// the driver draws: llvmpipe would finish that frame first, and with the worker's picture
+// of a million triangles holding the CPU that could take a second. The frame shown now is
+// the only one in flight (a window's swap and the off-screen host's fence keep it so), so
+// the texture uploaded into was last drawn two pictures ago.
 #pragma once
 
 #include <array>

@@ -183,8 +183,11 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
   place(x, y, w, h);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
-  ImGui::Begin("canvas", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
-                                      ImGuiWindowFlags_NoScrollWithMouse);
+  // Once there is a picture it covers the whole canvas: no background under it.
+  const bool covered = !worker_ || has_picture_;
+  ImGui::Begin("canvas", nullptr,
+               kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
+                   ImGuiWindowFlags_NoScrollWithMouse | (covered ? ImGuiWindowFlags_NoBackground : 0));
   const int width = static_cast<int>(w), height = static_cast<int>(h);
   canvas_rect_ = ImVec4(x, y, w, h);
   if (fit_pending_ || camera_.width() != width || camera_.height() != height) {
@@ -206,7 +209,7 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
   if (worker_) {
     post_canvas_request();
     if (worker_->take(picture_)) show_worker_picture();
-    if (has_picture_) ImGui::Image(picture_texture_.id(), ImVec2(w, h));
+    if (has_picture_) opaque_image(picture_texture_.id(), ImVec2(w, h));
     else ImGui::InvisibleButton("##canvas", ImVec2(w, h));
   } else {
     const Drawn now{session_->scene_builds(), s.visible.bits(), camera_.center().x, camera_.center().y,
@@ -216,7 +219,7 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
       drawn_ = now;
       ++canvas_renders_;
     }
-    ImGui::Image(texture_id(renderer_.texture()), ImVec2(w, h));
+    opaque_image(texture_id(renderer_.texture()), ImVec2(w, h));
   }
   const bool canvas_hovered = ImGui::IsItemHovered();
   if (worker_ && worker_->drawing()) draw_drawing_badge(x, y);
