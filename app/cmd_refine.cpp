@@ -47,7 +47,8 @@ struct RefineArgs {
   std::string ds = "tds";
   bool convex_hull = false;
   bool improve = false;
-  bool delete_free = false;
+  bool delete_free = false;  // asked for by name (it is the default for Delaunay insertion)
+  bool keep_free = false;
   std::string record;
   std::string stats;
   bool no_output = false;
@@ -199,8 +200,12 @@ int run_refine(const RefineArgs& args) {
   if (args.insertion == "bisection") options.insertion = RefineInsertion::bisection;
   options.triangulate.convex_hull = args.convex_hull;
   options.improve = options.improve || args.improve;
-  options.delete_free_near_splits = args.delete_free;
-  if ((options.improve || options.delete_free_near_splits) && options.insertion == RefineInsertion::bisection) {
+  if (args.delete_free && args.keep_free) {
+    print_error("--delete-free and --keep-free contradict each other: give one");
+    return kExitUsage;
+  }
+  options.delete_free_near_splits = options.insertion == RefineInsertion::delaunay && !args.keep_free;
+  if ((options.improve || args.delete_free) && options.insertion == RefineInsertion::bisection) {
     print_error(std::string(options.improve ? "--improve" : "--delete-free") +
                 " removes vertices from a Delaunay mesh: it does not go with bisection");
     return kExitUsage;
@@ -582,7 +587,10 @@ Command add_refine_command(CLI::App& parent) {
                 "smallest angle round it and keeps the bounds (what --algorithm improve does)");
   cmd->add_flag("--delete-free", args->delete_free,
                 "When a segment is split away from corners, remove the free Steiner vertices\n"
-                "inside its diametral circle (Chew's rule, as Triangle; counted in removed_vertices)");
+                "inside its diametral circle (Chew's rule, as Triangle; counted in\n"
+                "removed_vertices). The default for Delaunay insertion");
+  cmd->add_flag("--keep-free", args->keep_free,
+                "Keep the free Steiner vertices near a split segment (the rule before 2026-12-03)");
   add_record_option(*cmd, args->record);
   cmd->add_option("-o,--output", args->prefix,
                   "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly\n"

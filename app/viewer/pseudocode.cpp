@@ -149,7 +149,7 @@ constexpr const char* kCdt = "T ← constrained Delaunay triangulation of the in
 void refinement_head(Builder& b) {
   b.add(At::start, {kCdt})
       .add(At::encroached, {"while a subsegment s is encroached (a vertex in its diametral lens or circle):"})
-      .add(At::split, {"    split s at its midpoint (concentric shell: where another segment meets)"});
+      .add(At::split, {"    split s: midpoint, deleting free vertices in its circle; corner: shell"});
 }
 
 // The tail: the new point (c, or p in a Lepp program's inner loop) rejected or inserted, by
@@ -508,8 +508,12 @@ std::optional<At> refinement_line(const replay::LogReader& log, std::uint64_t e,
       if (kind == StepKind::bisect) return At::bisect;
       if (ev.type == EventType::constrain) return kNoLine;
       return ev.type == EventType::cavity ? At::cavity : At::insert;
-    case EventType::flip: return is_flip(ev, FlipReason::delaunay) ? std::optional<At>(At::legalize) : kNoLine;
-    default: return kNoLine;  // vertex removals near a split (--delete-free) have no line here
+    case EventType::flip:
+      if (is_flip(ev, FlipReason::delaunay)) return At::legalize;
+      // The free vertices deleted near a split go with it.
+      return in_split && is_flip(ev, FlipReason::vertex_removal) ? std::optional<At>(At::split) : kNoLine;
+    case EventType::remove_vertex: return in_split ? std::optional<At>(At::split) : kNoLine;
+    default: return kNoLine;
   }
 }
 

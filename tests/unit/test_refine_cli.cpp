@@ -170,12 +170,42 @@ TEST_F(RefineCli, RegionalAreasAreABoundOfTheirOwn) {
   EXPECT_TRUE(contains(plain.err, "regional")) << plain.err;
 }
 
+// Free vertices near a split segment are deleted by default (Triangle's rule), kept with
+// --keep-free; the two flags together, or --delete-free with bisection, are refused.
+TEST_F(RefineCli, DeletesFreeVerticesNearSplitsUnlessKeepFree) {
+  const std::string input = write("hole.poly", kSquareWithHole);
+  const std::string run =
+      "refine " + input + " --algorithm circumcenter --min-angle 28 --max-area 0.05 --no-output --stats json";
+  const CommandResult by_default = meshstep(run);
+  const CommandResult kept = meshstep(run + " --keep-free");
+  const CommandResult named = meshstep(run + " --delete-free");
+  ASSERT_EQ(by_default.status, 0) << by_default.err;
+  ASSERT_EQ(kept.status, 0) << kept.err;
+  ASSERT_EQ(named.status, 0) << named.err;
+  EXPECT_GT(json_number(last_line(by_default.out), "removed_vertices"), 0.0) << by_default.out;
+  EXPECT_EQ(json_value(last_line(kept.out), "removed_vertices"), "0") << kept.out;
+  EXPECT_EQ(json_value(last_line(named.out), "steiner"), json_value(last_line(by_default.out), "steiner"));
+  EXPECT_EQ(json_value(last_line(kept.out), "bounds_met"), "true") << kept.out;
+  EXPECT_EQ(json_value(last_line(by_default.out), "bounds_met"), "true") << by_default.out;
+
+  const CommandResult both = meshstep(run + " --keep-free --delete-free");
+  EXPECT_EQ(both.status, 2) << both.err;
+  EXPECT_TRUE(contains(both.err, "contradict")) << both.err;
+  const std::string bisect = "refine " + input + " --algorithm lepp-bisection --max-area 0.01 --no-output -q";
+  EXPECT_EQ(meshstep(bisect).status, 0);
+  const CommandResult asked = meshstep(bisect + " --delete-free");
+  EXPECT_EQ(asked.status, 2) << asked.err;
+  EXPECT_TRUE(contains(asked.err, "does not go with bisection")) << asked.err;
+}
+
 TEST_F(RefineCli, ImproveRemovesVerticesAndKeepsTheBound) {
   const std::string input = write("hole.poly", kSquareWithHole);
   const std::string prefix = dir_.file("improved");
   const CommandResult plain =
-      meshstep("refine " + input + " --algorithm circumcenter --min-angle 28 --max-area 0.05 --no-output --stats json");
-  const CommandResult r = meshstep("refine " + input + " --algorithm improve --min-angle 28 --max-area 0.05 -o " +
+      meshstep("refine " + input + " --algorithm circumcenter --min-angle 28 --max-area 0.05 --keep-free --no-output --stats json");
+  // --keep-free: every removal is the improvement's (deleting free vertices near splits, the
+  // default, leaves it nothing to remove here).
+  const CommandResult r = meshstep("refine " + input + " --algorithm improve --min-angle 28 --max-area 0.05 --keep-free -o " +
                                    prefix + " --stats json");
   ASSERT_EQ(plain.status, 0) << plain.err;
   ASSERT_EQ(r.status, 0) << r.err;

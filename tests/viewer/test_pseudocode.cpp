@@ -296,8 +296,8 @@ TEST(PseudoCode, OffcenterRefinementLines) {
   EXPECT_TRUE(contains(highlighted(at), "while a subsegment s is encroached")) << highlighted(at);
   const std::uint64_t split = find_event(*log, in_refine(EventType::split_edge), by_vertex);
   at = pseudocode_at(*log, split + 1);
-  EXPECT_TRUE(contains(highlighted(at), "split s at its midpoint")) << highlighted(at);
-  EXPECT_TRUE(contains(highlighted(at), "concentric shell")) << highlighted(at);
+  EXPECT_TRUE(contains(highlighted(at), "split s: midpoint")) << highlighted(at);
+  EXPECT_TRUE(contains(highlighted(at), "corner: shell")) << highlighted(at);
 
   const std::uint64_t by_point = find_event(*log, [&](std::uint64_t e, const Event& ev) {
     return ev.type == EventType::encroached && ev.ids[2] == kNone && in_phase(*log, e, Phase::refine);
@@ -439,17 +439,34 @@ TEST(PseudoCode, LeppBisectionNamesRivaraAndBisectsTheTerminalEdge) {
   for (const std::string& line : at.code->lines) EXPECT_FALSE(contains(line, "in-circle")) << line;
 }
 
+// A free vertex deleted near a split segment (the default, Chew's rule) lights the split's
+// own line in the refinement program, not the improvement's.
+TEST(PseudoCode, FreeVerticesDeletedNearASplitShowTheirLine) {
+  const replay::LogReader* log = golden::lesson_run(kCircumcenter);
+  ASSERT_TRUE(log);
+  const std::uint64_t removal = find_event(*log, [&](std::uint64_t e, const Event& ev) {
+    return ev.type == EventType::remove_vertex && in_phase(*log, e, Phase::refine);
+  });
+  ASSERT_LT(removal, log->event_count()) << "the run deletes no vertex near a split any more: pick another";
+  const CodeAt at = pseudocode_at(*log, removal + 1);
+  EXPECT_EQ(at.program, Program::circumcenter);
+  EXPECT_TRUE(contains(highlighted(at), "deleting free vertices in its circle")) << highlighted(at);
+}
+
 TEST(PseudoCode, ImprovementShowsVertexRemoval) {
   const replay::LogReader* log = golden::lesson_run(kImprove);
   ASSERT_TRUE(log);
-  const std::uint64_t removal =
-      find_event(*log, [](std::uint64_t, const Event& ev) { return ev.type == EventType::remove_vertex; });
+  // The improvement's removals (the refinement before it deletes free vertices near splits too).
+  const std::uint64_t removal = find_event(*log, [&](std::uint64_t e, const Event& ev) {
+    return ev.type == EventType::remove_vertex && in_phase(*log, e, Phase::improve);
+  });
   ASSERT_LT(removal, log->event_count()) << "the run removes no vertex any more: pick another";
   CodeAt at = pseudocode_at(*log, removal + 1);
   EXPECT_EQ(at.program, Program::vertex_removal);
   EXPECT_TRUE(contains(highlighted(at), "remove it")) << highlighted(at);
-  const std::uint64_t flip = find_event(*log, [](std::uint64_t, const Event& ev) {
-    return ev.type == EventType::flip && static_cast<FlipReason>(ev.code) == FlipReason::vertex_removal;
+  const std::uint64_t flip = find_event(*log, [&](std::uint64_t e, const Event& ev) {
+    return ev.type == EventType::flip && static_cast<FlipReason>(ev.code) == FlipReason::vertex_removal &&
+           in_phase(*log, e, Phase::improve);
   });
   ASSERT_LT(flip, removal);
   at = pseudocode_at(*log, flip + 1);
