@@ -197,6 +197,20 @@ TEST(TerrainTilesCli, TheJoinRefusesTilesThatDoNotMeet) {
   EXPECT_EQ(missing.status, 1);
 }
 
+TEST(TerrainTilesCli, HelpAndListTellOfTiles) {
+  TempDir dir;
+  const auto help = run_meshstep("--help", dir.path());
+  EXPECT_TRUE(has(help.out, "terrain-join")) << help.out;
+  const auto terrain_help = run_meshstep("terrain --help", dir.path());
+  for (const char* words : {"--tile", "--tile-index", "OUT.rR-cC.EXT", "4 N columns bytes"})
+    EXPECT_TRUE(has(terrain_help.out, words)) << words << " in " << terrain_help.out;
+  const auto list = run_meshstep("list", dir.path());
+  EXPECT_TRUE(has(list.out, "terrain-join")) << list.out;
+  EXPECT_TRUE(has(list.out, "terrain --tile N")) << list.out;
+  const auto json = run_meshstep("list --json", dir.path());
+  EXPECT_TRUE(has(json.out, "\"terrain_tiles\":[")) << json.out;
+}
+
 TEST(TerrainTilesCli, BadTileOptionsAreRefused) {
   TempDir dir;
   const std::string grid = write_tile_hills(dir);
