@@ -104,6 +104,12 @@ int run_terrain_in_tiles(const TerrainArgs& args, const terrain::TerrainAlgorith
                                       ": a tile needs at least 2 x 2 samples (--tile N, N >= 2)");
     return kExitUsage;
   }
+  if (args.max_error.empty()) {
+    // Without a bound a side could only keep every sample: a cap cannot be shared by two tiles.
+    print_error("--tile needs --max-error: each tile's sides are simplified within it, the same way by both "
+                "neighbours (--max-triangles then caps each tile)");
+    return kExitUsage;
+  }
   TiledTerrainRun run;
   if (!args.tile_index.empty()) {
     run.only = parse_tile_index(args.tile_index);
@@ -124,28 +130,25 @@ int run_terrain_in_tiles(const TerrainArgs& args, const terrain::TerrainAlgorith
   }
   const Verbosity verbosity =
       args.quiet ? Verbosity::quiet : args.verbose ? Verbosity::verbose : Verbosity::normal;
-  if (!args.max_error.empty() && !parse_error_bound(args.max_error, 1.0)) {
+  if (!parse_error_bound(args.max_error, 1.0)) {
     print_error("--max-error: '" + args.max_error + "' is not a number >= 0 (or a percentage like 0.5%)");
     return kExitUsage;
   }
   try {
     if (!args.output.empty()) check_tile_folder(args.output);
-    double bound = std::numeric_limits<double>::infinity();
-    if (!args.max_error.empty()) {
-      double range = 0.0;
-      if (args.max_error.back() == '%') {
-        // Every tile needs the same bound, so the whole grid's range comes first.
-        print_progress(verbosity, "reading " + args.grid + " once for its height range");
-        const auto [low, high] = streamed_height_range(args.grid, grid_options);
-        range = high - low;  // in float, as the whole-grid run takes it: the same bound
-      }
-      bound = *parse_error_bound(args.max_error, range);
+    double range = 0.0;
+    if (args.max_error.back() == '%') {
+      // Every tile needs the same bound, so the whole grid's range comes first.
+      print_progress(verbosity, "reading " + args.grid + " once for its height range");
+      const auto [low, high] = streamed_height_range(args.grid, grid_options);
+      range = high - low;  // in float, as the whole-grid run takes it: the same bound
     }
+    const double bound = *parse_error_bound(args.max_error, range);
     run.grid = args.grid;
     run.grid_options = grid_options;
     run.size = static_cast<std::size_t>(args.tile);
     run.options = terrain_options(args, algorithm);
-    run.options.max_error = args.max_error.empty() ? 0.0 : bound;
+    run.options.max_error = bound;
     run.bound = bound;
     run.algorithm = args.algorithm;
     run.output = args.output;

@@ -20,7 +20,7 @@ struct TiledTerrainRun {
   std::size_t size = 0;                       // N
   std::optional<terrain::TileIndex> only;     // --tile-index R,C
   terrain::TerrainOptions options;            // max_error set
-  double bound = 0.0;                         // the bound stated (infinite without --max-error)
+  double bound = 0.0;                         // the bound, in height units
   std::string algorithm;                      // its name, for the statistics
   std::string output;                         // OUT.EXT, or empty
   std::optional<io::SurfaceFormat> format;    // of output

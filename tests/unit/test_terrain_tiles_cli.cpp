@@ -229,6 +229,9 @@ TEST(TerrainTilesCli, BadTileOptionsAreRefused) {
   refused("--tile 9 --tile-index 4,0", 1, "tile 4,0 is outside the grid");
   refused("--tile 9 --tile-index 0,5", 1, "4 rows x 5 columns of tiles");
   refused("--tile 9 --base 5", 2, "--base");
+  const auto cap_alone = run_meshstep("terrain " + grid + " --tile 9 --max-triangles 100", dir.path());
+  EXPECT_EQ(cap_alone.status, 2);
+  EXPECT_TRUE(has(cap_alone.err, "--tile needs --max-error")) << cap_alone.err;
   const auto stl = run_meshstep("terrain " + grid + " --max-error 1 --tile 9 -o " + dir.file("x.stl"), dir.path());
   EXPECT_EQ(stl.status, 2);
   EXPECT_TRUE(has(stl.err, ".obj, .off or .ply")) << stl.err;

@@ -126,8 +126,15 @@ HeightGrid cut_tiles(const std::string& path, const HeightGridOptions& options, 
 void cut_tiles(const HeightGrid& grid, std::size_t size, std::optional<TileIndex> only, const TileVisitor& take) {
   if (grid.nx < 2 || grid.ny < 2) throw InputError("a terrain needs a grid of at least 2 x 2 samples");
   TileCutter cutter("", size, only, take);
-  HeightGrid header = grid;
-  header.z = {};
+  HeightGrid header;  // the grid but its heights (not copied: the rows are the grid's own)
+  header.nx = grid.nx;
+  header.ny = grid.ny;
+  header.dx = grid.dx;
+  header.dy = grid.dy;
+  header.x0 = grid.x0;
+  header.y0 = grid.y0;
+  header.geographic = grid.geographic;
+  header.units_note = grid.units_note;
   for (std::size_t j = grid.ny; j-- > 0;)
     cutter.row(header, j, std::span<const float>(grid.z).subspan(j * grid.nx, grid.nx));
 }
