@@ -309,12 +309,13 @@ Command add_terrain_command(CLI::App& parent) {
                   "(vertices, triangles, max_error and rms_error over every sample, 3D angles)")
       ->check(CLI::IsMember({"json"}));
   cmd->add_option("--tile", args->tile,
-                  "Approximate in tiles of N x N samples, neighbours sharing a row or column of\n"
-                  "samples and their border vertices (no cracks): for grids bigger than memory.\n"
-                  "An .asc grid is streamed: N rows of it are held (4 N columns bytes), plus one\n"
-                  "tile and its TIN; a .png is decoded whole first. With -o OUT.EXT (.obj, .off,\n"
-                  ".ply) tile R,C goes to OUT.rR-cC.EXT, in the grid's metres; files appear once\n"
-                  "the whole grid has been read. meshstep terrain-join joins them");
+                  "Approximate in tiles of N x N samples (with --max-error), neighbours sharing a\n"
+                  "row or column of samples and their border vertices (no cracks): for grids\n"
+                  "bigger than memory. An .asc grid is streamed; peak memory is about\n"
+                  "4 x N x COLUMNS bytes for the N rows held, plus 5 x N^2 bytes and 200 bytes a\n"
+                  "TIN vertex for one tile (a .png is decoded whole first). With -o OUT.EXT (.obj,\n"
+                  ".off, .ply) tile R,C goes to OUT.rR-cC.EXT, in the grid's metres; files appear\n"
+                  "once the whole grid has been read. meshstep terrain-join joins them");
   cmd->add_option("--tile-index", args->tile_index,
                   "With --tile: only tile R,C (R counts rows of tiles from the south, C columns\n"
                   "from the west), the same file as the run of every tile writes; the grid is\n"

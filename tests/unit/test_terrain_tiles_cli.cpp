@@ -202,7 +202,7 @@ TEST(TerrainTilesCli, HelpAndListTellOfTiles) {
   const auto help = run_meshstep("--help", dir.path());
   EXPECT_TRUE(has(help.out, "terrain-join")) << help.out;
   const auto terrain_help = run_meshstep("terrain --help", dir.path());
-  for (const char* words : {"--tile", "--tile-index", "OUT.rR-cC.EXT", "4 N columns bytes"})
+  for (const char* words : {"--tile", "--tile-index", "OUT.rR-cC.EXT", "4 x N x COLUMNS bytes"})
     EXPECT_TRUE(has(terrain_help.out, words)) << words << " in " << terrain_help.out;
   const auto list = run_meshstep("list", dir.path());
   EXPECT_TRUE(has(list.out, "terrain-join")) << list.out;
