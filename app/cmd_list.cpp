@@ -57,6 +57,11 @@ std::vector<Section> sections() {
   return {
       {"algorithms", "Algorithms (refine --algorithm NAME)", std::move(algorithm_rows)},
       {"terrain_algorithms", "Terrain algorithms (terrain --algorithm NAME)", std::move(terrain_rows)},
+      {"terrain_tiles", "Terrain in tiles: grids bigger than memory (docs/terrain.md, \"Tiles\")",
+       {{"terrain --tile N", "streams the grid and approximates it in tiles of N x N samples, each "
+                             "independent (--tile-index R,C for one), writing OUT.rR-cC.EXT; neighbours "
+                             "share their border vertices exactly"},
+        {"terrain-join", "welds the tile files into one surface and checks it for cracks"}}},
       {"selections", "Selections (refine --select S): where a bad triangle's new vertex goes",
        rows_of(meshstep::selections())},
       {"insertions", "Insertions (--insertion): how a vertex goes in", rows_of(meshstep::insertions())},

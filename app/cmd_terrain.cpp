@@ -14,6 +14,7 @@
 #include "meshstep/terrain/height_grid.hpp"
 #include "meshstep/terrain/tin.hpp"
 #include "terrain_output.hpp"
+#include "terrain_tiles.hpp"
 
 namespace meshstep::app {
 namespace {
@@ -32,6 +33,8 @@ struct TerrainArgs {
   double z_scale = 1.0;
   std::string geographic = "auto";
   std::string stats;
+  long long tile = -1;      // --tile N (-1: not given, the whole grid at once)
+  std::string tile_index;   // --tile-index R,C
   bool quiet = false;
   bool verbose = false;
 };
@@ -78,6 +81,87 @@ void print_stats_json(const TerrainArgs& args, const terrain::HeightGrid& grid, 
   std::printf("%s\n", stats.str().c_str());
 }
 
+// The options approximate() and approximate_tile() share, but for the bound.
+terrain::TerrainOptions terrain_options(const TerrainArgs& args, const terrain::TerrainAlgorithmInfo& algorithm) {
+  terrain::TerrainOptions options;
+  options.algorithm = algorithm.algorithm;
+  options.terminal_point =
+      args.terminal == "midpoint" ? terrain::TerminalPoint::midpoint : terrain::TerminalPoint::centroid;
+  options.max_triangles = args.max_triangles;
+  options.data_structure = args.ds == "dcel" ? DataStructure::dcel : DataStructure::tds;
+  options.flips_3d = args.flips;
+  return options;
+}
+
+// --tile N [--tile-index R,C]: the checks of what tiles cannot do, the bound (a first pass
+// over the grid for a bound in %), then the tiles (terrain_tiles.hpp).
+int run_terrain_in_tiles(const TerrainArgs& args, const terrain::TerrainAlgorithmInfo& algorithm,
+                         const std::optional<io::SurfaceFormat>& format,
+                         const terrain::HeightGridOptions& grid_options) {
+  if (args.tile < 2) {
+    print_error(args.tile == -1 ? "--tile-index needs --tile N"
+                                : "--tile " + std::to_string(args.tile) +
+                                      ": a tile needs at least 2 x 2 samples (--tile N, N >= 2)");
+    return kExitUsage;
+  }
+  if (args.max_error.empty()) {
+    // Without a bound a side could only keep every sample: a cap cannot be shared by two tiles.
+    print_error("--tile needs --max-error: each tile's sides are simplified within it, the same way by both "
+                "neighbours (--max-triangles then caps each tile)");
+    return kExitUsage;
+  }
+  TiledTerrainRun run;
+  if (!args.tile_index.empty()) {
+    run.only = parse_tile_index(args.tile_index);
+    if (!run.only) {
+      print_error("--tile-index: '" + args.tile_index + "' is not ROW,COLUMN (two whole numbers from 0, e.g. 0,3)");
+      return kExitUsage;
+    }
+  }
+  if (!args.output.empty() && (!format || *format == io::SurfaceFormat::stl_binary)) {
+    print_error(args.output +
+                ": tiles are written as .obj, .off or .ply (exact doubles, so that shared vertices weld; STL "
+                "rounds them to float)");
+    return kExitUsage;
+  }
+  if (args.base > 0.0) {
+    print_error("--base closes one surface into a solid: it does not go with --tile (join the tiles first)");
+    return kExitUsage;
+  }
+  const Verbosity verbosity =
+      args.quiet ? Verbosity::quiet : args.verbose ? Verbosity::verbose : Verbosity::normal;
+  if (!parse_error_bound(args.max_error, 1.0)) {
+    print_error("--max-error: '" + args.max_error + "' is not a number >= 0 (or a percentage like 0.5%)");
+    return kExitUsage;
+  }
+  try {
+    if (!args.output.empty()) check_tile_folder(args.output);
+    double range = 0.0;
+    if (args.max_error.back() == '%') {
+      // Every tile needs the same bound, so the whole grid's range comes first.
+      print_progress(verbosity, "reading " + args.grid + " once for its height range");
+      const auto [low, high] = streamed_height_range(args.grid, grid_options);
+      range = high - low;  // in float, as the whole-grid run takes it: the same bound
+    }
+    const double bound = *parse_error_bound(args.max_error, range);
+    run.grid = args.grid;
+    run.grid_options = grid_options;
+    run.size = static_cast<std::size_t>(args.tile);
+    run.options = terrain_options(args, algorithm);
+    run.options.max_error = bound;
+    run.bound = bound;
+    run.algorithm = args.algorithm;
+    run.output = args.output;
+    run.format = format;
+    run.verbosity = verbosity;
+    run.stats_json = args.stats == "json";
+    return run_tiled_terrain(run);
+  } catch (const InputError& e) {
+    print_error(input_error_text(args.grid, e));
+    return kExitBadInput;
+  }
+}
+
 int run_terrain(const TerrainArgs& args) {
   const Verbosity verbosity =
       args.quiet ? Verbosity::quiet : args.verbose ? Verbosity::verbose : Verbosity::normal;
@@ -103,13 +187,16 @@ int run_terrain(const TerrainArgs& args) {
     print_error("--base makes a solid: it needs a surface output (.obj, .off, .ply, .stl)");
     return kExitUsage;
   }
+  const terrain::HeightGridOptions grid_options{
+      .png_cell = args.png_cell,
+      .png_z_scale = args.z_scale,
+      .geographic = args.geographic == "auto" ? std::nullopt : std::optional<bool>(args.geographic == "yes")};
+  if (args.tile != -1 || !args.tile_index.empty()) return run_terrain_in_tiles(args, *algorithm, format, grid_options);
 
   Stopwatch clock;
   try {
     print_progress(verbosity, "reading " + args.grid);
-    const terrain::HeightGrid grid =
-        terrain::read_height_grid(args.grid, {.png_cell = args.png_cell, .png_z_scale = args.z_scale, .geographic = args.geographic == "auto" ? std::nullopt
-                                                                        : std::optional<bool>(args.geographic == "yes")});
+    const terrain::HeightGrid grid = terrain::read_height_grid(args.grid, grid_options);
     const double read_ms = clock.lap_ms();
     if (grid.geographic) print_progress(verbosity, grid.units_note);
     const auto [low, high] = grid.height_range();
@@ -123,14 +210,8 @@ int run_terrain(const TerrainArgs& args) {
       bound = *parsed;
     }
 
-    terrain::TerrainOptions options;
-    options.algorithm = algorithm->algorithm;
-    options.terminal_point =
-        args.terminal == "midpoint" ? terrain::TerminalPoint::midpoint : terrain::TerminalPoint::centroid;
+    terrain::TerrainOptions options = terrain_options(args, *algorithm);
     options.max_error = args.max_error.empty() ? 0.0 : bound;  // without a bound: to the cap
-    options.max_triangles = args.max_triangles;
-    options.data_structure = args.ds == "dcel" ? DataStructure::dcel : DataStructure::tds;
-    options.flips_3d = args.flips;
     Stopwatch since_progress;
     double quiet_ms = 0.0;
     if (verbosity != Verbosity::quiet) {
@@ -227,9 +308,23 @@ Command add_terrain_command(CLI::App& parent) {
                   "Print statistics; 'json': the last line of standard output is one JSON object\n"
                   "(vertices, triangles, max_error and rms_error over every sample, 3D angles)")
       ->check(CLI::IsMember({"json"}));
+  cmd->add_option("--tile", args->tile,
+                  "Approximate in tiles of N x N samples (with --max-error), neighbours sharing a\n"
+                  "row or column of samples and their border vertices (no cracks): for grids\n"
+                  "bigger than memory. An .asc grid is streamed; peak memory is about\n"
+                  "4 x N x COLUMNS bytes for the N rows held, plus 5 x N^2 bytes and 200 bytes a\n"
+                  "TIN vertex for one tile (a .png is decoded whole first). With -o OUT.EXT (.obj,\n"
+                  ".off, .ply) tile R,C goes to OUT.rR-cC.EXT, in the grid's metres; files appear\n"
+                  "once the whole grid has been read. meshstep terrain-join joins them");
+  cmd->add_option("--tile-index", args->tile_index,
+                  "With --tile: only tile R,C (R counts rows of tiles from the south, C columns\n"
+                  "from the west), the same file as the run of every tile writes; the grid is\n"
+                  "still read whole, keeping N x N samples");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors (and --stats)");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress and timings");
-  cmd->footer("Example: meshstep terrain volcano.asc --max-error 0.5% -o volcano.obj");
+  cmd->footer(
+      "Example: meshstep terrain volcano.asc --max-error 0.5% -o volcano.obj\n"
+      "         meshstep terrain big.asc --tile 1000 --max-error 0.1% -o tiles/big.ply");
   return {cmd, [args] { return run_terrain(*args); }};
 }
 

@@ -27,5 +27,6 @@ Command add_render_command(CLI::App& parent);
 Command add_export_command(CLI::App& parent);
 Command add_view_command(CLI::App& parent);
 Command add_terrain_command(CLI::App& parent);
+Command add_terrain_join_command(CLI::App& parent);
 
 }  // namespace meshstep::app

@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
                                   add_check_command(app), add_list_command(app),
                                   add_log_command(app), add_render_command(app),
                                   add_export_command(app), add_view_command(app),
-                                  add_terrain_command(app)};
+                                  add_terrain_command(app), add_terrain_join_command(app)};
 
   try {
     app.parse(argc, argv);

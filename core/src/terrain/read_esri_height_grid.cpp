@@ -1,5 +1,6 @@
 // An ESRI ASCII grid as heights (meshstep/terrain/height_grid.hpp): the text is read by
-// io::read_esri_grid_rows, row by row, straight into floats.
+// io::read_esri_grid_rows, row by row, straight into floats, which are kept whole or handed
+// on (read_height_grid_rows, for tiles).
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <limits>
 #include <span>
 #include <system_error>
+#include <vector>
 
 #include "meshstep/error.hpp"
 #include "meshstep/huge_pages.hpp"
@@ -70,8 +72,10 @@ void set_spacing(const std::string& path, const io::EsriGrid& header, const Heig
 
 }  // namespace
 
-HeightGrid read_esri_height_grid(const std::string& path, const HeightGridOptions& options) {
+HeightGrid read_esri_height_rows(const std::string& path, const HeightGridOptions& options,
+                                 const HeightRowVisitor& visit) {
   HeightGrid grid;
+  std::vector<float> heights;
   std::size_t with_data = 0;
   const auto take_row = [&](const io::EsriGrid& header, std::size_t row, std::span<const double> values,
                             std::size_t line) {
@@ -79,31 +83,46 @@ HeightGrid read_esri_height_grid(const std::string& path, const HeightGridOption
       if (header.ncols < 2 || header.nrows < 2)
         throw InputError(path, header.ncols < 2 ? header.lines.ncols : header.lines.nrows,
                          too_few_samples(header.ncols, header.nrows));
-      const std::size_t count = header.ncols * header.nrows;
-      if (file_can_hold(path, count)) reserve_huge(grid.z, count);  // the one allocation
+      grid.nx = header.ncols;
+      grid.ny = header.nrows;
+      // The samples are the cells' centres.
+      grid.x0 = header.x0 + header.cellsize / 2.0;
+      grid.y0 = header.y0 + header.cellsize / 2.0;
+      set_spacing(path, header, options, grid);
+      heights.reserve(header.ncols);
     }
+    heights.clear();
     for (const double v : values) {
       if (header.has_nodata && v == header.nodata) {
-        grid.z.push_back(std::numeric_limits<float>::quiet_NaN());
+        heights.push_back(std::numeric_limits<float>::quiet_NaN());
         continue;
       }
       if (std::fabs(v) > FLT_MAX)
         throw InputError(path, line, "grid value " + number(v) + " is beyond the range of a float height (3.4e38)");
-      grid.z.push_back(static_cast<float>(v));
+      heights.push_back(static_cast<float>(v));
       ++with_data;
     }
+    visit(grid, grid.ny - 1 - row, heights);  // rows arrive northernmost first
   };
   const io::EsriGrid header = io::read_esri_grid_rows(path, take_row);
   if (with_data == 0)
     throw InputError(path, header.lines.nodata,
                      "every value is NODATA_value (" + number(header.nodata) + "): the grid has no data");
-  grid.nx = header.ncols;
-  grid.ny = header.nrows;
+  return grid;
+}
+
+HeightGrid read_esri_height_grid(const std::string& path, const HeightGridOptions& options) {
+  std::vector<float> z;
+  HeightGrid grid = read_esri_height_rows(path, options, [&](const HeightGrid& header, std::size_t j,
+                                                             std::span<const float> heights) {
+    if (j == header.ny - 1) {
+      const std::size_t count = header.nx * header.ny;
+      if (file_can_hold(path, count)) reserve_huge(z, count);  // the one allocation
+    }
+    z.insert(z.end(), heights.begin(), heights.end());
+  });
+  grid.z = std::move(z);
   flip_rows(grid);
-  // The samples are the cells' centres.
-  grid.x0 = header.x0 + header.cellsize / 2.0;
-  grid.y0 = header.y0 + header.cellsize / 2.0;
-  set_spacing(path, header, options, grid);
   return grid;
 }
 

@@ -22,16 +22,22 @@ namespace meshstep::terrain::detail {
 template <TriangleMesh Mesh>
 class TinBuilder {
  public:
-  TinBuilder(const HeightGrid& grid, const TerrainOptions& options)
-      : grid_(grid), options_(options), tri_(corners(grid), Insertion::flip),
-        used_(grid.nx * grid.ny, false) {}
+  // Without `border`, the TIN starts from the grid's four corners; with it, from the given
+  // border vertices (the four corners first: approximate_within_border checks them), and no
+  // sample on the rectangle is ever searched or inserted.
+  TinBuilder(const HeightGrid& grid, const TerrainOptions& options, const BorderVertices* border = nullptr)
+      : grid_(grid), options_(options), border_(border), tri_(initial_points(grid, border), Insertion::flip),
+        used_(grid.nx * grid.ny, false),
+        window_(border ? SampleWindow{1, static_cast<std::int64_t>(grid.nx) - 2, 1, static_cast<std::int64_t>(grid.ny) - 2}
+                       : kEverySample),
+        hull_vertices_(tri_.points().size()) {}
 
   Tin run(TerrainReport& report) {
     const auto start = std::chrono::steady_clock::now();
     tri_.insert_all();
-    for (VertexId v = 0; v < 4; ++v) {
-      samples_.push_back(corner_sample(v));
-      heights_.push_back(corner_height(v));
+    for (VertexId v = 0; v < hull_vertices_; ++v) {
+      samples_.push_back(border_ ? border_->samples[v] : corner_sample(v));
+      heights_.push_back(border_ ? border_->heights[v] : corner_height(v));
       used_[samples_.back()] = true;
     }
     for (FaceId f = 0; f < mesh().face_capacity(); ++f)
@@ -94,6 +100,17 @@ class TinBuilder {
     const double x = static_cast<double>(g.nx - 1) * g.dx, y = static_cast<double>(g.ny - 1) * g.dy;
     return {{0, 0}, {x, 0}, {x, y}, {0, y}};
   }
+  // The corners, then the rest of a given border: the first three start the triangulation
+  // as a proper triangle, and every later border vertex falls on a hull edge and splits it.
+  static std::vector<Point> initial_points(const HeightGrid& g, const BorderVertices* border) {
+    std::vector<Point> points = corners(g);
+    if (!border) return points;
+    for (std::size_t k = 4; k < border->samples.size(); ++k) {
+      const std::uint32_t s = border->samples[k];
+      points.push_back({static_cast<double>(s % g.nx) * g.dx, static_cast<double>(s / g.nx) * g.dy});
+    }
+    return points;
+  }
   std::uint32_t corner_sample(VertexId v) const {
     const std::size_t i = (v == 1 || v == 2) ? grid_.nx - 1 : 0, j = v >= 2 ? grid_.ny - 1 : 0;
     return static_cast<std::uint32_t>(i + j * grid_.nx);
@@ -122,7 +139,7 @@ class TinBuilder {
     // bits of every error, do not depend on where the data structure starts a face.
     while (a > b || a > c) std::tie(a, b, c) = std::tuple(b, c, a);
     const WorstSample w = worst_sample(grid_.z.data(), grid_.nx, index_of(a), index_of(b), index_of(c),
-                                       heights_[a], heights_[b], heights_[c], kNoSample);
+                                       heights_[a], heights_[b], heights_[c], kNoSample, window_);
     const FaceWorst worst{w.error, static_cast<std::uint32_t>(w.sample)};
     return worst;
   }
@@ -195,8 +212,13 @@ class TinBuilder {
   }
 
   // The data structure has a ghost face on every hull edge; the hull is the grid's
-  // rectangle, with an edge more for every vertex on its border past the corners.
-  std::size_t triangle_count() const { return mesh().face_count() - 4 - border_vertices_; }
+  // rectangle, with an edge for every vertex on it: those it started with, and those
+  // inserted on it since.
+  std::size_t triangle_count() const { return mesh().face_count() - hull_vertices_ - border_vertices_; }
+  bool in_window(std::size_t i, std::size_t j) const {
+    const auto ii = static_cast<std::int64_t>(i), jj = static_cast<std::int64_t>(j);
+    return ii >= window_.i_first && ii <= window_.i_last && jj >= window_.j_first && jj <= window_.j_last;
+  }
   bool on_border(std::uint32_t s) const {
     const std::size_t i = s % grid_.nx, j = s / grid_.nx;
     return i == 0 || j == 0 || i == grid_.nx - 1 || j == grid_.ny - 1;
@@ -286,7 +308,7 @@ class TinBuilder {
     const std::size_t i = static_cast<std::size_t>(std::clamp(fi, 0.0, static_cast<double>(grid_.nx - 1)));
     const std::size_t j = static_cast<std::size_t>(std::clamp(fj, 0.0, static_cast<double>(grid_.ny - 1)));
     const std::uint32_t s = static_cast<std::uint32_t>(i + j * grid_.nx);
-    if (used_[s] || !grid_.has_data(i, j)) return {worst_[f].sample, f};
+    if (used_[s] || !grid_.has_data(i, j) || !in_window(i, j)) return {worst_[f].sample, f};
     ++report.terminal_points;
     return {s, near};
   }
@@ -358,13 +380,16 @@ class TinBuilder {
 
   const HeightGrid& grid_;
   const TerrainOptions& options_;
+  const BorderVertices* border_;         // null: the four corners start the TIN
   Triangulation<Mesh> tri_;
   std::vector<bool> used_;               // by sample: already a vertex
+  SampleWindow window_;                  // the samples that may be searched and inserted
+  std::size_t hull_vertices_;            // the vertices the TIN starts with, all on the hull
   std::vector<std::uint32_t> samples_;   // by vertex
   std::vector<float> heights_;           // by vertex (a corner without data borrows one)
   std::vector<FaceWorst> worst_;         // by face
   std::priority_queue<Worst> queue_;
-  std::size_t border_vertices_ = 0;     // inserted on the grid's border
+  std::size_t border_vertices_ = 0;     // inserted on the grid's border (never with border_)
 };
 
 }  // namespace meshstep::terrain::detail

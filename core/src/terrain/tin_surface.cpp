@@ -1,8 +1,11 @@
+// TINs as 3D surfaces: a whole grid's, with an optional solid base, and a tile's.
 #include "meshstep/terrain/tin_surface.hpp"
 
 #include <algorithm>
 #include <limits>
 #include <vector>
+
+#include "meshstep/terrain/tiles.hpp"
 
 namespace meshstep::terrain {
 
@@ -12,6 +15,19 @@ io::Surface to_surface(const HeightGrid& grid, const Tin& tin) {
   for (std::uint32_t v = 0; v < tin.samples.size(); ++v) {
     const auto p = vertex_position(grid, tin, v);
     s.vertices.push_back({p[0], p[1], p[2]});
+  }
+  s.triangles = tin.triangles;
+  return s;
+}
+
+io::Surface tile_surface(const Tile& tile, const Tin& tin) {
+  const HeightGrid& g = tile.grid;
+  io::Surface s;
+  s.vertices.reserve(tin.samples.size());
+  for (std::uint32_t v = 0; v < tin.samples.size(); ++v) {
+    // The global indices first, then the one product to_surface computes (vertex_position).
+    const std::size_t i = tile.i0 + tin.samples[v] % g.nx, j = tile.j0 + tin.samples[v] / g.nx;
+    s.vertices.push_back({static_cast<double>(i) * g.dx, static_cast<double>(j) * g.dy, tin.heights[v]});
   }
   s.triangles = tin.triangles;
   return s;

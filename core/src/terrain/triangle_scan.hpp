@@ -129,16 +129,28 @@ void scan_errors(const float* z, std::size_t nx, GridIndex a, GridIndex b, GridI
   }, rows);
 }
 
+// The samples a search may take: columns [i_first, i_last] of rows [j_first, j_last].
+// A tile's search leaves out its rectangle's border (tin.hpp, approximate_within_border).
+struct SampleWindow {
+  std::int64_t i_first, i_last, j_first, j_last;
+};
+// (Bounds far beyond any grid, yet far enough from the int64 limits that subtracting a
+// column from them cannot overflow.)
+inline constexpr std::int64_t kFarAway = std::int64_t{1} << 62;
+inline constexpr SampleWindow kEverySample{-kFarAway, kFarAway, -kFarAway, kFarAway};
+
 // The largest error among the samples with data inside or on the triangle abc, and its
 // sample (error -1 and sample `none` when it holds no sample with data): scan_errors'
 // arithmetic, to the bit, in a loop that keeps its running maximum in registers (through
 // a visitor it went to memory on every sample, and this loop is most of a terrain run).
+// Only the samples in `window`; each keeps the error it has in the whole row (the plane
+// is still evaluated from the row's first sample), so that the measure agrees to the bit.
 struct WorstSample {
   double error;
   std::size_t sample;
 };
 inline WorstSample worst_sample(const float* z, std::size_t nx, GridIndex a, GridIndex b, GridIndex c, double za,
-                                double zb, double zc, std::size_t none) {
+                                double zb, double zc, std::size_t none, SampleWindow window = kEverySample) {
   const double inverse_area2 = 1.0 / static_cast<double>(edge_function(a, b, c));
   const std::array<std::int64_t, 3> steps = column_steps(a, b, c);
   const std::int64_t step_a = steps[0], step_b = steps[1], step_c = steps[2];
@@ -148,10 +160,10 @@ inline WorstSample worst_sample(const float* z, std::size_t nx, GridIndex a, Gri
                          std::int64_t wc) {
     const double start = plane_height(wa, wb, wc, za, zb, zc, inverse_area2);
     const float* row = z + static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(first);
-    const std::int64_t n = last - first + 1;
+    const std::int64_t n = std::min(last, window.i_last) - first + 1;
     double best = worst.error;
     std::int64_t best_k = -1;
-    for (std::int64_t k = 0; k < n; ++k) {
+    for (std::int64_t k = std::max<std::int64_t>(0, window.i_first - first); k < n; ++k) {
       const double error = std::abs(static_cast<double>(row[k]) - (start + slope * static_cast<double>(k)));
       if (error > best) {  // false for NaN: no data
         best = error;
@@ -159,7 +171,7 @@ inline WorstSample worst_sample(const float* z, std::size_t nx, GridIndex a, Gri
       }
     }
     if (best_k >= 0) worst = {best, static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(first + best_k)};
-  });
+  }, RowRange{window.j_first, window.j_last});
   return worst;
 }
 

@@ -29,7 +29,9 @@
 
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -84,5 +86,20 @@ struct HeightGrid {
 // or fewer values than the header declares, fewer than 2 x 2 samples ("needs at least
 // 2 x 2 samples"), no sample with data.
 HeightGrid read_height_grid(const std::string& path, const HeightGridOptions& options = {});
+
+// One row of heights: `header` is the grid as read so far (its sizes, spacing, units and
+// position; z empty), `j` the row, `heights` its nx samples (NaN: no data). Rows come
+// northernmost first, as an ESRI grid stores them: j = ny - 1 down to 0.
+using HeightRowVisitor =
+    std::function<void(const HeightGrid& header, std::size_t j, std::span<const float> heights)>;
+
+// As read_height_grid, with the same checks and errors, but the rows are handed over one at
+// a time and none is kept (the result's z is empty): the tiles of a grid bigger than memory
+// (terrain/tiles.hpp). An ESRI grid is streamed, one row of doubles held at a time; a PNG
+// is decoded whole first (stb_image cannot stream), then handed over row by row. A grid
+// found bad part-way (a bad value, too few values, no data at all) has already handed over
+// the rows before the problem: a caller keeps nothing it made of them until this returns.
+HeightGrid read_height_grid_rows(const std::string& path, const HeightGridOptions& options,
+                                 const HeightRowVisitor& visit);
 
 }  // namespace meshstep::terrain

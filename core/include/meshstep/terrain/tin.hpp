@@ -75,6 +75,27 @@ struct Tin {
 // Throws InputError for a grid smaller than 2 x 2 or a negative bound.
 Tin approximate(const HeightGrid& grid, const TerrainOptions& options, TerrainReport* report = nullptr);
 
+// The vertices a TIN must have on its grid's rectangle, and only those: a tile's border,
+// chosen from the border samples alone so that the neighbouring tile, which shares them,
+// chooses the same (terrain/tiles.hpp). The four corners come first, in the order (0, 0),
+// (nx - 1, 0), (nx - 1, ny - 1), (0, ny - 1); the others follow in any order. Heights are
+// by vertex, as in Tin (a corner without data needs one all the same).
+struct BorderVertices {
+  std::vector<std::uint32_t> samples;  // i + j * nx, each on the rectangle
+  std::vector<float> heights;
+};
+
+// As approximate(), but the TIN starts from `border` and no other sample on the rectangle
+// is ever inserted: its border edges are exactly the segments between consecutive border
+// vertices (they are on the convex hull, which Delaunay insertion inside never changes).
+// The samples on the rectangle are the border's business and are not searched: each lies
+// on one border edge, where every triangle's plane is the chord between the edge's ends,
+// so the caller must have chosen the border vertices within the bound along it.
+// Lepp-surface's sample nearest a terminal point, when on the rectangle, gives way to the
+// worst triangle's own worst sample. Throws InputError when `border` breaks its rules.
+Tin approximate_within_border(const HeightGrid& grid, const BorderVertices& border, const TerrainOptions& options,
+                              TerrainReport* report = nullptr);
+
 // The vertical error over every sample with data, measured here independently of the
 // algorithm's own bookkeeping, each sample once.
 struct ErrorMeasure {
