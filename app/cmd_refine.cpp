@@ -47,7 +47,7 @@ struct RefineArgs {
   std::string ds = "tds";
   bool convex_hull = false;
   bool improve = false;
-  bool delete_free = false;  // asked for by name (it is the default for Delaunay insertion)
+  bool delete_free = false;  // always, even under an area or size bound
   bool keep_free = false;
   std::string record;
   std::string stats;
@@ -204,7 +204,8 @@ int run_refine(const RefineArgs& args) {
     print_error("--delete-free and --keep-free contradict each other: give one");
     return kExitUsage;
   }
-  options.delete_free_near_splits = options.insertion == RefineInsertion::delaunay && !args.keep_free;
+  if (args.delete_free) options.delete_free = FreeVertexDeletion::always;
+  if (args.keep_free) options.delete_free = FreeVertexDeletion::never;
   if ((options.improve || args.delete_free) && options.insertion == RefineInsertion::bisection) {
     print_error(std::string(options.improve ? "--improve" : "--delete-free") +
                 " removes vertices from a Delaunay mesh: it does not go with bisection");
@@ -586,11 +587,12 @@ Command add_refine_command(CLI::App& parent) {
                 "After refining, remove every free Steiner vertex whose removal raises the\n"
                 "smallest angle round it and keeps the bounds (what --algorithm improve does)");
   cmd->add_flag("--delete-free", args->delete_free,
-                "When a segment is split away from corners, remove the free Steiner vertices\n"
-                "inside its diametral circle (Chew's rule, as Triangle; counted in\n"
-                "removed_vertices). The default for Delaunay insertion");
+                "Before a segment is split away from corners, remove the free Steiner vertices\n"
+                "that face it from inside its diametral circle (Chew's rule, as Triangle;\n"
+                "counted in removed_vertices), even under an area or size bound. The default\n"
+                "does it only without such a bound, which would put them back");
   cmd->add_flag("--keep-free", args->keep_free,
-                "Keep the free Steiner vertices near a split segment (the rule before 2026-12-03)");
+                "Never remove free Steiner vertices near a split segment (the rule before 2026-12-03)");
   add_record_option(*cmd, args->record);
   cmd->add_option("-o,--output", args->prefix,
                   "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly\n"

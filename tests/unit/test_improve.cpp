@@ -135,7 +135,7 @@ TEST(Improve, EachRecordedRemovalRaisesTheAngleRoundItsVertex) {
     {
       replay::LogWriter writer(path, replay::LogHeader{});
       RefineOptions o = at_angle(bound, true);
-      o.delete_free_near_splits = false;  // every removal is then the improvement's
+      o.delete_free = FreeVertexDeletion::never;  // every removal is then the improvement's
       o.triangulate.record = &writer;
       direct = refine(random_square(200, seed), o, &report);
       writer.finish();
@@ -186,7 +186,7 @@ TEST(DeleteFreeNearSplits, RemovesOnlyVerticesInTheSplitSegmentsCircle) {
     const Pslg in = random_square(150, seed);
     RefineOptions o = at_angle(30.0, false);
     o.encroachment = Encroachment::lens;
-    o.delete_free_near_splits = true;
+    o.delete_free = FreeVertexDeletion::always;
     RefineReport report, dcel_report;
     TriMesh direct;
     {

@@ -170,25 +170,24 @@ TEST_F(RefineCli, RegionalAreasAreABoundOfTheirOwn) {
   EXPECT_TRUE(contains(plain.err, "regional")) << plain.err;
 }
 
-// Free vertices near a split segment are deleted by default (Triangle's rule), kept with
-// --keep-free; the two flags together, or --delete-free with bisection, are refused.
-TEST_F(RefineCli, DeletesFreeVerticesNearSplitsUnlessKeepFree) {
-  const std::string input = write("hole.poly", kSquareWithHole);
-  const std::string run =
-      "refine " + input + " --algorithm circumcenter --min-angle 28 --max-area 0.05 --no-output --stats json";
-  const CommandResult by_default = meshstep(run);
-  const CommandResult kept = meshstep(run + " --keep-free");
-  const CommandResult named = meshstep(run + " --delete-free");
-  ASSERT_EQ(by_default.status, 0) << by_default.err;
-  ASSERT_EQ(kept.status, 0) << kept.err;
-  ASSERT_EQ(named.status, 0) << named.err;
-  EXPECT_GT(json_number(last_line(by_default.out), "removed_vertices"), 0.0) << by_default.out;
-  EXPECT_EQ(json_value(last_line(kept.out), "removed_vertices"), "0") << kept.out;
-  EXPECT_EQ(json_value(last_line(named.out), "steiner"), json_value(last_line(by_default.out), "steiner"));
-  EXPECT_EQ(json_value(last_line(kept.out), "bounds_met"), "true") << kept.out;
-  EXPECT_EQ(json_value(last_line(by_default.out), "bounds_met"), "true") << by_default.out;
+// Free vertices facing a split segment are deleted by default (Triangle's rule) unless an
+// area bound is set; --delete-free deletes them under one too, --keep-free never; the two
+// flags together, or --delete-free with bisection, are refused.
+TEST_F(RefineCli, DeletesFreeVerticesNearSplitsUnlessKeepFreeOrSized) {
+  const std::string input = std::string(MESHSTEP_ASSETS) + "/examples/lesson.poly";
+  const auto removed = [&](const std::string& flags) {
+    const CommandResult r = meshstep("refine " + input + " --algorithm circumcenter --min-angle 30 --no-output --stats json " + flags);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(json_value(last_line(r.out), "bounds_met"), "true") << r.out;
+    return json_number(last_line(r.out), "removed_vertices");
+  };
+  EXPECT_GT(removed(""), 0.0);
+  EXPECT_EQ(removed("--delete-free"), removed(""));
+  EXPECT_EQ(removed("--keep-free"), 0.0);
+  EXPECT_EQ(removed("--max-area 0.5"), 0.0);
+  EXPECT_GT(removed("--max-area 0.5 --delete-free"), 0.0);
 
-  const CommandResult both = meshstep(run + " --keep-free --delete-free");
+  const CommandResult both = meshstep("refine " + input + " --keep-free --delete-free --no-output");
   EXPECT_EQ(both.status, 2) << both.err;
   EXPECT_TRUE(contains(both.err, "contradict")) << both.err;
   const std::string bisect = "refine " + input + " --algorithm lepp-bisection --max-area 0.01 --no-output -q";

@@ -23,6 +23,9 @@ struct ScaledCriteria {
   // of that angle's cosine: dot(a - p, b - p) < 0 and dot^2 >= lens_cos2 |a - p|^2 |b - p|^2.
   double lens_cos2 = 0.25;
   std::size_t max_triangles = 0, max_steiner = 0;
+
+  // An area or size bound, which decides where points go whatever their shapes.
+  bool sized() const { return max_area > 0.0 || size || max_area_for; }
 };
 
 }  // namespace meshstep::detail

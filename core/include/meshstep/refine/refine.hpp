@@ -49,6 +49,19 @@ enum class Encroachment { circle, lens };
 // p2t_debug2.poly went past 3M Steiner points with the lens, 540k with the circle).
 Encroachment default_encroachment(Selection selection);
 
+// When a subsegment is split away from corners, the free Steiner vertices (not on a
+// segment) that face its two halves from inside its diametral circle are deleted, one after
+// the other as each becomes the apex of a triangle on a half (Chew's rule; Triangle does it
+// by default, on the subsegment before the split): they would crowd the new subsegments. On the Triangle corpus it
+// takes the largest ratio to Triangle's points from 1.27 to 1.22. Under an area or size
+// bound the bound puts them back: 33.6k deletions and as many insertions again on A.poly at
+// 1e-7, for the same number of points in 1.43 times the time.
+enum class FreeVertexDeletion : std::uint8_t {
+  unless_sized,  // the default: deleted unless an area or size bound is set
+  always,
+  never,
+};
+
 // Stopping criteria: a triangle is bad when it fails any bound that is set (all-of).
 struct RefineCriteria {
   double min_angle_deg = 0.0;    // 0: none
@@ -93,11 +106,10 @@ struct RefineOptions {
   // vertex (not on a segment) whose removal raises the smallest angle round it and leaves
   // triangles that meet the criteria. Delaunay insertion only.
   bool improve = false;
-  // When a segment is split away from corners, remove the free Steiner vertices inside its
-  // diametral circle (Chew's rule, and Triangle's default: they would crowd the new
-  // subsegments). On by default since 2026-12-03: it brings the largest ratio to Triangle's
-  // points on the corpus from 1.27 to 1.22. Delaunay insertion only: bisection ignores it.
-  bool delete_free_near_splits = true;
+  // Free Steiner vertices that face a subsegment about to be split away from corners,
+  // inside its diametral circle (FreeVertexDeletion). Delaunay insertion only: bisection
+  // ignores it.
+  FreeVertexDeletion delete_free = FreeVertexDeletion::unless_sized;
   // Refine each region of the input to its own maximum area (Region::max_area, from the
   // .poly's regional attributes), besides the global criteria.
   bool regional_max_area = true;
