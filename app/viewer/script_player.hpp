@@ -151,6 +151,7 @@ class ScriptPlayer {
   static void wait_for_background(Viewer& viewer) {
     if (!viewer.session().log()) return;
     while (!viewer.history().ready() || !viewer.plots().ready()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    viewer.settle_timeline_marks();
   }
 
   // Runs one action; true when it takes frames (the loop then draws them).
@@ -164,6 +165,8 @@ class ScriptPlayer {
                    v == "settle"))
       viewer->settle_canvas();
     if (viewer && (v == "screenshot" || v == "wait")) wait_for_background(*viewer);
+    // The state counts the timeline's marks: the pass over the events, if one runs, first.
+    if (viewer && v == "state") viewer->settle_timeline_marks();
     if (v == "seek") {
       if (a.args[0] == "start") viewer->session().to_start();
       else if (a.args[0] == "end") viewer->session().to_end();

@@ -1,7 +1,9 @@
 #include "timeline.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <thread>
 
 #include "session.hpp"
 
@@ -23,37 +25,30 @@ int column_of(std::uint64_t position, std::uint64_t event_count, int columns) {
   return std::clamp(c, 0, columns - 1);
 }
 
-void TimelineCache::scan_events(const replay::LogReader& reader) {
-  for (std::vector<std::uint64_t>& p : event_positions) p.clear();
-  const std::uint64_t events = reader.event_count();
-  for (std::size_t b = 0; b < reader.blocks().size(); ++b) {
-    const replay::DecodedEvents& block = reader.block_events(b);
-    const std::uint64_t first = reader.blocks()[b].first_event;
-    for (std::size_t i = 0; i < block.size() && first + i < events; ++i) {
-      // Only these types can be marked: the others are passed over without building them.
-      const replay::EventType type = block.heads[i].type;
-      if (type != replay::EventType::flip && type != replay::EventType::encroached && type != replay::EventType::cavity)
-        continue;
-      const replay::Event e = block[i];
-      for (std::size_t m = 0; m < kMarkCount; ++m)
-        if (!marks_steps(static_cast<Mark>(m)) && marks_event(static_cast<Mark>(m), e))
-          event_positions[m].push_back(first + i + 1);
-    }
-  }
-  events_scanned = true;
+void TimelineCache::wait_for_scan() const {
+  while (scanning()) std::this_thread::sleep_for(std::chrono::milliseconds(2));
 }
 
 void TimelineCache::update(const replay::LogReader& reader, int width, MarkSet wanted) {
   const bool new_log = log != &reader;
-  const bool scan = wanted.any_event_kind() && (new_log || !events_scanned);
-  if (!new_log && columns == width && !scan) return;
   if (new_log) {
     events_scanned = false;
     for (std::vector<std::uint64_t>& p : event_positions) std::vector<std::uint64_t>().swap(p);
+    scan.reset();
   }
+  if (wanted.any_event_kind() && !events_scanned && !scan) {
+    scan = std::make_unique<EventMarkScan>();
+    scan->start(reader.path());
+  }
+  const bool arrived = scan && scan->ready();
+  if (arrived) {
+    event_positions = scan->take();
+    events_scanned = true;
+    scan.reset();
+  }
+  if (!new_log && columns == width && !arrived) return;
   log = &reader;
   columns = width;
-  if (scan) scan_events(reader);
 
   const auto w = static_cast<std::size_t>(std::max(0, width));
   steps.assign(w, 0);

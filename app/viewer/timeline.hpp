@@ -6,12 +6,14 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <cstdint>
 #include <vector>
 
 #include <imgui.h>
 
 #include "meshstep/replay/log_reader.hpp"
+#include "event_mark_scan.hpp"
 #include "timeline_marks.hpp"
 
 namespace meshstep::viewer {
@@ -21,8 +23,9 @@ class Session;
 // The columns of the bar, counted once per log and width (a million steps take a few
 // milliseconds to count; a frame then only draws). The kinds that mark events need one pass
 // over the log's events: it is made the first time one of them is wanted (not when the log
-// opens, so that a person who never asks for them never waits for it), and it keeps the
-// positions of all of them so that a new width is counted without reading the log again.
+// opens, so that a person who never asks for them never waits for it), on a thread of its
+// own (event_mark_scan.hpp), and its positions of all of them are kept so that a new width
+// is counted without reading the log again. Until the pass ends those kinds are uncounted.
 struct TimelineCache {
   const replay::LogReader* log = nullptr;
   int columns = 0;
@@ -35,15 +38,17 @@ struct TimelineCache {
   // The event kinds' positions (just after each event), once the pass has been made.
   bool events_scanned = false;
   std::array<std::vector<std::uint64_t>, kMarkCount> event_positions;
+  std::unique_ptr<EventMarkScan> scan;  // the pass, while it runs
 
   // Counts again when the log or the width changed, or when `wanted` asks for event kinds
   // whose pass has not been made yet.
   void update(const replay::LogReader& log, int columns, MarkSet wanted);
   // Whether kind `m` has been counted (an event kind: once its pass was made).
   bool counted(Mark m) const { return !marks[static_cast<std::size_t>(m)].empty(); }
-
- private:
-  void scan_events(const replay::LogReader& log);
+  // Whether the pass over the events runs (scripts wait for it before they look).
+  bool scanning() const { return scan && !scan->ready(); }
+  // Blocks until the pass (if one runs) has ended; the next update() counts it.
+  void wait_for_scan() const;
 };
 
 // The bar's column of an event position (0 .. columns - 1).

@@ -27,6 +27,8 @@ void draw_marks_choice(MarkSet& shown, const TimelineCache& cache) {
     char text[96];
     if (cache.counted(mark))
       std::snprintf(text, sizeof text, "%s (%llu)", label(mark), static_cast<unsigned long long>(cache.total_marks[m]));
+    else if (cache.scanning() && !marks_steps(mark))
+      std::snprintf(text, sizeof text, "%s (counting...)", label(mark));
     else
       std::snprintf(text, sizeof text, "%s", label(mark));
     if (ImGui::Checkbox(text, &on)) shown.set(mark, on);
@@ -119,6 +121,12 @@ void Viewer::draw_timeline_bar(float height) {
     if (nearest != kNoEvent && log.step_of_event(nearest) < log.step_count())
       session_->seek_step(log.step_of_event(nearest) + 1);
   }
+}
+
+void Viewer::settle_timeline_marks() {
+  if (!timeline_cache_.scan || !timeline_cache_.log) return;  // none, or counted already
+  timeline_cache_.wait_for_scan();
+  timeline_cache_.update(*timeline_cache_.log, timeline_cache_.columns, timeline_marks);
 }
 
 }  // namespace meshstep::viewer

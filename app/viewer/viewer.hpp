@@ -92,6 +92,9 @@ class Viewer {
 
   // The timeline's columns and marks, as the last frame counted them.
   const TimelineCache& timeline() const { return timeline_cache_; }
+  // Scripts, before they look: the pass over the events for the timeline's marks ended and
+  // counted.
+  void settle_timeline_marks();
 
   // The canvas's rectangle in the window (pixels), as the last frame laid it out.
   ImVec4 canvas_rect() const { return canvas_rect_; }

@@ -116,6 +116,8 @@ TEST(TimelineMarks, ColumnsCountEveryMarkedStepAndEventOnceInItsColumn) {
     for (const int width : {1, 97, 640, 5000}) {
       TimelineCache cache;
       cache.update(*log, width, MarkSet::all());
+      cache.wait_for_scan();
+      cache.update(*log, width, MarkSet::all());
       for (std::size_t m = 0; m < kMarkCount; ++m) {
         std::vector<std::uint32_t> expected(static_cast<std::size_t>(width), 0);
         for (const std::uint64_t p : positions[m])
@@ -141,8 +143,15 @@ TEST(TimelineMarks, EventKindsAreCountedOnlyOnceWantedAndAgainPerWidth) {
   EXPECT_TRUE(cache.counted(Mark::refine));
   EXPECT_FALSE(cache.counted(Mark::flips));
   EXPECT_FALSE(cache.events_scanned);
+  // Wanted: the pass starts on its own thread; the frame that asked does not wait for it.
   cache.update(*log, 300, MarkSet::none().set(Mark::flips));
+  EXPECT_TRUE(cache.scan != nullptr);
+  EXPECT_FALSE(cache.events_scanned);
+  EXPECT_FALSE(cache.counted(Mark::flips));
+  cache.wait_for_scan();
+  cache.update(*log, 300, MarkSet::none().set(Mark::flips));  // the same width: counted as it arrives
   EXPECT_TRUE(cache.events_scanned);
+  EXPECT_EQ(cache.scan, nullptr);
   ASSERT_TRUE(cache.counted(Mark::flips));
   ASSERT_TRUE(cache.counted(Mark::rejected));  // one pass finds every event kind
   const std::uint64_t flips = cache.total_marks[static_cast<std::size_t>(Mark::flips)];
