@@ -11,6 +11,18 @@
 namespace meshstep::terrain {
 namespace {
 
+// Everything of a grid but its heights: its size, spacing, position and units.
+void copy_header(const HeightGrid& from, HeightGrid& to) {
+  to.nx = from.nx;
+  to.ny = from.ny;
+  to.dx = from.dx;
+  to.dy = from.dy;
+  to.x0 = from.x0;
+  to.y0 = from.y0;
+  to.geographic = from.geographic;
+  to.units_note = from.units_note;
+}
+
 // Holds the band of rows of one row of tiles (the rows of a tile row r, from r(N - 1) up),
 // hands its tiles over once its southern row is in, and starts the next band below with
 // that row, which the two bands share.
@@ -84,14 +96,9 @@ class TileCutter {
       tile.i0 = layout_.first_column(c);
       tile.j0 = j0;
       HeightGrid& g = tile.grid;
+      copy_header(header, g);
       g.nx = layout_.last_column(c) - tile.i0 + 1;
       g.ny = ny;
-      g.dx = header.dx;
-      g.dy = header.dy;
-      g.x0 = header.x0;
-      g.y0 = header.y0;
-      g.geographic = header.geographic;
-      g.units_note = header.units_note;
       g.z.resize(g.nx * g.ny);
       for (std::size_t j = 0; j < ny; ++j)
         std::copy_n(rows_.begin() + static_cast<std::ptrdiff_t>(j * width_ + tile.i0 - first_kept_), g.nx,
@@ -127,14 +134,7 @@ void cut_tiles(const HeightGrid& grid, std::size_t size, std::optional<TileIndex
   if (grid.nx < 2 || grid.ny < 2) throw InputError("a terrain needs a grid of at least 2 x 2 samples");
   TileCutter cutter("", size, only, take);
   HeightGrid header;  // the grid but its heights (not copied: the rows are the grid's own)
-  header.nx = grid.nx;
-  header.ny = grid.ny;
-  header.dx = grid.dx;
-  header.dy = grid.dy;
-  header.x0 = grid.x0;
-  header.y0 = grid.y0;
-  header.geographic = grid.geographic;
-  header.units_note = grid.units_note;
+  copy_header(grid, header);
   for (std::size_t j = grid.ny; j-- > 0;)
     cutter.row(header, j, std::span<const float>(grid.z).subspan(j * grid.nx, grid.nx));
 }
