@@ -39,6 +39,7 @@ struct RefineArgs {
   double max_aspect = 0.0;
   double max_area = 0.0;
   std::size_t max_triangles = 0;
+  double flip_dihedral = -1.0;  // 3D surfaces: flips up to this dihedral angle (< 0: none)
   std::size_t max_steiner = 0;
   std::string size;
   std::string insertion = "flip";
@@ -167,11 +168,16 @@ int refine_surface(const RefineArgs& args) {
   surface.stats = args.stats;
   surface.no_output = args.no_output;
   surface.quiet = args.quiet;
+  surface.flip_dihedral = args.flip_dihedral;
   return run_refine_surface(surface);
 }
 
 int run_refine(const RefineArgs& args) {
   if (is_surface_file(args.input)) return refine_surface(args);
+  if (args.flip_dihedral >= 0.0) {
+    print_error("--flip-dihedral flips the edges of a 3D surface (.off, .obj, .ply, .stl), not of a planar mesh");
+    return kExitUsage;
+  }
   const Verbosity verbosity =
       args.quiet ? Verbosity::quiet : args.verbose ? Verbosity::verbose : Verbosity::normal;
 
@@ -552,6 +558,12 @@ Command add_refine_command(CLI::App& parent) {
                                          "edge (no bound outside the grid, on no-data cells, at values <= 0)")
                              ->check(positive_number(false))  // a file name passes: read later (exit 1 if bad)
                              ->type_name("VALUE|GRID.asc"));
+  cmd->add_option("--flip-dihedral", args->flip_dihedral,
+                  "3D surfaces: afterwards, flip every edge whose flip raises the smallest angle of its\n"
+                  "two triangles, where their normals differ by at most DEG degrees (0: coplanar pairs\n"
+                  "only, which leaves the surface and its area as they are)")
+      ->check(CLI::Range(0.0, 180.0))
+      ->type_name("DEG");
   cmd->add_option("--max-triangles", args->max_triangles, "Stop once the mesh has N triangles")
       ->check(positive_number(false))
       ->type_name("N");

@@ -8,6 +8,7 @@
 #include "json_line.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/surface_io.hpp"
+#include "meshstep/surface/surface_flips.hpp"
 #include "meshstep/surface/surface_refine.hpp"
 
 namespace meshstep::app {
@@ -31,8 +32,8 @@ int run_refine_surface(const SurfaceRefineArgs& args) {
                              "keeps it on the surface); '" + args.algorithm + "' works in the plane");
     return kExitUsage;
   }
-  if (args.max_edge <= 0.0 && args.max_area <= 0.0) {
-    print_error("refining a surface needs --size L (longest edge) or --max-area A");
+  if (args.max_edge <= 0.0 && args.max_area <= 0.0 && args.flip_dihedral < 0.0) {
+    print_error("refining a surface needs --size L (longest edge), --max-area A or --flip-dihedral DEG");
     return kExitUsage;
   }
   const std::string output = args.output.empty() ? default_output(args.input) : args.output;
@@ -50,15 +51,22 @@ int run_refine_surface(const SurfaceRefineArgs& args) {
     options.data_structure = args.ds == "dcel" ? DataStructure::dcel : DataStructure::tds;
     surface::BisectionReport report;
     Stopwatch clock;
-    const io::Surface out = surface::bisect_surface(in, options, &report);
+    io::Surface out = surface::bisect_surface(in, options, &report);
+    surface::FlipReport flips;
+    if (args.flip_dihedral >= 0.0) {
+      out = surface::flip_surface(out, {args.flip_dihedral}, &flips);
+      report.smallest_angle_after_deg = flips.smallest_angle_after_deg;
+      report.area_after = flips.area_after;
+    }
     const double refine_ms = clock.lap_ms();
     if (!args.no_output) io::write_surface(output, out, *format);
     if (report.capped)
       print_warning(verbosity, "stopped at --max-triangles " + std::to_string(args.max_triangles) +
                                    " before every bound was met");
     if (verbosity != Verbosity::quiet)
-      std::printf("%s: %zu triangles -> %zu (%zu bisections); smallest angle %.2f -> %.2f degrees; area %.17g%s\n",
+      std::printf("%s: %zu triangles -> %zu (%zu bisections%s); smallest angle %.2f -> %.2f degrees; area %.17g%s\n",
                   args.input.c_str(), in.triangles.size(), report.triangles, report.bisections,
+                  args.flip_dihedral < 0.0 ? "" : (", " + std::to_string(flips.flips) + " flips").c_str(),
                   report.smallest_angle_before_deg, report.smallest_angle_after_deg, report.area_after,
                   args.no_output ? " (not written)" : (", written to " + output).c_str());
     if (args.stats == "json") {
@@ -68,6 +76,8 @@ int run_refine_surface(const SurfaceRefineArgs& args) {
           .field("triangles", report.triangles)
           .field("vertices", out.vertices.size())
           .field("bisections", report.bisections)
+          .field("flips", flips.flips)
+          .field("largest_dihedral_flipped", flips.largest_dihedral_flipped_deg)
           .field("min_angle_before", report.smallest_angle_before_deg)
           .field("min_angle", report.smallest_angle_after_deg)
           .field("area_before", report.area_before)

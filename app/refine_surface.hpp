@@ -17,6 +17,7 @@ struct SurfaceRefineArgs {
   std::string stats;
   bool no_output = false;
   bool quiet = false;
+  double flip_dihedral = -1.0;  // after the bisection, flips up to this dihedral angle (< 0: none)
 };
 
 bool is_surface_file(const std::string& path);

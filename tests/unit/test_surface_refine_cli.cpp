@@ -1,6 +1,7 @@
 // meshstep refine on a 3D surface: longest-edge bisection with edges measured in 3D.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -51,6 +52,38 @@ TEST(SurfaceRefineCli, BisectsACubeKeepingItClosedAndItsArea) {
       const auto &p = s.vertices[t[k]], &q = s.vertices[t[(k + 1) % 3]];
       EXPECT_LE(std::hypot(p.x - q.x, p.y - q.y, p.z - q.z), 0.2);
     }
+}
+
+// --flip-dihedral: alone, or after the bisection; a coplanar thin pair takes its other
+// diagonal. Bad bounds and planar inputs are refused.
+TEST(SurfaceRefineCli, FlipsEdgesWithinADihedralBound) {
+  TempDir dir;
+  const auto rhombus = dir.path() / "rhombus.off";
+  std::ofstream(rhombus) << "OFF\n4 2 0\n-2 0 0\n2 0 0\n0 0.5 0\n0 -0.5 0\n3 0 1 2\n3 1 0 3\n";
+  const auto out = dir.path() / "flipped.off";
+  const auto r = run_meshstep("refine " + rhombus.string() + " --algorithm lepp-bisection --flip-dihedral 0 -o " +
+                                  out.string() + " --stats json -q",
+                              dir.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"flips\":1"), std::string::npos) << r.out;
+  const io::Surface s = io::read_surface(out.string());
+  ASSERT_EQ(s.triangles.size(), 2u);
+  for (const auto& t : s.triangles) EXPECT_TRUE(std::count(t.begin(), t.end(), 2u) && std::count(t.begin(), t.end(), 3u));
+  EXPECT_NEAR(area(s), 2.0, 1e-12);
+  const auto both = run_meshstep("refine " + rhombus.string() + " --algorithm lepp-bisection --size 1 --flip-dihedral 1 "
+                                 "--no-output --stats json -q", dir.path());
+  EXPECT_EQ(both.status, 0) << both.err;
+  EXPECT_NE(both.out.find("\"bisections\":"), std::string::npos) << both.out;
+  for (const char* bad : {"-1", "200", "x"}) {
+    const auto refused = run_meshstep("refine " + rhombus.string() + " --algorithm lepp-bisection --flip-dihedral " + bad +
+                                      " --no-output", dir.path());
+    EXPECT_EQ(refused.status, 2) << bad << ": " << refused.err;
+  }
+  const auto planar = dir.path() / "tri.node";
+  std::ofstream(planar) << "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n";
+  const auto refused = run_meshstep("refine " + planar.string() + " --flip-dihedral 1 --no-output", dir.path());
+  EXPECT_EQ(refused.status, 2) << refused.err;
+  EXPECT_NE(refused.err.find("3D surface"), std::string::npos) << refused.err;
 }
 
 TEST(SurfaceRefineCli, TheDefaultOutputIsNumberedLikeTriangles) {
