@@ -1,9 +1,12 @@
 // 3D surfaces (.off, .obj, .ply, .stl): the first byte picks the reader. What reads must
-// report without throwing, write, and read back the same.
+// report without throwing, write, and read back the same; and edge flips (the first byte's
+// high bits pick the dihedral bound) must refuse it or leave a surface as clean as it was,
+// with the same triangle count and a smallest angle no lower.
 #include <filesystem>
 
 #include "fuzz_support.hpp"
 #include "meshstep/io/surface_io.hpp"
+#include "meshstep/surface/surface_flips.hpp"
 
 using namespace meshstep;
 
@@ -18,6 +21,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     io::write_surface(again, s, io::SurfaceFormat::ply_binary);
     const io::Surface back = io::read_surface(again);
     if (back.vertices != s.vertices || back.triangles != s.triangles) fuzz::finding("a PLY round trip changed the surface");
+    surface::FlipReport report;
+    const io::Surface flipped = surface::flip_surface(s, {static_cast<double>(data[0] >> 2) * 3.0}, &report);
+    const io::SurfaceReport before = io::report_surface(s), after = io::report_surface(flipped);
+    if (flipped.triangles.size() != s.triangles.size()) fuzz::finding("flips changed the number of triangles");
+    if (after.boundary_edges != before.boundary_edges || after.non_manifold_edges != 0 || after.inconsistent_edges != 0 ||
+        after.degenerate_triangles > before.degenerate_triangles)
+      fuzz::finding("flips left a surface less clean than it was: " + io::describe(after));
+    if (report.smallest_angle_after_deg < report.smallest_angle_before_deg) fuzz::finding("flips lowered the smallest angle");
   });
   return 0;
 }
