@@ -27,6 +27,7 @@ struct TerrainArgs {
   std::string terminal = "centroid";
   std::string ds = "tds";
   bool flips = false;
+  bool improve = false, no_improve = false;
   std::string output;
   double base = 0.0;
   double png_cell = 1.0;
@@ -71,6 +72,7 @@ void print_stats_json(const TerrainArgs& args, const terrain::HeightGrid& grid, 
       .field("capped", report.capped)
       .field("terminal_worst", report.terminal_worst)
       .field("terminal_points", report.terminal_points)
+      .field("removed_vertices", report.removed)
       .field("flips_3d", report.flips_3d)
       .field("min_angle_3d", angles.smallest_deg)
       .field("share_under_10", angles.share_under_10)
@@ -90,6 +92,8 @@ terrain::TerrainOptions terrain_options(const TerrainArgs& args, const terrain::
   options.max_triangles = args.max_triangles;
   options.data_structure = args.ds == "dcel" ? DataStructure::dcel : DataStructure::tds;
   options.flips_3d = args.flips;
+  // lepp-surface improves by default; greedy stays the Garland-Heckbert baseline.
+  options.improve = args.improve || (algorithm.algorithm == terrain::TerrainAlgorithm::lepp_surface && !args.no_improve);
   return options;
 }
 
@@ -280,6 +284,11 @@ Command add_terrain_command(CLI::App& parent) {
                   "or midpoint of the edge")
       ->check(CLI::IsMember({"centroid", "midpoint"}))
       ->capture_default_str();
+  CLI::Option* improve = cmd->add_flag("--improve", args->improve,
+                "After refining, remove every vertex whose removal keeps every sample within\n"
+                "the bound and does not lower the smallest 3D angle round it (the default for\n"
+                "lepp-surface; this asks it of greedy too)");
+  cmd->add_flag("--no-improve", args->no_improve, "lepp-surface without the improvement")->excludes(improve);
   cmd->add_flag("--flips", args->flips,
                 "Then flip every edge whose flip raises the smallest 3D angle of its two\n"
                 "triangles and keeps them within the bound (no longer Delaunay in the plane)");

@@ -243,6 +243,43 @@ TEST(Terrain, LeppSurfaceMakesFewerSliversThanGreedy) {
   EXPECT_LT(lepp_count, 1.2 * greedy_count);
 }
 
+// The improvement after lepp-surface: every sample still within the bound (the tests' own
+// measure), fewer triangles than without it, the smallest 3D angle no lower, nothing on
+// the border removed, and the same TIN on both data structures.
+TEST(Terrain, TheImprovementRemovesVerticesWithinTheBoundAndNoWorseShapes) {
+  std::size_t with_count = 0, without_count = 0, with_thin = 0, without_thin = 0;
+  for (const unsigned seed : {11u, 12u, 13u}) {
+    SCOPED_TRACE(seed);
+    const HeightGrid g = hills(120, 100, seed);
+    TerrainOptions o{.algorithm = TerrainAlgorithm::lepp_surface, .max_error = 0.2};
+    const Tin without = approximate(g, o);
+    o.improve = true;
+    TerrainReport report;
+    const Tin with = approximate(g, o, &report);
+    expect_valid_tin(g, with);
+    const Check c = check_independently(g, with);
+    EXPECT_EQ(c.uncovered, 0u);
+    EXPECT_LE(c.max_error, 0.2 * (1 + 1e-9));
+    EXPECT_GT(report.removed, 0u);
+    EXPECT_EQ(report.vertices + report.removed, without.samples.size());
+    EXPECT_LT(with.triangles.size(), without.triangles.size());
+    EXPECT_GE(angle_stats_3d(g, with).smallest_deg, angle_stats_3d(g, without).smallest_deg - 1e-9);
+    for (const std::uint32_t corner : {0u, static_cast<std::uint32_t>(g.nx - 1),
+                                       static_cast<std::uint32_t>(g.nx * g.ny - 1),
+                                       static_cast<std::uint32_t>(g.nx * (g.ny - 1))})
+      EXPECT_NE(std::find(with.samples.begin(), with.samples.end(), corner), with.samples.end());
+    o.data_structure = DataStructure::dcel;
+    const Tin dcel = approximate(g, o);
+    EXPECT_EQ(dcel.samples, with.samples);
+    EXPECT_EQ(dcel.triangles.size(), with.triangles.size());
+    with_count += with.triangles.size();
+    without_count += without.triangles.size();
+    with_thin += static_cast<std::size_t>(angle_stats_3d(g, with).share_under_20 * with.triangles.size());
+    without_thin += static_cast<std::size_t>(angle_stats_3d(g, without).share_under_20 * without.triangles.size());
+  }
+  EXPECT_LT(with_thin, without_thin);
+}
+
 TEST(TerrainSurface, TheSolidBaseClosesTheSurface) {
   const HeightGrid g = hills(30, 20, 8);
   const Tin tin = approximate(g, {.max_error = 0.5});

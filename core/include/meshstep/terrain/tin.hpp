@@ -43,6 +43,12 @@ struct TerrainOptions {
   double max_error = 0.0;          // in height units; refine until every sample is within it
   std::size_t max_triangles = 0;   // stop at this many triangles (0: no cap)
   DataStructure data_structure = DataStructure::tds;
+  // After the refinement, remove every vertex (not on the border) whose removal keeps every
+  // sample within the bound and does not lower the smallest 3D angle of the triangles round
+  // it: the improvement step of improvement + refinement (the framework's `improve`, after
+  // Coll et al. 2008), here judged by the error as well as the angles. The TIN stays
+  // Delaunay in the plane. The CLI does it for lepp-surface unless told not to.
+  bool improve = false;
   // At the end, flip every edge whose flip raises the smallest 3D angle of its two
   // triangles and keeps them within the bound (the seed's FlipDelaunay3DSurface).
   bool flips_3d = false;
@@ -59,6 +65,7 @@ struct TerrainReport {
   // was taken or had no data).
   std::size_t terminal_worst = 0, terminal_points = 0;
   double worst_error = 0.0;               // the largest error left, by the algorithm's measure
+  std::size_t removed = 0;                // vertices removed by the improvement
   std::size_t flips_3d = 0;               // edges flipped for their 3D angles
   bool capped = false;                    // stopped at max_triangles with the bound unmet
   double seconds = 0.0;
