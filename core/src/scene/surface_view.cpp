@@ -54,16 +54,24 @@ Legend height_legend(double lo, double hi) {
   legend.title = "height";
   legend.colors = viridis().samples(kLegendStops);
   if (!(hi > lo)) {
-    legend.ticks.push_back({0.5, detail::tick_label(lo, 1.0)});
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", lo);
+    legend.ticks.push_back({0.5, buf});
     return legend;
   }
   const double step = detail::tick_step(lo, hi, 5);
   const auto at = [&](double v) { return (v - lo) / (hi - lo); };
-  // The ends exactly, and the round values between that are not crowding them.
-  legend.ticks.push_back({0.0, detail::tick_label(lo, step / 10.0)});
+  // The ends (to four significant digits), and the round values between that are not
+  // crowding them.
+  const auto end_label = [](double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return std::string(buf);
+  };
+  legend.ticks.push_back({0.0, end_label(lo)});
   for (const double v : detail::linear_ticks(lo, hi, 5))
     if (at(v) > 0.08 && at(v) < 0.92) legend.ticks.push_back({at(v), detail::tick_label(v, step)});
-  legend.ticks.push_back({1.0, detail::tick_label(hi, step / 10.0)});
+  legend.ticks.push_back({1.0, end_label(hi)});
   return legend;
 }
 
