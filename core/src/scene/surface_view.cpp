@@ -61,12 +61,16 @@ Legend height_legend(double lo, double hi) {
   }
   const double step = detail::tick_step(lo, hi, 5);
   const auto at = [&](double v) { return (v - lo) / (hi - lo); };
-  // The ends (to four significant digits), and the round values between that are not
-  // crowding them.
-  const auto end_label = [](double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", v);
-    return std::string(buf);
+  // The ends, to one decimal more than the round ticks between (trailing zeros dropped:
+  // "0.01" and "2", not "0.009656" and "2.00"), and the round ticks not crowding them.
+  const auto end_label = [step](double v) {
+    std::string text = detail::tick_label(v, step / 10.0);
+    if (text.find('.') != std::string::npos && text.find('e') == std::string::npos) {
+      text.erase(text.find_last_not_of('0') + 1);
+      if (text.back() == '.') text.pop_back();
+      if (text == "-0") text = "0";
+    }
+    return text;
   };
   legend.ticks.push_back({0.0, end_label(lo)});
   for (const double v : detail::linear_ticks(lo, hi, 5))
