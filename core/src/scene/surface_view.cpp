@@ -59,7 +59,7 @@ Legend height_legend(double lo, double hi) {
     legend.ticks.push_back({0.5, buf});
     return legend;
   }
-  const double step = detail::tick_step(lo, hi, 5);
+  const double step = detail::tick_step(lo, hi, 7);
   const auto at = [&](double v) { return (v - lo) / (hi - lo); };
   // The ends, to one decimal more than the round ticks between (trailing zeros dropped:
   // "0.01" and "2", not "0.009656" and "2.00"), and the round ticks not crowding them.
@@ -73,7 +73,7 @@ Legend height_legend(double lo, double hi) {
     return text;
   };
   legend.ticks.push_back({0.0, end_label(lo)});
-  for (const double v : detail::linear_ticks(lo, hi, 5))
+  for (const double v : detail::linear_ticks(lo, hi, 7))
     if (at(v) > 0.08 && at(v) < 0.92) legend.ticks.push_back({at(v), detail::tick_label(v, step)});
   legend.ticks.push_back({1.0, end_label(hi)});
   return legend;
