@@ -215,6 +215,7 @@ Command add_render_command(CLI::App& parent) {
   add_draw_options(cmd, args->draw);
   cmd->add_flag("-q,--quiet", args->quiet, "Print only errors");
   cmd->footer(
+      "A surface is always coloured by height: --color-by height (or none); any other value is refused.\n"
       "Examples:\n"
       "  meshstep refine assets/examples/lesson.poly --algorithm offcenter --min-angle 30 --record l.mslog\n"
       "  meshstep render l.mslog --step 40 -o step40.png\n"
