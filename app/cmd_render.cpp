@@ -1,5 +1,9 @@
 // meshstep render: one picture (PNG or SVG) of a moment of a run, a mesh or an input.
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
 #include <memory>
 #include <string>
 
@@ -8,7 +12,9 @@
 #include "draw_options.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/atomic_file.hpp"
+#include "meshstep/io/surface_io.hpp"
 #include "meshstep/scene/layout.hpp"
+#include "meshstep/scene/surface_view.hpp"
 #include "meshstep/scene/svg.hpp"
 #include "moment_scene.hpp"
 #include "output_prefix.hpp"
@@ -24,6 +30,8 @@ struct RenderArgs {
   std::int64_t step = -2;   // -2: not given
   std::int64_t event = -2;
   DrawArgs draw;
+  std::string orbit;    // "AZ,EL" in degrees; empty: not given
+  std::string z_scale;  // empty: not given
   bool quiet = false;
 };
 
@@ -37,6 +45,40 @@ Format format_of(const std::string& path) {
 
 std::string default_output(const SceneSource& source) {
   return (source.kind == SourceKind::mesh ? source.path : strip_extension(source.path)) + ".png";
+}
+
+// A surface in 3D: the input's extension is that of a surface format (.obj .off .ply .stl).
+bool is_surface(const std::string& path) { return io::surface_format_for(path).has_value(); }
+
+// A whole string as a finite number, or nullopt.
+std::optional<double> number_of(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+// The 3D camera the options ask for, checked.
+scene::SurfaceView surface_view_of(const RenderArgs& args) {
+  scene::SurfaceView view;
+  if (!args.orbit.empty()) {
+    const std::size_t comma = args.orbit.find(',');
+    const std::optional<double> az = comma == std::string::npos ? std::nullopt : number_of(args.orbit.substr(0, comma));
+    const std::optional<double> el = comma == std::string::npos ? std::nullopt : number_of(args.orbit.substr(comma + 1));
+    if (!az || !el)
+      throw UsageError("--orbit " + args.orbit + ": expected two numbers AZ,EL (azimuth and elevation in degrees)");
+    if (*el < -90.0 || *el > 90.0)
+      throw UsageError("--orbit " + args.orbit + ": the elevation must be from -90 to 90 degrees");
+    view.azimuth_deg = *az;
+    view.elevation_deg = *el;
+  }
+  if (!args.z_scale.empty()) {
+    const std::optional<double> k = number_of(args.z_scale);
+    if (!k || !(*k > 0.0)) throw UsageError("--z-scale " + args.z_scale + ": expected a number > 0");
+    view.z_scale = *k;
+  }
+  return view;
 }
 
 // The replay position the options ask for, checked against the run.
@@ -59,9 +101,51 @@ std::uint64_t position_of(const RenderArgs& args, const replay::LogReader& log) 
   return log.event_count();
 }
 
+// Writes the picture of `scene` as the output's extension says; returns how it was drawn.
+std::string write_picture(const std::string& output, const scene::Scene& picture, const DrawSettings& draw) {
+  const scene::Camera camera =
+      draw.view ? draw.camera(picture.bounds) : scene::fit_scene(picture, draw.width, draw.height);
+  if (format_of(output) == Format::svg) {
+    io::write_file_atomically(output, scene::to_svg(picture, camera));
+    return "SVG";
+  }
+  Painter painter(draw.gl);
+  scene::write_png(output, painter.paint(picture, camera, draw.samples));
+  return "PNG, " + painter.description();
+}
+
+// A triangle surface seen from an orbit camera (scene/surface_view.hpp). Surfaces are
+// always coloured by height: --color-by height (or none) is accepted, any other refused.
+int render_surface(const RenderArgs& args, Verbosity verbosity) {
+  DrawArgs draw_args = args.draw;
+  if (draw_args.color_by != "none" && draw_args.color_by != "height")
+    throw UsageError("--color-by " + draw_args.color_by + ": a 3D surface is coloured by height (use height or none)");
+  draw_args.color_by = "none";
+  const DrawSettings draw = parse_draw_args(draw_args);
+  if (args.step != -2 || args.event != -2) throw UsageError("--step and --event need a replay log; " + args.input + " is a surface");
+  const scene::SurfaceView view = surface_view_of(args);
+  const std::string output = args.output.empty() ? strip_extension(args.input) + ".png" : args.output;
+  format_of(output);
+
+  const io::Surface surface = io::read_surface(args.input);
+  const std::string name = std::filesystem::path(args.input).filename().string();
+  scene::Scene picture = scene::surface_scene(surface, view, draw.scene.theme, name);
+  picture.visible = draw.scene.layers;
+  const std::string how = write_picture(output, picture, draw);
+  if (verbosity != Verbosity::quiet)
+    std::printf("%s: %dx%d picture of %s in 3D (%zu triangles; %s)\n", output.c_str(), draw.width, draw.height,
+                args.input.c_str(), picture.mesh.triangles.size(), how.c_str());
+  return kExitOk;
+}
+
 int run_render(const RenderArgs& args) {
   const Verbosity verbosity = args.quiet ? Verbosity::quiet : Verbosity::normal;
   return with_picture_errors(" (an .svg picture needs no OpenGL)", [&] {
+    const bool surface = is_surface(args.input);
+    if (!surface && (!args.orbit.empty() || !args.z_scale.empty()))
+      throw UsageError(std::string(args.orbit.empty() ? "--z-scale" : "--orbit") +
+                       " needs a 3D surface (.obj, .off, .ply or .stl); " + args.input + " is not one");
+    if (surface) return render_surface(args, verbosity);
     const DrawSettings draw = parse_draw_args(args.draw);
     if (!args.output.empty()) format_of(args.output);
     std::vector<std::string> warnings;
@@ -115,20 +199,29 @@ Command add_render_command(CLI::App& parent) {
       "  a replay log (--record): the mesh at any moment of the run, with overlays that explain\n"
       "    the step just taken (default: the end of the run);\n"
       "  a mesh PREFIX (PREFIX.node + PREFIX.ele);\n"
-      "  an input .poly or .node, before triangulation.");
-  cmd->add_option("INPUT", args->input, "Replay log, mesh prefix, or .poly/.node input")->required();
+      "  an input .poly or .node, before triangulation;\n"
+      "  a triangle surface .obj, .off, .ply or .stl (a terrain TIN, say) in 3D: an orbit camera\n"
+      "    (parallel projection), lit faces coloured by height, a wireframe (--orbit, --z-scale).");
+  cmd->add_option("INPUT", args->input, "Replay log, mesh prefix, .poly/.node input, or .obj/.off/.ply/.stl surface")
+      ->required();
   cmd->add_option("-o,--output", args->output,
                   "OUT.png or OUT.svg (default: INPUT without its extension, plus .png)");
   cmd->add_option("--step", args->step, "The moment after K steps (0: before the first; -1: the end)");
   cmd->add_option("--event", args->event, "The moment after N events (-1: the end)");
+  cmd->add_option("--orbit", args->orbit,
+                  "Surfaces: where the camera looks from, AZ,EL in degrees (azimuth from +x toward +y, "
+                  "elevation -90..90 above the xy plane; default -60,35; 90 looks straight down)");
+  cmd->add_option("--z-scale", args->z_scale, "Surfaces: heights multiplied by K > 0 before drawing (default 1)");
   add_draw_options(cmd, args->draw);
   cmd->add_flag("-q,--quiet", args->quiet, "Print only errors");
   cmd->footer(
+      "A surface is always coloured by height: --color-by height (or none); any other value is refused.\n"
       "Examples:\n"
       "  meshstep refine assets/examples/lesson.poly --algorithm offcenter --min-angle 30 --record l.mslog\n"
       "  meshstep render l.mslog --step 40 -o step40.png\n"
       "  meshstep render l.mslog --color-by quality --theme dark -o end.png\n"
-      "  meshstep render l.mslog --step 40 --layers -caption,-legend -o figure.svg");
+      "  meshstep render l.mslog --step 40 --layers -caption,-legend -o figure.svg\n"
+      "  meshstep terrain dem.asc -o tin.obj && meshstep render tin.obj --orbit 30,40 --z-scale 2 -o tin.png");
   return {cmd, [args] { return run_render(*args); }};
 }
 

@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,7 @@
 #include "meshstep/scene/build.hpp"
 #include "meshstep/scene/image.hpp"
 #include "meshstep/scene/layout.hpp"
+#include "meshstep/scene/surface_view.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 
@@ -388,6 +390,60 @@ std::optional<Scene> region_case() {
   return s;
 }
 
+// A Gaussian hill on a 9x9 grid over [-4, 4]^2, each cell cut along its diagonal, seen from
+// the default orbit camera with heights doubled.
+std::optional<Scene> surface_hill_case() {
+  io::Surface hill;
+  constexpr int kN = 9;
+  for (int j = 0; j < kN; ++j)
+    for (int i = 0; i < kN; ++i) {
+      const double x = i - 4.0, y = j - 4.0;
+      hill.vertices.push_back({x, y, 2.0 * std::exp(-(x * x + y * y) / 6.0)});
+    }
+  for (std::uint32_t j = 0; j + 1 < kN; ++j)
+    for (std::uint32_t i = 0; i + 1 < kN; ++i) {
+      const std::uint32_t a = j * kN + i, b = a + 1, c = a + kN, d = c + 1;
+      hill.triangles.push_back({a, b, d});
+      hill.triangles.push_back({a, d, c});
+    }
+  scene::SurfaceView view;
+  view.z_scale = 2.0;
+  Scene s = scene::surface_scene(hill, view, scene::Theme::light, "hill");
+  // Independently: the orthographic projection onto the plane of the default camera
+  // (azimuth -60, elevation 35), and the depth toward the camera.
+  const double a = -60.0 * std::numbers::pi / 180.0, e = 35.0 * std::numbers::pi / 180.0;
+  const auto project = [&](const Point3& p) {
+    const double z = 2.0 * p.z;
+    return Point{-std::sin(a) * p.x + std::cos(a) * p.y,
+                 -std::sin(e) * std::cos(a) * p.x - std::sin(e) * std::sin(a) * p.y + std::cos(e) * z};
+  };
+  const auto depth = [&](const Point3& p) {
+    return std::cos(e) * std::cos(a) * p.x + std::cos(e) * std::sin(a) * p.y + std::sin(e) * 2.0 * p.z;
+  };
+  EXPECT_EQ(s.mesh.points.size(), hill.vertices.size());
+  for (std::size_t i = 0; i < hill.vertices.size() && i < s.mesh.points.size(); ++i)
+    expect_point(s.mesh.points[i], project(hill.vertices[i]), 1e-12);
+  EXPECT_EQ(s.mesh.triangles.size(), hill.triangles.size());
+  EXPECT_TRUE(s.mesh.painter_order);
+  double previous = -INFINITY;
+  for (std::size_t i = 0; i < s.mesh.triangles.size(); ++i) {
+    const auto& t = s.mesh.triangles[i];
+    const Point3 &p = hill.vertices[t[0]], &q = hill.vertices[t[1]], &r = hill.vertices[t[2]];
+    const double d = (depth(p) + depth(q) + depth(r)) / 3.0;
+    EXPECT_GE(d, previous - 1e-12) << "triangle " << i << " is nearer than the one after it";
+    previous = d;
+    EXPECT_NEAR(s.mesh.values.at(i), (p.z + q.z + r.z) / 3.0, 1e-12);
+  }
+  EXPECT_TRUE(s.legend && s.legend->title == "height");
+  // The legend spans the lowest to the highest vertex: 2 exp(-32/6) = 0.0097 at the corners.
+  if (s.legend) {
+    EXPECT_EQ(s.legend->ticks.front().text, "0.01");
+    EXPECT_EQ(s.legend->ticks.back().text, "2");
+  }
+  EXPECT_EQ(s.caption, "hill \u00B7 81 vertices, 128 triangles \u00B7 azimuth -60\u00B0, elevation 35\u00B0 \u00B7 heights \u00D72");
+  return s;
+}
+
 const std::vector<GoldenCase>& cases() {
   static const std::vector<GoldenCase> list = {
       {"input", input_case},
@@ -405,6 +461,7 @@ const std::vector<GoldenCase>& cases() {
       {"color_area", area_case},
       {"color_age", age_case},
       {"color_region", region_case},
+      {"surface_hill", surface_hill_case},
   };
   return list;
 }

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "meshstep/scene/image.hpp"
@@ -186,3 +188,70 @@ TEST_F(RenderCli, FailedVideoLeavesNothingAndNamesThePackage) {
 }
 
 }  // namespace
+
+// ---------------------------------------------------------------------------------------
+// Triangle surfaces in 3D: a TIN made by `meshstep terrain`, drawn from an orbit camera.
+
+class RenderSurfaceCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    // A 24 x 18 grid with one hill: a TIN of it, written as OBJ.
+    const fs::path grid = file("hill.asc");
+    {
+      std::ofstream out(grid);
+      out << "ncols 24\nnrows 18\nxllcorner 0\nyllcorner 0\ncellsize 10\nNODATA_value -9999\n";
+      for (int j = 0; j < 18; ++j) {
+        for (int i = 0; i < 24; ++i) out << 100.0 + 40.0 * std::exp(-((i - 12) * (i - 12) + (j - 9) * (j - 9)) / 30.0) << ' ';
+        out << '\n';
+      }
+    }
+    tin_ = file("tin.obj").string();
+    const CommandResult r = run_meshstep("terrain " + grid.string() + " --max-error 0.5 -o " + tin_ + " -q", dir_.path());
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  fs::path file(const std::string& name) const { return dir_.path() / name; }
+
+  TempDir dir_;
+  std::string tin_;
+};
+
+TEST_F(RenderSurfaceCli, TerrainTinToSvgAndPng) {
+  const CommandResult svg =
+      run_meshstep("render " + tin_ + " --orbit 30,40 --z-scale 2 -o " + file("tin.svg").string(), dir_.path());
+  ASSERT_EQ(svg.status, 0) << svg.err;
+  EXPECT_NE(svg.out.find("in 3D"), std::string::npos) << svg.out;
+  const std::string text = slurp(file("tin.svg"));
+  EXPECT_NE(text.find("<svg"), std::string::npos);
+  EXPECT_NE(text.find("azimuth 30"), std::string::npos) << "the caption names the camera";
+  EXPECT_NE(text.find("height"), std::string::npos) << "the legend's title";
+
+  const CommandResult png =
+      run_meshstep("render " + tin_ + " --size 400x300 --color-by height -o " + file("tin.png").string(), dir_.path());
+  if (png.status != 0 && png.err.find("OpenGL") != std::string::npos) GTEST_SKIP() << "no OpenGL on this machine";
+  ASSERT_EQ(png.status, 0) << png.err;
+  const meshstep::scene::Image image = meshstep::scene::read_png(file("tin.png").string());
+  EXPECT_EQ(image.width, 400);
+  EXPECT_EQ(image.height, 300);
+}
+
+TEST_F(RenderSurfaceCli, BadCameraOptionsAreUsageErrors) {
+  const struct {
+    const char* options;
+    const char* says;
+  } cases[] = {
+      {"--orbit 10", "--orbit"},          {"--orbit 10,95", "-90 to 90"},  {"--orbit 10,-90.5", "-90 to 90"},
+      {"--orbit ten,20", "--orbit"},      {"--orbit 10,20,30", "--orbit"}, {"--z-scale 0", "--z-scale"},
+      {"--z-scale=-1", "--z-scale"},      {"--z-scale tall", "--z-scale"}, {"--color-by angle", "height"},
+  };
+  for (const auto& c : cases) {
+    const CommandResult r = run_meshstep("render " + tin_ + " " + c.options + " -o " + file("bad.svg").string(), dir_.path());
+    EXPECT_EQ(r.status, 2) << c.options << ": " << r.err;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << c.options << ": " << r.err;
+    EXPECT_FALSE(fs::exists(file("bad.svg"))) << c.options;
+  }
+  // The camera options need a surface.
+  const CommandResult flat = run_meshstep("render " + lesson() + " --orbit 10,20 -o " + file("bad.svg").string(), dir_.path());
+  EXPECT_EQ(flat.status, 2) << flat.err;
+  EXPECT_NE(flat.err.find("3D surface"), std::string::npos) << flat.err;
+  EXPECT_FALSE(fs::exists(file("bad.svg")));
+}

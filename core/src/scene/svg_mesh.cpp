@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "meshstep/scene/colormap.hpp"
 #include "scene/svg_parts.hpp"
 
 namespace meshstep::scene::detail {
@@ -133,11 +134,54 @@ void write_edge_chains(const SvgContext& c, const EdgeAdjacency& adj, std::uint8
   }
 }
 
+// A mesh in painter's order (MeshLayer::painter_order, a 3D view): one path per triangle,
+// in the mesh's order, stroked with its edges, so that a nearer triangle covers the fill and
+// the edges behind it as in the GL renderer. The stroke is the edge colour laid over the
+// triangle's own fill (faded as the GL renderer fades small triangles' edges), so it is
+// opaque: the two triangles of an edge stroke it alike, and no seam shows between them.
+void write_painter_order(SvgContext& c, bool edges_on) {
+  const MeshLayer& mesh = c.scene.mesh;
+  SvgText& out = c.out;
+  const std::size_t count = std::min(mesh.triangles.size(), mesh.fill.size());
+  const bool edges = edges_on && mesh.edge_color.a > 0 && mesh.edge_width_px > 0.0f;
+  Rgba edge_opaque = mesh.edge_color;
+  edge_opaque.a = 255;
+  for (std::size_t t = 0; t < count; ++t) {
+    const auto& v = mesh.triangles[t];
+    const Rgba fill = mesh.fill[t];
+    if (fill.a == 0 || !valid_triangle(mesh, v)) continue;
+    const Point a = c.mesh_screen[v[0]], b = c.mesh_screen[v[1]], d = c.mesh_screen[v[2]];
+    Rgba stroke = fill;
+    double width = kSeamStrokePx;
+    if (edges) {
+      stroke = mix(fill, edge_opaque, mesh.edge_color.a / 255.0 * edge_fade(a, b, d));
+      stroke.a = fill.a;
+      width = mesh.edge_width_px;
+    }
+    const std::size_t rollback = out.size();
+    out.raw("<path");
+    out.paint("fill", fill);
+    out.paint("stroke", stroke);
+    out.attr_fine("stroke-width", width);
+    out.attr("stroke-linejoin", "round");
+    out.raw(" d=\"");
+    PathData path(out);
+    TriangleWriter triangles(c, path, width);
+    triangles.add(a, b, d);
+    if (path.empty()) out.truncate(rollback);
+    else out.raw("\"/>\n");
+  }
+}
+
 }  // namespace
 
 void write_mesh_fill(SvgContext& c) {
   const MeshLayer& mesh = c.scene.mesh;
   SvgText& out = c.out;
+  if (mesh.painter_order) {
+    write_painter_order(c, c.scene.visible.has(Layer::edges));
+    return;
+  }
   // (colour, triangle) pairs, sorted: one path per colour, its triangles in mesh order.
   std::vector<std::uint64_t> keyed;
   keyed.reserve(mesh.triangles.size());
@@ -174,6 +218,9 @@ void write_mesh_fill(SvgContext& c) {
 void write_mesh_edges(SvgContext& c) {
   const MeshLayer& mesh = c.scene.mesh;
   if (mesh.edge_color.a == 0 || !(mesh.edge_width_px > 0.0f)) return;
+  // In painter's order the edges were written with their triangles, unless the fill is off
+  // (then they are all drawn, as the GL renderer draws them over a transparent inside).
+  if (mesh.painter_order && c.scene.visible.has(Layer::fill)) return;
   const EdgeAdjacency adj = edge_adjacency(mesh, c.mesh_screen);
   bool present[kFadeLevels + 1] = {};
   for (const std::uint8_t l : adj.level) present[l] = true;

@@ -96,6 +96,11 @@ struct MeshLayer {
   std::vector<double> region;   // each triangle's regional attribute (empty: the input has no regions)
   Rgba edge_color;
   float edge_width_px = 1.0f;
+  // The triangles are in drawing order, back to front (a 3D view, scene/surface_view.hpp):
+  // each must be drawn with its edges before the next, so that nearer ones cover them. The
+  // GL renderer always draws in index order, fill and edges in one pass; the SVG writer
+  // writes such a mesh triangle by triangle instead of grouping it by colour.
+  bool painter_order = false;
 };
 
 enum class ShapeKind : std::uint8_t {
