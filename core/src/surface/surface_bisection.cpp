@@ -16,6 +16,7 @@
 #include "seam_table.hpp"
 #include "surface_bisector.hpp"
 #include "surface_geometry.hpp"
+#include "surface_input.hpp"
 #include "surface_loader.hpp"
 
 namespace meshstep::surface {
@@ -29,54 +30,14 @@ void check_bound(double value, const char* name) {
                      std::to_string(value));
 }
 
-// Refuses what the bisection cannot take: anything but a manifold surface whose triangles
-// agree on their orientation (borders allowed), and coordinates that are not finite.
 void check_input(const io::Surface& in, const BisectionOptions& options) {
   check_bound(options.max_edge, "the largest edge length");
   check_bound(options.max_area, "the largest area");
-  // Corner edges (3 per triangle) are numbered in 32 bits.
-  if (in.triangles.size() > std::numeric_limits<std::uint32_t>::max() / 3)
-    throw InputError("surface bisection: too many triangles (" + std::to_string(in.triangles.size()) + ")");
-  for (std::size_t v = 0; v < in.vertices.size(); ++v) {
-    const Point3& p = in.vertices[v];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw InputError("surface bisection: vertex " + std::to_string(v) + " has a coordinate that is not finite");
-  }
-  const io::SurfaceReport r = io::report_surface(in);  // throws for an index past the end
-  if (r.degenerate_triangles > 0 || r.duplicate_triangles > 0 || r.non_manifold_edges > 0 ||
-      r.inconsistent_edges > 0) {
-    // Vertices of no triangle are harmless: they are carried through.
-    io::SurfaceReport problems = r;
-    problems.unused_vertices = 0;
-    throw InputError("surface bisection needs a manifold surface with consistently oriented triangles; this one is " +
-                     io::describe(problems));
-  }
+  detail::check_surface_input(in, "surface bisection");
 }
 
 // Each triangle from its smallest vertex id, keeping its orientation.
-Triangle from_smallest(VertexId a, VertexId b, VertexId c) {
-  if (b < a && b < c) return {b, c, a};
-  if (c < a && c < b) return {c, a, b};
-  return {a, b, c};
-}
-
-struct Measures {
-  double smallest_angle_deg = 0.0;
-  double area = 0.0;
-};
-
-Measures measure(const std::vector<Point3>& points, const std::vector<Triangle>& triangles) {
-  if (triangles.empty()) return {};
-  double smallest = 180.0;
-  detail::CompensatedSum area;
-  for (const Triangle& t : triangles) {
-    const Triangle c = from_smallest(t[0], t[1], t[2]);
-    const Point3 &a = points[c[0]], &b = points[c[1]], &p = points[c[2]];
-    smallest = std::min(smallest, detail::smallest_angle_deg(a, b, p));
-    area.add(detail::area(a, b, p));
-  }
-  return {smallest, area.value()};
-}
+Triangle from_smallest(VertexId a, VertexId b, VertexId c) { return detail::from_smallest(Triangle{a, b, c}); }
 
 template <TriangleMesh Mesh>
 io::Surface bisect_with(const io::Surface& in, const BisectionOptions& options, BisectionReport& report) {
@@ -107,10 +68,10 @@ io::Surface bisect_with(const io::Surface& in, const BisectionOptions& options, 
 io::Surface bisect_surface(const io::Surface& in, const BisectionOptions& options, BisectionReport* report) {
   check_input(in, options);
   BisectionReport r;
-  const Measures before = measure(in.vertices, in.triangles);
+  const detail::SurfaceMeasures before = detail::measure_surface(in.vertices, in.triangles);
   io::Surface out = options.data_structure == DataStructure::dcel ? bisect_with<Dcel>(in, options, r)
                                                                   : bisect_with<Tds>(in, options, r);
-  const Measures after = measure(out.vertices, out.triangles);
+  const detail::SurfaceMeasures after = detail::measure_surface(out.vertices, out.triangles);
   r.triangles = out.triangles.size();
   r.smallest_angle_before_deg = before.smallest_angle_deg;
   r.smallest_angle_after_deg = after.smallest_angle_deg;

@@ -16,20 +16,16 @@
 
 #include "meshstep/error.hpp"
 #include "surface_geometry.hpp"
+#include "surface_input.hpp"
 
 namespace meshstep::surface {
 namespace {
 
-using Triangle = std::array<std::uint32_t, 3>;
+using detail::from_smallest;
+using detail::Triangle;
 
 std::uint64_t directed(std::uint32_t a, std::uint32_t b) { return std::uint64_t{a} << 32 | b; }
 std::uint64_t undirected(std::uint32_t a, std::uint32_t b) { return directed(std::min(a, b), std::max(a, b)); }
-
-Triangle from_smallest(const Triangle& t) {
-  if (t[1] < t[0] && t[1] < t[2]) return {t[1], t[2], t[0]};
-  if (t[2] < t[0] && t[2] < t[1]) return {t[2], t[0], t[1]};
-  return t;
-}
 
 std::array<double, 3> normal(const Point3& a, const Point3& b, const Point3& c) {
   const double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z;
@@ -140,47 +136,20 @@ class Flipper {
   std::unordered_set<std::uint64_t> queued_;
 };
 
-struct Measures {
-  double smallest_angle_deg = 0.0, area = 0.0;
-};
-
-Measures measure(const std::vector<Point3>& points, const std::vector<Triangle>& triangles) {
-  if (triangles.empty()) return {};
-  double smallest = 180.0;
-  detail::CompensatedSum area;
-  for (const Triangle& t : triangles) {
-    const Triangle s = from_smallest(t);
-    smallest = std::min(smallest, detail::smallest_angle_deg(points[s[0]], points[s[1]], points[s[2]]));
-    area.add(detail::area(points[s[0]], points[s[1]], points[s[2]]));
-  }
-  return {smallest, area.value()};
-}
-
 }  // namespace
 
 io::Surface flip_surface(const io::Surface& in, const FlipOptions& options, FlipReport* report) {
   if (!(options.max_dihedral_deg >= 0.0 && options.max_dihedral_deg <= 180.0))
     throw InputError("surface flips: the dihedral bound must be between 0 and 180 degrees, not " +
                      std::to_string(options.max_dihedral_deg));
-  for (std::size_t v = 0; v < in.vertices.size(); ++v) {
-    const Point3& q = in.vertices[v];
-    if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
-      throw InputError("surface flips: vertex " + std::to_string(v) + " has a coordinate that is not finite");
-  }
-  io::SurfaceReport r = io::report_surface(in);  // throws for an index past the end
-  if (r.degenerate_triangles > 0 || r.duplicate_triangles > 0 || r.non_manifold_edges > 0 ||
-      r.inconsistent_edges > 0) {
-    r.unused_vertices = 0;
-    throw InputError("surface flips need a manifold surface with consistently oriented triangles; this one is " +
-                     io::describe(r));
-  }
+  detail::check_surface_input(in, "surface flips");
   FlipReport result;
   io::Surface out = in;
-  const Measures before = measure(out.vertices, out.triangles);
+  const detail::SurfaceMeasures before = detail::measure_surface(out.vertices, out.triangles);
   Flipper(out.vertices, out.triangles, options.max_dihedral_deg).run(result);
   for (Triangle& t : out.triangles) t = from_smallest(t);
   std::sort(out.triangles.begin(), out.triangles.end());
-  const Measures after = measure(out.vertices, out.triangles);
+  const detail::SurfaceMeasures after = detail::measure_surface(out.vertices, out.triangles);
   result.smallest_angle_before_deg = before.smallest_angle_deg;
   result.smallest_angle_after_deg = after.smallest_angle_deg;
   result.area_before = before.area;
