@@ -25,6 +25,21 @@ inline std::string slurp(const std::filesystem::path& p) {
 
 // Runs the meshstep binary with `args` (already shell-quoted where needed); its standard
 // output and error go through files in `dir`.
+// The --stats json line: the last line of standard output.
+inline std::string stats_line(const std::string& out) {
+  const std::string trimmed = out.substr(0, out.find_last_not_of('\n') + 1);
+  return trimmed.substr(trimmed.rfind('\n') + 1);
+}
+
+// The raw text of "key"'s value in a one-line JSON object, up to the next ',' or '}' ("" if
+// absent; a string keeps its quotes).
+inline std::string json_field(const std::string& json, const std::string& key) {
+  const auto at = json.find("\"" + key + "\":");
+  if (at == std::string::npos) return "";
+  const auto start = at + key.size() + 3;
+  return json.substr(start, json.find_first_of(",}", start) - start);
+}
+
 inline CommandResult run_meshstep(const std::string& args, const std::filesystem::path& dir) {
   const std::filesystem::path out = dir / "stdout.txt", err = dir / "stderr.txt";
   const std::string command =

@@ -16,6 +16,8 @@ namespace {
 
 using testing::run_meshstep;
 using testing::TempDir;
+using testing::stats_line;
+const auto& field = testing::json_field;
 
 // A 30 x 20 grid of smooth hills, with one NODATA cell.
 std::filesystem::path write_hills(const std::filesystem::path& dir) {
@@ -28,19 +30,6 @@ std::filesystem::path write_hills(const std::filesystem::path& dir) {
     out << '\n';
   }
   return path;
-}
-
-// The --stats json line: the last line of standard output.
-std::string stats_line(const std::string& out) {
-  const std::string trimmed = out.substr(0, out.find_last_not_of('\n') + 1);
-  return trimmed.substr(trimmed.rfind('\n') + 1);
-}
-
-std::string field(const std::string& json, const std::string& key) {
-  const auto at = json.find("\"" + key + "\":");
-  if (at == std::string::npos) return "";
-  const auto start = at + key.size() + 3;
-  return json.substr(start, json.find_first_of(",}", start) - start);
 }
 
 TEST(TerrainCli, WritesEverySurfaceFormatAndMeasuresEverySample) {

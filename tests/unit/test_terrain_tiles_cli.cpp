@@ -20,6 +20,8 @@ namespace {
 using testing::run_meshstep;
 using testing::slurp;
 using testing::TempDir;
+using testing::stats_line;
+const auto& field = testing::json_field;
 
 // A 41 x 33 grid of rough hills, NODATA on a tile border and at a tile corner for N = 9
 // (shared lines at 8, 16, 24, 32).
@@ -37,18 +39,6 @@ std::string write_tile_hills(const TempDir& dir, const std::string& name = "hill
     text += '\n';
   }
   return dir.write(name, text);
-}
-
-std::string stats_line(const std::string& out) {
-  const std::string trimmed = out.substr(0, out.find_last_not_of('\n') + 1);
-  return trimmed.substr(trimmed.rfind('\n') + 1);
-}
-
-std::string field(const std::string& json, const std::string& key) {
-  const auto at = json.find("\"" + key + "\":");
-  if (at == std::string::npos) return "";
-  const auto start = at + key.size() + 3;
-  return json.substr(start, json.find_first_of(",}", start) - start);
 }
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
