@@ -385,7 +385,7 @@ int run_refine(const RefineArgs& args) {
                          " input_vertices=" + std::to_string(input_vertices) +
                          " first_index=" + std::to_string(input.first_index) +
                          " convex_hull=" + std::to_string(args.convex_hull),
-                     options.triangulate.data_structure, options.triangulate.insertion, input);
+                     options.triangulate.data_structure, options.triangulate.insertion, &input);
       options.triangulate.record = log.get();
     }
     mesh = re_refine ? refine_mesh(old, options, &report) : refine(std::move(input), options, &report);

@@ -14,6 +14,7 @@
 #include "meshstep/io/atomic_file.hpp"
 #include "meshstep/io/surface_io.hpp"
 #include "meshstep/scene/layout.hpp"
+#include "meshstep/scene/lift.hpp"
 #include "meshstep/scene/surface_view.hpp"
 #include "meshstep/scene/svg.hpp"
 #include "moment_scene.hpp"
@@ -142,15 +143,17 @@ int run_render(const RenderArgs& args) {
   const Verbosity verbosity = args.quiet ? Verbosity::quiet : Verbosity::normal;
   return with_picture_errors(" (an .svg picture needs no OpenGL)", [&] {
     const bool surface = is_surface(args.input);
-    if (!surface && (!args.orbit.empty() || !args.z_scale.empty()))
-      throw UsageError(std::string(args.orbit.empty() ? "--z-scale" : "--orbit") +
-                       " needs a 3D surface (.obj, .off, .ply or .stl); " + args.input + " is not one");
     if (surface) return render_surface(args, verbosity);
+    const bool in_3d = !args.orbit.empty() || !args.z_scale.empty();
     const DrawSettings draw = parse_draw_args(args.draw);
     if (!args.output.empty()) format_of(args.output);
     std::vector<std::string> warnings;
     SceneSource source = open_scene_source(args.input, &warnings);
     for (const std::string& w : warnings) print_warning(verbosity, w);
+    if (in_3d && !(source.kind == SourceKind::log && source.log->has_elevation()))
+      throw UsageError(std::string(args.orbit.empty() ? "--z-scale" : "--orbit") +
+                       " needs a 3D surface (.obj, .off, .ply or .stl) or a terrain's replay log (meshstep terrain "
+                       "--record); " + args.input + " is neither");
     if (source.kind != SourceKind::log && (args.step != -2 || args.event != -2))
       throw UsageError("--step and --event need a replay log; " + args.input + " is " +
                        (source.kind == SourceKind::mesh ? "a mesh" : "an input"));
@@ -163,6 +166,9 @@ int run_render(const RenderArgs& args) {
       const std::uint64_t position = position_of(args, *source.log);
       LogScenes scenes(*source.log, draw.scene);
       picture = scenes.at(position);
+      // A terrain's moment in 3D: the same step, lifted onto its surface (scene/lift.hpp).
+      if (in_3d)
+        picture = scene::lift_scene(picture, scene::mesh_point_heights(picture, *source.log), surface_view_of(args));
       moment = " at step " + std::to_string(scenes.cursor().completed_steps()) + " of " +
                std::to_string(source.log->step_count()) + " (event " + std::to_string(position) + ")";
     } else if (source.kind == SourceKind::mesh) {
@@ -209,9 +215,9 @@ Command add_render_command(CLI::App& parent) {
   cmd->add_option("--step", args->step, "The moment after K steps (0: before the first; -1: the end)");
   cmd->add_option("--event", args->event, "The moment after N events (-1: the end)");
   cmd->add_option("--orbit", args->orbit,
-                  "Surfaces: where the camera looks from, AZ,EL in degrees (azimuth from +x toward +y, "
+                  "Surfaces and terrain logs: where the camera looks from, AZ,EL in degrees (azimuth from +x toward +y, "
                   "elevation -90..90 above the xy plane; default -60,35; 90 looks straight down)");
-  cmd->add_option("--z-scale", args->z_scale, "Surfaces: heights multiplied by K > 0 before drawing (default 1)");
+  cmd->add_option("--z-scale", args->z_scale, "Surfaces and terrain logs: heights multiplied by K > 0 before drawing (default 1)");
   add_draw_options(cmd, args->draw);
   cmd->add_flag("-q,--quiet", args->quiet, "Print only errors");
   cmd->footer(

@@ -9,10 +9,12 @@
 #include "console.hpp"
 #include "json_line.hpp"
 #include "meshstep/error.hpp"
+#include "meshstep/io/shortest_text.hpp"
 #include "meshstep/io/surface_io.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/terrain/height_grid.hpp"
 #include "meshstep/terrain/tin.hpp"
+#include "record_option.hpp"
 #include "terrain_output.hpp"
 #include "terrain_tiles.hpp"
 
@@ -36,6 +38,7 @@ struct TerrainArgs {
   std::string stats;
   long long tile = -1;      // --tile N (-1: not given, the whole grid at once)
   std::string tile_index;   // --tile-index R,C
+  std::string record;       // --record LOG
   bool quiet = false;
   bool verbose = false;
 };
@@ -130,6 +133,10 @@ int run_terrain_in_tiles(const TerrainArgs& args, const terrain::TerrainAlgorith
   }
   if (args.base > 0.0) {
     print_error("--base closes one surface into a solid: it does not go with --tile (join the tiles first)");
+    return kExitUsage;
+  }
+  if (!args.record.empty()) {
+    print_error("--record records one run: it does not go with --tile (record one tile's grid on its own)");
     return kExitUsage;
   }
   const Verbosity verbosity =
@@ -228,6 +235,20 @@ int run_terrain(const TerrainArgs& args) {
     }
     print_progress(verbosity, "approximating a " + std::to_string(grid.nx) + " x " + std::to_string(grid.ny) +
                                   " grid with " + args.algorithm + ", largest error " + std::to_string(bound));
+    // The header says what a viewer needs to explain a step: the bound, the grid and its
+    // spacing (a step's sample is a grid index), the choices made.
+    std::unique_ptr<replay::LogWriter> log;
+    if (!args.record.empty()) {
+      log = open_log(args.record, args.grid, args.algorithm,
+                     "max_error=" + io::shortest_text(options.max_error) + " input_vertices=4" +
+                         " grid_columns=" + std::to_string(grid.nx) + " grid_rows=" + std::to_string(grid.ny) +
+                         " dx=" + io::shortest_text(grid.dx) + " dy=" + io::shortest_text(grid.dy) +
+                         " terminal=" + args.terminal + " improve=" + (options.improve ? "1" : "0") +
+                         " flips_3d=" + (options.flips_3d ? "1" : "0") +
+                         " max_triangles=" + std::to_string(options.max_triangles),
+                     options.data_structure, Insertion::flip, nullptr);
+      options.record = log.get();
+    }
     terrain::TerrainReport report;
     const terrain::Tin tin = terrain::approximate(grid, options, &report);
     clock.lap_ms();
@@ -246,6 +267,10 @@ int run_terrain(const TerrainArgs& args) {
       print_progress(verbosity, "writing " + args.output);
       write_terrain(args.output, format, grid, tin, args.base);
       write_ms = clock.lap_ms();
+    }
+    if (log) {
+      log->finish();
+      print_progress(verbosity, record_summary(*log));
     }
     const terrain::AngleStats angles = terrain::angle_stats_3d(grid, tin);
     if (verbosity != Verbosity::quiet) {
@@ -317,6 +342,7 @@ Command add_terrain_command(CLI::App& parent) {
                   "Print statistics; 'json': the last line of standard output is one JSON object\n"
                   "(vertices, triangles, max_error and rms_error over every sample, 3D angles)")
       ->check(CLI::IsMember({"json"}));
+  add_record_option(*cmd, args->record);
   cmd->add_option("--tile", args->tile,
                   "Approximate in tiles of N x N samples (with --max-error), neighbours sharing a\n"
                   "row or column of samples and their border vertices (no cracks): for grids\n"

@@ -69,7 +69,7 @@ int run_triangulate(const TriangulateArgs& args) {
                      "convex_hull=" + std::to_string(args.convex_hull) +
                          " input_vertices=" + std::to_string(input_vertices) +
                          " first_index=" + std::to_string(input.first_index),
-                     options.data_structure, options.insertion, input);
+                     options.data_structure, options.insertion, &input);
       options.record = log.get();
     }
     mesh = triangulate(std::move(input), options, &report);

@@ -22,10 +22,11 @@ inline void add_record_option(CLI::App& cmd, std::string& path) {
 // Opens the log for a run of `algorithm` on the file `input`, read as `pslg` (whose
 // regions, holes, markers and attributes the header keeps, so that a moment of the run can
 // be written as the run writes its output). Throws InputError.
+// pslg: null for an input that is not a PSLG (a height grid).
 inline std::unique_ptr<replay::LogWriter> open_log(const std::string& path, const std::string& input,
                                                    const std::string& algorithm,
                                                    const std::string& parameters,
-                                                   DataStructure ds, Insertion insertion, const Pslg& pslg) {
+                                                   DataStructure ds, Insertion insertion, const Pslg* pslg) {
   replay::LogHeader header;
   header.input = input;
   header.input_hash = replay::file_hash(input);
@@ -33,7 +34,7 @@ inline std::unique_ptr<replay::LogWriter> open_log(const std::string& path, cons
   header.parameters = parameters;
   header.data_structure = to_string(ds);
   header.insertion = to_string(insertion);
-  replay::describe_input(header, pslg);
+  if (pslg) replay::describe_input(header, *pslg);
   return std::make_unique<replay::LogWriter>(path, header);
 }
 

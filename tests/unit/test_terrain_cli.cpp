@@ -122,3 +122,48 @@ TEST(TerrainCli, TheTriangleCapWarnsAndStops) {
 
 }  // namespace
 }  // namespace meshstep
+
+namespace meshstep {
+namespace {
+
+// --record: the run goes into a replay log with heights; `log verify` replays it, and a
+// moment of it draws in 3D as SVG (no OpenGL needed). A planar run's log has no heights:
+// --orbit refuses it. --record does not go with --tile.
+TEST(TerrainCli, RecordsARunThatReplaysAndDrawsIn3D) {
+  TempDir dir;
+  const auto grid = write_hills(dir.path());
+  const std::string log = (dir.path() / "t.mslog").string();
+  auto r = run_meshstep("terrain " + grid.string() + " --max-error 0.5 -q --record " + log, dir.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = run_meshstep("log verify -q " + log, dir.path());
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  r = run_meshstep("log dump " + log, dir.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("criterion_test vertical_error failed"), std::string::npos);
+  EXPECT_NE(r.out.find("point_selected terminal_"), std::string::npos);
+  EXPECT_NE(r.out.find("elevation vertex="), std::string::npos);
+
+  const std::string svg = (dir.path() / "s.svg").string();
+  r = run_meshstep("render " + log + " --step 10 --orbit 30,40 --z-scale 2 -q -o " + svg, dir.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string text = testing::slurp(svg);
+  EXPECT_NE(text.find("3D 30\u00B0, 40\u00B0, heights \u00D72"), std::string::npos);
+  EXPECT_NE(text.find("vertical error"), std::string::npos);
+
+  const std::string poly = (dir.path() / "square.poly").string();
+  std::ofstream(poly) << "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n0 0\n0\n";
+  const std::string planar = (dir.path() / "p.mslog").string();
+  ASSERT_EQ(run_meshstep("triangulate " + poly + " -q --no-output --record " + planar, dir.path()).status, 0);
+  r = run_meshstep("render " + planar + " --orbit 30,40 -o " + (dir.path() / "p.svg").string(), dir.path());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("terrain's replay log"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "p.svg"));
+
+  r = run_meshstep("terrain " + grid.string() + " --max-error 0.5 --tile 10 --record " + log + ".tiles", dir.path());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--record"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(log + ".tiles"));
+}
+
+}  // namespace
+}  // namespace meshstep

@@ -7,14 +7,20 @@ namespace meshstep::replay {
 namespace {
 
 constexpr const char* kStepNames[] = {"start", "insert_vertex", "recover_segment", "carve",
-                                      "refine", "split_segment", "bisect", "remove_vertex"};
+                                      "refine", "split_segment", "bisect", "remove_vertex", "flip_3d"};
 constexpr const char* kPhaseNames[] = {"insert_vertices", "recover_segments", "carve", "refine",
                                        "improve"};
 constexpr const char* kLocateNames[] = {"in_face", "on_edge", "on_vertex"};
 constexpr const char* kSplitNames[] = {"insert", "crossing", "encroached", "bisection"};
-constexpr const char* kFlipNames[] = {"delaunay", "segment_recovery", "vertex_removal"};
+constexpr const char* kFlipNames[] = {"delaunay", "segment_recovery", "vertex_removal", "angles_3d"};
 constexpr const char* kRemoveNames[] = {"ghost", "hole", "outside"};
-constexpr const char* kCriterionNames[] = {"min_angle", "max_angle", "max_aspect", "max_area", "local_max_area", "size"};
+constexpr const char* kCriterionNames[] = {"min_angle", "max_angle", "max_aspect", "max_area", "local_max_area", "size",
+                                           "vertical_error"};
+// meshstep::Selection's, in its order (refine.hpp; the replay library does not see it, and
+// LogNames.SelectionCodesAreNamedInOrder holds the two together).
+constexpr const char* kSelectionNames[] = {"circumcenter", "offcenter", "lepp_midpoint", "lepp_centroid",
+                                           "longest_edge_midpoint"};
+constexpr const char* kSampleChoiceNames[] = {"worst_sample", "terminal_worst", "terminal_point", "own_worst"};
 
 static_assert(std::size(kStepNames) == static_cast<std::size_t>(StepKind::count_));
 static_assert(std::size(kPhaseNames) == static_cast<std::size_t>(Phase::count_));
@@ -40,6 +46,10 @@ const char* name(Phase phase) {
   const auto i = static_cast<std::size_t>(phase);
   return i < std::size(kPhaseNames) ? kPhaseNames[i] : "unknown";
 }
+const char* name(SampleChoice choice) {
+  const auto i = static_cast<std::size_t>(choice) - kFirstSampleChoice;
+  return i < std::size(kSampleChoiceNames) ? kSampleChoiceNames[i] : "unknown";
+}
 const char* name(Criterion criterion) {
   const auto i = static_cast<std::size_t>(criterion);
   return i < std::size(kCriterionNames) ? kCriterionNames[i] : "unknown";
@@ -59,6 +69,9 @@ std::string code_name(EventType type, std::uint8_t code) {
       const auto criterion = static_cast<std::uint8_t>(code & ~kCriterionPassed);
       return pick(kCriterionNames, criterion) + ((code & kCriterionPassed) ? " passed" : " failed");
     }
+    case EventType::point_selected:
+      if (code >= kFirstSampleChoice) return pick(kSampleChoiceNames, static_cast<std::uint8_t>(code - kFirstSampleChoice));
+      return pick(kSelectionNames, code);
     default: return std::to_string(code);
   }
 }

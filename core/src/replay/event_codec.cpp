@@ -397,7 +397,7 @@ FaceRecord Decoder::table_record() {
 void Decoder::event(DecodedEvents& out) {
   if (end_ - p_ < 2) throw FormatError("event data ends in the middle of an event");
   const std::uint8_t type = *p_++;
-  if (type >= kEventTypeCount)
+  if (type >= format::event_type_count(version_))
     throw FormatError("unknown event type " + std::to_string(type) + " (written by a newer meshstep?)");
   EventHead h{};
   h.type = static_cast<EventType>(type);

@@ -33,6 +33,8 @@
 #include <string>
 #include <vector>
 
+#include "meshstep/replay/event.hpp"
+
 namespace meshstep::replay::format {
 
 static_assert(std::endian::native == std::endian::little,
@@ -41,10 +43,16 @@ static_assert(std::endian::native == std::endian::little,
 inline constexpr char kFileMagic[8] = {'M', 'S', 'T', 'E', 'P', 'L', 'O', 'G'};
 // 2: split_face events packed like flips; keyframes in a layout of their own.
 // 3: locate events carry the faces of their walk (a list).
-inline constexpr std::uint32_t kFormatVersion = 3;
+// 4: terrains: elevation events, the vertical_error criterion, point_selected's sample choices.
+inline constexpr std::uint32_t kFormatVersion = 4;
 // The oldest version read: a version-2 log reads as one whose locate events have no list.
 inline constexpr std::uint32_t kOldestReadableVersion = 2;
 inline constexpr std::uint32_t kLocateWalkVersion = 3;  // the first whose locate events have one
+// The event types a file of format `version` can hold (its end block counts each): every
+// type before `elevation` until version 3.
+inline constexpr std::size_t event_type_count(std::uint32_t version) {
+  return version >= 4 ? kEventTypeCount : static_cast<std::size_t>(EventType::elevation);
+}
 inline constexpr std::uint32_t kBlockMagic = 0x4B42534Du;  // "MSBK"
 inline constexpr std::size_t kBlockHeaderSize = 56;
 inline constexpr std::size_t kMaxBlockPayload = std::size_t{1} << 30;

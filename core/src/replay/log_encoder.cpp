@@ -121,6 +121,9 @@ void LogEncoder::finish_event(const Event& e) {
 }
 
 void LogEncoder::count_event(EventType type) {
+  if (static_cast<std::size_t>(type) >= format::event_type_count(version_))
+    throw std::invalid_argument(std::string("a replay log of format ") + std::to_string(version_) + " cannot hold " +
+                                name(type) + " events");
   ++stats_.events;
   ++stats_.by_type[static_cast<std::size_t>(type)];
   if (type == EventType::step_begin) {
@@ -222,7 +225,7 @@ void LogEncoder::finish() {
   std::vector<std::uint8_t> summary;
   format::put_le(summary, stats_.events);
   format::put_le(summary, stats_.steps);
-  for (const std::uint64_t n : stats_.by_type) format::put_le(summary, n);
+  for (std::size_t t = 0; t < format::event_type_count(version_); ++t) format::put_le(summary, stats_.by_type[t]);
   format::BlockHeader h;
   h.kind = format::BlockKind::end;
   h.first_event = stats_.events;

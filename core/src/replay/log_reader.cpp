@@ -2,6 +2,7 @@
 #include "meshstep/replay/log_reader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -346,6 +347,16 @@ void LogReader::index_events(std::size_t block, const DecodedEvents& events) {
         info.input_index = h.ids[2];
       }
     }
+    if (h.type == EventType::elevation) {
+      const VertexId v = h.ids[0];
+      if (v >= vertices_.size() || vertices_[v].event == kNone || !std::isfinite(h.value))
+        throw InputError(path_, 0, where(block) + ": event " + std::to_string(e) + " gives vertex " +
+                                       std::to_string(v) + (v >= vertices_.size() || vertices_[v].event == kNone
+                                                                ? " a height before it is introduced"
+                                                                : " a height that is not a number") +
+                                       " (the file is corrupted)");
+      vertices_[v].z = h.value;
+    }
     if (h.type == EventType::remove_vertex) {
       const VertexId v = h.ids[0];
       if (v >= vertices_.size() || vertices_[v].removed != UINT64_MAX)
@@ -360,11 +371,12 @@ void LogReader::index_events(std::size_t block, const DecodedEvents& events) {
 void LogReader::read_end_block(const std::uint8_t* payload, std::size_t stored, std::size_t raw_size) {
   std::vector<std::uint8_t> raw;
   cache_->decompressor.decompress({payload, stored}, raw_size, raw);
-  if (raw.size() < 16 + 8 * kEventTypeCount) throw std::runtime_error("end block too short");
+  const std::size_t types = format::event_type_count(format_version_);
+  if (raw.size() < 16 + 8 * types) throw std::runtime_error("end block too short");
   const auto events = format::get_le<std::uint64_t>(raw.data());
   const auto steps = format::get_le<std::uint64_t>(raw.data() + 8);
   bool same = events == event_count_ && steps == step_starts_.size();
-  for (std::size_t t = 0; t < kEventTypeCount; ++t)
+  for (std::size_t t = 0; t < types; ++t)
     same = same && format::get_le<std::uint64_t>(raw.data() + 16 + 8 * t) == counts_[t];
   if (!same) throw std::runtime_error("the end block's counts do not match the events in the file");
 }

@@ -60,7 +60,8 @@ class OverlayPainter {
     if (story.in_step && story.kind == replay::StepKind::recover_segment) recovered_segment(story.subject);
     bisections(story);
     flips(story.flips);
-    if (story.selected) circumcircle(*story.selected);
+    // A terrain's bad triangle is bad by its error: its circumcircle explains nothing.
+    if (story.selected && story.selected->strategy < replay::kFirstSampleChoice) circumcircle(*story.selected);
     if (story.encroached) encroachment(*story.encroached);
     points(story);
   }
@@ -206,7 +207,11 @@ class OverlayPainter {
     if (!all_finite(sel.bad)) return;
     const auto c = corners(sel.bad);
     const double angle = quality::shape(c[0], c[1], c[2]).min_angle_deg();
-    faces("bad_triangle", "bad triangle (smallest angle " + degrees_text(angle) + ")", style_.bad,
+    const bool terrain = sel.strategy >= replay::kFirstSampleChoice;
+    faces("bad_triangle",
+          terrain ? std::string("worst triangle (largest vertical error)")
+                  : "bad triangle (smallest angle " + degrees_text(angle) + ")",
+          style_.bad,
           std::array<Triple, 1>{sel.bad}, false, 3.0f);
   }
 
@@ -357,7 +362,10 @@ class OverlayPainter {
       // circumcenter, the alternative is the off-center it did not take.
       const std::vector<Point>& others = story.selected->alternatives;
       if (!others.empty()) {
-        const char* other = story.selected->chose_circumcenter ? "off-center" : "circumcenter";
+        // A terrain's alternative is the terminal point its sample was rounded from.
+        const char* other = story.selected->strategy >= replay::kFirstSampleChoice ? "terminal point"
+                            : story.selected->chose_circumcenter                  ? "off-center"
+                                                                                  : "circumcenter";
         markers("alternative_points", std::string(other) + " (not chosen)", {style_.alternative.stroke, kHollow},
                 Marker::ring, px::small_point, others);
         scene_.shapes.back().width_px = 2.5f;

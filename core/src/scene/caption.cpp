@@ -53,7 +53,8 @@ const char* phase_of(StepKind kind) {
     case StepKind::refine:
     case StepKind::split_segment:
     case StepKind::bisect: return "refine";
-    case StepKind::remove_vertex: return "improve";
+    case StepKind::remove_vertex:
+    case StepKind::flip_3d: return "improve";
     default: return "run";
   }
 }
@@ -118,6 +119,7 @@ class CaptionWriter {
       case StepKind::split_segment: return split_segment();
       case StepKind::bisect: return bisect();
       case StepKind::remove_vertex: return remove_vertex();
+      case StepKind::flip_3d: return flip_3d();
       default: return "";
     }
   }
@@ -181,9 +183,19 @@ class CaptionWriter {
     const StepStory::Selected& s = *story_.selected;
     const double angle = smallest_angle(s.bad);
     const std::string name = chosen_point_name(s, story_.lepp);
-    const std::string of = std::isfinite(angle) ? " of " + with_article(degrees_text(angle)) + " triangle" : "";
+    // A terrain's triangle is bad by its vertical error, not by its shape.
+    const bool terrain = s.strategy >= replay::kFirstSampleChoice;
+    const std::string of = terrain && !story_.failed.empty() ? ": " + failed_text()
+                           : !terrain && std::isfinite(angle) ? " of " + with_article(degrees_text(angle)) + " triangle"
+                                                              : "";
     const bool inserted = !story_.inserted.empty();
+    if (terrain) return name + (inserted ? " inserted" : " selected") + of + lepp_text() + (inserted ? insertion_text() : "");
     return name + of + (inserted ? " inserted" : " selected") + lepp_text() + (inserted ? insertion_text() : "");
+  }
+
+  std::string flip_3d() const {
+    return "edge " + edge_name(story_.subject[0], story_.subject[1]) +
+           " flipped: the smallest 3D angle of its two triangles goes up";
   }
 
   std::string split_segment() const {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "meshstep/refine/quality.hpp"
 #include "meshstep/refine/refine.hpp"
@@ -129,6 +130,7 @@ class Explainer {
   void selection() {
     if (!story_.selected) return;
     const auto& s = *story_.selected;
+    if (s.strategy >= replay::kFirstSampleChoice) return sample_choice(s);
     std::string line = "chosen: the " + detail::chosen_point_name(s, story_.lepp) + " " + point_text(s.chosen);
     if (!s.alternatives.empty()) {
       line += "; also considered:";
@@ -145,6 +147,43 @@ class Explainer {
     else if (!s.chose_circumcenter && s.strategy == static_cast<std::uint8_t>(Selection::offcenter))
       add("the off-center: on the shortest edge's bisector, where the new triangle on that edge just meets the "
           "angle bound, nearer than the circumcenter (Üngör)");
+  }
+
+  // A terrain's step: which grid sample goes in, and why there.
+  void sample_choice(const StepStory::Selected& s) {
+    std::string line = "next sample: the " + detail::chosen_point_name(s, story_.lepp) + " " + point_text(s.chosen);
+    if (const std::optional<double> z = height_of_sample(s.chosen)) {
+      char height[48];
+      std::snprintf(height, sizeof height, ", height %.6g", *z);
+      line += height;
+    }
+    add(line);
+    switch (static_cast<replay::SampleChoice>(s.strategy)) {
+      case replay::SampleChoice::worst_sample:
+        add("greedy insertion (Garland-Heckbert): the sample farthest from the surface goes in");
+        break;
+      case replay::SampleChoice::terminal_worst:
+        add("a terminal triangle still misses the bound: its worst sample goes in, where the split keeps the "
+            "shapes");
+        break;
+      case replay::SampleChoice::terminal_point:
+        if (!s.alternatives.empty())
+          add("the terminal point " + point_text(s.alternatives[0]) +
+              " rounded to the nearest grid sample (the terminal triangles are within the bound)");
+        break;
+      case replay::SampleChoice::own_worst:
+        add("the sample nearest the terminal point is taken or has no data: the bad triangle's own worst instead");
+        break;
+      default: break;
+    }
+  }
+  // The height the run gave the vertex at p, once it is in.
+  std::optional<double> height_of_sample(const Point& p) const {
+    if (!cursor_.log().has_elevation()) return std::nullopt;
+    for (const VertexId v : story_.inserted)
+      if (v < cursor_.log().vertices().size() && cursor_.log().vertices()[v].point == p)
+        return cursor_.log().vertices()[v].z;
+    return std::nullopt;
   }
 
   void encroachment() {
@@ -231,16 +270,47 @@ class Explainer {
     double smallest = INFINITY, largest = 0.0;
     std::size_t n = 0;
     const auto& slots = cursor_.slots();
+    const bool terrain = cursor_.log().has_elevation();
     for (const FaceId s : story_.written) {
       if (s >= slots.size() || slots[s].dead() || slots[s].ghost()) continue;
-      const auto q = shape(slots[s].v);
+      const auto q = terrain ? angles_3d(slots[s].v) : planar_angles(slots[s].v);
       if (!q) continue;
       ++n;
-      smallest = std::min(smallest, q->min_angle_deg());
-      largest = std::max(largest, q->max_angle_deg());
+      smallest = std::min(smallest, (*q)[0]);
+      largest = std::max(largest, (*q)[1]);
     }
     if (n == 0) return;
-    add("new triangles: " + std::to_string(n) + ", angles from " + degrees(smallest) + " to " + degrees(largest));
+    add("new triangles: " + std::to_string(n) + (terrain ? ", 3D angles from " : ", angles from ") +
+        degrees(smallest) + " to " + degrees(largest));
+  }
+
+  std::optional<std::array<double, 2>> planar_angles(const Triple& t) const {
+    const auto q = shape(t);
+    if (!q) return std::nullopt;
+    return std::array<double, 2>{q->min_angle_deg(), q->max_angle_deg()};
+  }
+  // A terrain triangle's smallest and largest angle in 3D (its corners at their heights),
+  // in degrees, as the run's statistics measure them.
+  std::optional<std::array<double, 2>> angles_3d(const Triple& t) const {
+    const auto& vertices = cursor_.log().vertices();
+    std::array<std::array<double, 3>, 3> p{};
+    for (int k = 0; k < 3; ++k) {
+      if (t[k] >= vertices.size()) return std::nullopt;
+      const replay::VertexInfo& v = vertices[t[k]];
+      p[k] = {v.point.x, v.point.y, v.z};
+    }
+    double smallest = 180.0, largest = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const auto &o = p[k], &u = p[(k + 1) % 3], &w = p[(k + 2) % 3];
+      const double x[3] = {u[0] - o[0], u[1] - o[1], u[2] - o[2]}, y[3] = {w[0] - o[0], w[1] - o[1], w[2] - o[2]};
+      const double norms = std::sqrt((x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) * (y[0] * y[0] + y[1] * y[1] + y[2] * y[2]));
+      if (!(norms > 0.0)) return std::nullopt;
+      const double cosine = std::clamp((x[0] * y[0] + x[1] * y[1] + x[2] * y[2]) / norms, -1.0, 1.0);
+      const double angle = std::acos(cosine) * 180.0 / std::numbers::pi;
+      smallest = std::min(smallest, angle);
+      largest = std::max(largest, angle);
+    }
+    return std::array<double, 2>{smallest, largest};
   }
 
   const StepStory& story_;

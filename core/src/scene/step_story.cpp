@@ -170,7 +170,8 @@ StepStory read_step(const replay::Replay& cursor) {
       case EventType::point_selected:
         story.selected = StepStory::Selected{
             ev.code, {ev.ids[0], ev.ids[1], ev.ids[2]}, ev.point, {ev.points.begin(), ev.points.end()}, false};
-        story.selected->chose_circumcenter = is_circumcenter_of(log, story.selected->bad, ev.point, ev.points);
+        story.selected->chose_circumcenter = ev.code < replay::kFirstSampleChoice &&
+                                             is_circumcenter_of(log, story.selected->bad, ev.point, ev.points);
         break;
       case EventType::lepp_path: story.lepp = StepStory::Lepp{triples(ev.list), ev.ids[0], ev.ids[1], ev.ids[2]}; break;
       case EventType::encroached:
@@ -210,6 +211,17 @@ double encroachment_angle(const replay::LogReader& log) {
 }
 
 std::string chosen_point_name(const StepStory::Selected& selected, const std::optional<StepStory::Lepp>& lepp) {
+  if (selected.strategy >= replay::kFirstSampleChoice) {
+    switch (static_cast<replay::SampleChoice>(selected.strategy)) {
+      case replay::SampleChoice::worst_sample: return "sample of largest error";
+      case replay::SampleChoice::terminal_worst: return "terminal triangle's worst sample";
+      case replay::SampleChoice::terminal_point:
+        return lepp && lepp->terminal_triangles == 1 ? "sample nearest the terminal triangle's centroid"
+                                                     : "sample nearest the terminal point";
+      case replay::SampleChoice::own_worst: return "bad triangle's own worst sample";
+      default: return "sample";
+    }
+  }
   const auto strategy = static_cast<Selection>(selected.strategy);
   // Every strategy weighs its point against the circumcenter and records the circumcenter
   // as the alternative, unless it chose the circumcenter itself; the off-center selection
@@ -236,6 +248,7 @@ std::string criterion_text(const StepStory::Criterion& f, const replay::LogReade
                     : criterion == Criterion::max_aspect ? "max_aspect"
                     : criterion == Criterion::max_area   ? "max_area"
                     : criterion == Criterion::size       ? "size"
+                    : criterion == Criterion::vertical_error ? "max_error"
                                                          : nullptr;
   const std::string bound_text = key ? log.parameter(key) : "";
   char* end = nullptr;
@@ -260,6 +273,8 @@ std::string criterion_text(const StepStory::Criterion& f, const replay::LogReade
       return "area " + number(f.value) + (numeric ? " > " + printed("%g", bound) : " too large");
     case Criterion::local_max_area: return "area " + number(f.value) + " > the local bound";
     case Criterion::size: return "edge " + number(f.value) + (numeric ? " > " + printed("%g", bound) : " too long");
+    case Criterion::vertical_error:
+      return "vertical error " + number(f.value) + (numeric ? " > " + printed("%.3g", bound) : " too large");
     default: return "criterion " + std::to_string(f.criterion) + ": " + number(f.value);
   }
 }

@@ -9,6 +9,7 @@
 #include "meshstep/error.hpp"
 #include "meshstep/mesh/dcel.hpp"
 #include "meshstep/mesh/tds.hpp"
+#include "meshstep/replay/recorder.hpp"
 #include "tin_builder.hpp"
 
 namespace meshstep::terrain {
@@ -26,6 +27,18 @@ constexpr std::array kAlgorithms{
                          TerrainAlgorithm::greedy},
 };
 
+// The builder on the options' data structure, recording into options.record when set.
+template <TriangleMesh Mesh>
+Tin build_on(const HeightGrid& grid, const TerrainOptions& options, const BorderVertices* border, TerrainReport& r) {
+  if (!options.record) return detail::TinBuilder<Mesh>(grid, options, border).run(r);
+  return detail::TinBuilder<Mesh, replay::Recorder>(grid, options, border, replay::Recorder(*options.record)).run(r);
+}
+
+Tin build(const HeightGrid& grid, const TerrainOptions& options, const BorderVertices* border, TerrainReport& r) {
+  if (options.data_structure == DataStructure::dcel) return build_on<Dcel>(grid, options, border, r);
+  return build_on<Tds>(grid, options, border, r);
+}
+
 }  // namespace
 
 std::span<const TerrainAlgorithmInfo> terrain_algorithms() { return kAlgorithms; }
@@ -40,8 +53,7 @@ Tin approximate(const HeightGrid& grid, const TerrainOptions& options, TerrainRe
   if (!(options.max_error >= 0.0)) throw InputError("the largest error must be a number >= 0");
   TerrainReport local;
   TerrainReport& r = report ? *report : local;
-  if (options.data_structure == DataStructure::dcel) return detail::TinBuilder<Dcel>(grid, options).run(r);
-  return detail::TinBuilder<Tds>(grid, options).run(r);
+  return build(grid, options, nullptr, r);
 }
 
 namespace {
@@ -81,8 +93,7 @@ Tin approximate_within_border(const HeightGrid& grid, const BorderVertices& bord
   check_border(grid, border);
   TerrainReport local;
   TerrainReport& r = report ? *report : local;
-  if (options.data_structure == DataStructure::dcel) return detail::TinBuilder<Dcel>(grid, options, &border).run(r);
-  return detail::TinBuilder<Tds>(grid, options, &border).run(r);
+  return build(grid, options, &border, r);
 }
 
 std::array<double, 3> vertex_position(const HeightGrid& grid, const Tin& tin, std::uint32_t v) {

@@ -20,14 +20,20 @@
 
 namespace meshstep::terrain::detail {
 
-template <TriangleMesh Mesh>
+// Rec records the run into a replay log (replay/recorder.hpp): every insertion is a refine
+// step that names the worst triangle and its error (a vertical_error criterion_test), the
+// Lepp path, the sample chosen (point_selected, a SampleChoice) and its height (elevation);
+// every removal of the improvement and every 3D flip is a step of its own.
+template <TriangleMesh Mesh, class Rec = replay::NullRecorder>
 class TinBuilder {
  public:
   // Without `border`, the TIN starts from the grid's four corners; with it, from the given
   // border vertices (the four corners first: approximate_within_border checks them), and no
   // sample on the rectangle is ever searched or inserted.
-  TinBuilder(const HeightGrid& grid, const TerrainOptions& options, const BorderVertices* border = nullptr)
-      : grid_(grid), options_(options), border_(border), tri_(initial_points(grid, border), Insertion::flip),
+  TinBuilder(const HeightGrid& grid, const TerrainOptions& options, const BorderVertices* border = nullptr,
+             Rec recorder = {})
+      : grid_(grid), options_(options), border_(border),
+        tri_(initial_points(grid, border), Insertion::flip, std::move(recorder)),
         used_(grid.nx * grid.ny, false),
         window_(border ? SampleWindow{1, static_cast<std::int64_t>(grid.nx) - 2, 1, static_cast<std::int64_t>(grid.ny) - 2}
                        : kEverySample),
@@ -40,10 +46,12 @@ class TinBuilder {
       samples_.push_back(border_ ? border_->samples[v] : corner_sample(v));
       heights_.push_back(border_ ? border_->heights[v] : corner_height(v));
       used_[samples_.back()] = true;
+      rec().elevation(v, heights_.back());
     }
     for (FaceId f = 0; f < mesh().face_capacity(); ++f)
       if (mesh().is_live(f) && !tri_.is_ghost(f)) measure(f);
 
+    rec().phase_begin(replay::Phase::refine);
     while (true) {
       const Worst worst = pop_current();
       if (worst.face == kNone || worst.error <= options_.max_error) {
@@ -57,14 +65,18 @@ class TinBuilder {
       }
       // The next sample, and a triangle at or near it where the point location starts: the
       // samples go in all over the grid, and a walk from the last one would cross it.
-      Choice next{worst.sample, worst.face};
+      if constexpr (Rec::enabled) record_worst(worst);
+      Choice next{worst.sample, worst.face, replay::SampleChoice::worst_sample};
       if (options_.algorithm == TerrainAlgorithm::lepp_surface) next = lepp_sample(worst.face, report);
+      if constexpr (Rec::enabled) record_choice(worst.face, next);
       insert(next.sample, mesh().half_edge(next.near));
       if ((++report.insertions & 0xFFFF) == 0 && options_.progress) options_.progress(triangle_count(), worst.error);
     }
+    rec().phase_end(replay::Phase::refine);
     const double bound = std::max(options_.max_error, report.worst_error);
     if (options_.improve && !report.capped) report.removed = remove_vertices(bound);
     if (options_.flips_3d) report.flips_3d = improve_by_3d_flips(bound);
+    rec().run_end(mesh());
     Tin tin = result();
     report.vertices = tin.samples.size();
     report.triangles = tin.triangles.size();
@@ -82,6 +94,14 @@ class TinBuilder {
     std::uint32_t sample;
   };
 
+  // The next sample to insert, why, and a triangle that holds it or one near it (where the
+  // point location starts).
+  struct Choice {
+    std::uint32_t sample;
+    FaceId near;
+    replay::SampleChoice choice;
+  };
+
   // A queue entry: a triangle's largest error and the sample where it is. 16 bytes: the
   // queue's sifts are a good part of a run. An entry is current while its face is live and
   // still has that worst (pop_current): a face remeasured to the same error at the same
@@ -97,6 +117,29 @@ class TinBuilder {
   };
 
   const Mesh& mesh() const { return tri_.mesh(); }
+  Rec& rec() { return tri_.recorder(); }
+
+  // The step's opening: the worst triangle, and how far it misses the bound.
+  void record_worst(const Worst& worst) {
+    const HalfEdge h = mesh().half_edge(worst.face);
+    const VertexId a = mesh().origin(h), b = mesh().dest(h), c = mesh().apex(h);
+    rec().step_begin(mesh(), replay::StepKind::refine);
+    rec().criterion_test(replay::Criterion::vertical_error, false, a, b, c, worst.error);
+  }
+  // The sample chosen for the worst triangle f: where it goes, and (nearest a terminal
+  // point) the point it stands for.
+  void record_choice(FaceId f, const Choice& next) {
+    const HalfEdge h = mesh().half_edge(f);
+    const Point at = sample_point(next.sample);
+    const std::span<const Point> alternatives =
+        next.choice == replay::SampleChoice::terminal_point ? std::span<const Point>(&terminal_point_, 1)
+                                                            : std::span<const Point>();
+    rec().point_selected(static_cast<std::uint8_t>(next.choice), mesh().origin(h), mesh().dest(h), mesh().apex(h), at,
+                         alternatives);
+  }
+  Point sample_point(std::uint32_t s) const {
+    return {static_cast<double>(s % grid_.nx) * grid_.dx, static_cast<double>(s / grid_.nx) * grid_.dy};
+  }
 
   static std::vector<Point> corners(const HeightGrid& g) {
     if (g.nx < 2 || g.ny < 2) throw InputError("a terrain needs a grid of at least 2 x 2 samples");
@@ -202,7 +245,9 @@ class TinBuilder {
     samples_.push_back(sample);
     heights_.push_back(grid_.z[sample]);
     const VertexId v = tri_.add_point({static_cast<double>(i) * grid_.dx, static_cast<double>(j) * grid_.dy});
-    const HalfEdge out = tri_.insert(v, hint);
+    // Recorded, the step is open already (record_worst); else insert() opens its own.
+    const HalfEdge out = Rec::enabled ? tri_.insert_in_step(v, hint) : tri_.insert(v, hint);
+    rec().elevation(v, heights_.back());
     // Delaunay insertion changes exactly the triangles round the new vertex.
     HalfEdge h = out;
     do {
@@ -257,7 +302,9 @@ class TinBuilder {
       if (!(after > before * (1 + 1e-9))) continue;
       const double error_before = std::max(worst_[f].error, worst_[g].error);
       if (std::max(scan_worst(a, d, c).error, scan_worst(d, b, c).error) > std::max(bound, error_before)) continue;
-      const HalfEdge n = tri_.flip(h, replay::FlipReason::delaunay);
+      if (flips == 0) rec().phase_begin(replay::Phase::improve);
+      rec().step_begin(mesh(), replay::StepKind::flip_3d, a, b);
+      const HalfEdge n = tri_.flip(h, replay::FlipReason::angles_3d);
       ++flips;
       for (const HalfEdge e : {n, mesh().twin(n)}) {
         measure(mesh().face(e));
@@ -265,6 +312,7 @@ class TinBuilder {
         stack.push_back(mesh().prev(e));
       }
     }
+    if (flips > 0) rec().phase_end(replay::Phase::improve);
     return flips;
   }
 
@@ -276,9 +324,10 @@ class TinBuilder {
   // how many went. On the corpus at 1% and 0.5% it takes lepp-surface from 1.04-1.14 times
   // greedy's triangles to 0.96-1.03, and its share under 20 degrees down by a third.
   std::size_t remove_vertices(double bound) {
-    VertexRemover<Mesh, replay::NullRecorder> remover(tri_);
+    VertexRemover<Mesh, Rec> remover(tri_);
     removed_.assign(samples_.size(), false);
     std::size_t removed = 0;
+    rec().phase_begin(replay::Phase::improve);
     for (int round = 0; round < 3; ++round) {
       const std::size_t before = removed;
       for (VertexId v = static_cast<VertexId>(hull_vertices_); v < samples_.size(); ++v) {
@@ -286,6 +335,7 @@ class TinBuilder {
         const HalfEdge out = mesh().vertex_half_edge(v);
         if (out == kNone || !remover.plan(out) || !removal_keeps_the_bounds(remover, bound)) continue;
         made_.assign(remover.new_triangles().begin(), remover.new_triangles().end());
+        rec().step_begin(mesh(), replay::StepKind::remove_vertex, v);
         remover.apply();
         removed_[v] = true;
         ++removed;
@@ -294,12 +344,13 @@ class TinBuilder {
       }
       if (removed == before) break;
     }
+    rec().phase_end(replay::Phase::improve);
     return removed;
   }
 
   // Whether the planned removal keeps every sample of its new triangles within `bound` and
   // the smallest 3D angle round the vertex where it was or higher.
-  bool removal_keeps_the_bounds(VertexRemover<Mesh, replay::NullRecorder>& remover, double bound) {
+  bool removal_keeps_the_bounds(VertexRemover<Mesh, Rec>& remover, double bound) {
     double old_smallest = 4.0, new_smallest = 4.0;  // radians
     for (const auto& t : remover.old_triangles()) old_smallest = std::min(old_smallest, smallest_angle_3d(t[0], t[1], t[2]));
     for (const auto& t : remover.new_triangles()) {
@@ -339,35 +390,43 @@ class TinBuilder {
   // greedy, but where the split keeps the shapes); else the sample nearest the terminal
   // point (shape-driven, as the paper). f's own worst sample when that one is already a
   // vertex or has no data.
-  struct Choice {
-    std::uint32_t sample;
-    FaceId near;  // a triangle that holds the sample, or one near it
-  };
-  Choice lepp_sample(FaceId f, TerrainReport& report) const {
+  Choice lepp_sample(FaceId f, TerrainReport& report) {
     const HalfEdge e = terminal_edge(f);
     const FaceId near = mesh().face(e), far = mesh().face(mesh().twin(e));
+    if constexpr (Rec::enabled) {
+      lepp_vertices_.clear();
+      for (const FaceId g : lepp_faces_) {
+        const HalfEdge h = mesh().half_edge(g);
+        lepp_vertices_.insert(lepp_vertices_.end(), {mesh().origin(h), mesh().dest(h), mesh().apex(h)});
+      }
+      rec().lepp_path(mesh().origin(e), mesh().dest(e), tri_.is_ghost(far) ? 1 : 2, lepp_vertices_);
+    }
     const FaceWorst& worst =
         tri_.is_ghost(far) || worst_[near].error >= worst_[far].error ? worst_[near] : worst_[far];
     if (worst.error > options_.max_error) {
       ++report.terminal_worst;
-      return {worst.sample, &worst == &worst_[near] ? near : far};
+      return {worst.sample, &worst == &worst_[near] ? near : far, replay::SampleChoice::terminal_worst};
     }
     const auto p = terminal_point(e);
+    terminal_point_ = {p[0], p[1]};
     const double fi = std::round(p[0] / grid_.dx), fj = std::round(p[1] / grid_.dy);
     const std::size_t i = static_cast<std::size_t>(std::clamp(fi, 0.0, static_cast<double>(grid_.nx - 1)));
     const std::size_t j = static_cast<std::size_t>(std::clamp(fj, 0.0, static_cast<double>(grid_.ny - 1)));
     const std::uint32_t s = static_cast<std::uint32_t>(i + j * grid_.nx);
-    if (used_[s] || !grid_.has_data(i, j) || !in_window(i, j)) return {worst_[f].sample, f};
+    if (used_[s] || !grid_.has_data(i, j) || !in_window(i, j)) return {worst_[f].sample, f, replay::SampleChoice::own_worst};
     ++report.terminal_points;
-    return {s, near};
+    return {s, near, replay::SampleChoice::terminal_point};
   }
 
-  HalfEdge terminal_edge(FaceId f) const {
+  // The terminal edge of f's Lepp; recorded, the path's faces are kept in lepp_faces_.
+  HalfEdge terminal_edge(FaceId f) {
     HalfEdge e = longest_edge(mesh().half_edge(f));
+    if constexpr (Rec::enabled) lepp_faces_.assign(1, f);
     while (true) {
       const HalfEdge across = mesh().twin(e);
       const FaceId g = mesh().face(across);
       if (tri_.is_ghost(g)) return e;  // a border edge: one terminal triangle
+      if constexpr (Rec::enabled) lepp_faces_.push_back(g);
       const HalfEdge longest = longest_edge(mesh().half_edge(g));
       if (longest == across) return e;  // the two share their longest edge
       e = longest;
@@ -436,7 +495,7 @@ class TinBuilder {
   const HeightGrid& grid_;
   const TerrainOptions& options_;
   const BorderVertices* border_;         // null: the four corners start the TIN
-  Triangulation<Mesh> tri_;
+  Triangulation<Mesh, Rec> tri_;
   std::vector<bool> used_;               // by sample: already a vertex
   std::vector<bool> removed_;            // by vertex: removed by the improvement (empty: none)
   std::vector<std::array<VertexId, 3>> made_;  // the triangles a removal makes
@@ -447,6 +506,10 @@ class TinBuilder {
   std::vector<FaceWorst> worst_;         // by face
   std::priority_queue<Worst> queue_;
   std::size_t border_vertices_ = 0;     // inserted on the grid's border (never with border_)
+  // Recording only: the Lepp path's faces and their vertices, and the terminal point.
+  std::vector<FaceId> lepp_faces_;
+  std::vector<VertexId> lepp_vertices_;
+  Point terminal_point_{0, 0};
 };
 
 }  // namespace meshstep::terrain::detail

@@ -47,6 +47,7 @@ enum class EventType : std::uint8_t {
   lepp_path,       // ids: terminal edge, number of terminal triangles; list: triangles (3 ids each)
   encroached,      // ids: segment endpoints, encroaching vertex (or kNone); point: encroaching point
   criterion_test,  // code: Criterion | kCriterionPassed; ids: triangle; value: what was measured
+  elevation,       // a vertex's height (terrains, format 4); ids: vertex; value: the height
   count_
 };
 inline constexpr std::size_t kEventTypeCount = static_cast<std::size_t>(EventType::count_);
@@ -60,6 +61,7 @@ enum class StepKind : std::uint8_t {
   split_segment,
   bisect,
   remove_vertex,
+  flip_3d,          // terrains: an edge flipped for the 3D angles of its two triangles; ids: its ends
   count_
 };
 
@@ -67,7 +69,8 @@ enum class Phase : std::uint8_t { insert_vertices, recover_segments, carve, refi
 enum class LocateResult : std::uint8_t { in_face, on_edge, on_vertex, count_ };
 enum class SplitReason : std::uint8_t { insert, crossing, encroached, bisection, count_ };
 // vertex_removal: a flip that lowers a vertex's degree on the way to removing it.
-enum class FlipReason : std::uint8_t { delaunay, segment_recovery, vertex_removal, count_ };
+// angles_3d: a terrain's edge flipped to raise the smallest 3D angle of its two triangles.
+enum class FlipReason : std::uint8_t { delaunay, segment_recovery, vertex_removal, angles_3d, count_ };
 enum class RemoveReason : std::uint8_t { ghost, hole, outside, count_ };
 
 // The bound a criterion_test weighed a triangle against, and what its value measured, in
@@ -80,6 +83,8 @@ enum class Criterion : std::uint8_t {
   local_max_area,  // the area, against the bound where the triangle lies: its region's
                    // (regional attributes) or the old mesh's triangle's (re-refinement)
   size,            // the longest edge, against the size function at the centroid (size)
+  vertical_error,  // terrains: the largest vertical error of the samples the triangle covers,
+                   // in height units (max_error; format 4)
   count_
 };
 // Set in a criterion_test's code when the triangle met the bound.
@@ -94,6 +99,18 @@ constexpr int length_power(Criterion c) {
     default: return 0;
   }
 }
+
+// A terrain run's point_selected code: which grid sample goes in next. Codes from 16 on,
+// apart from the refinement's (meshstep::Selection) that share the event.
+enum class SampleChoice : std::uint8_t {
+  worst_sample = 16,  // greedy: the sample of largest error (the bad triangle's worst)
+  terminal_worst,     // Lepp-surface: the worst sample of a terminal triangle that misses the bound
+  terminal_point,     // Lepp-surface: the sample nearest the terminal point (alternatives: the point)
+  own_worst,          // Lepp-surface: the bad triangle's own worst, when the terminal point's
+                      // sample was taken already, has no data or is on a tile's border
+};
+inline constexpr std::uint8_t kFirstSampleChoice = 16;
+const char* name(SampleChoice choice);
 
 // What one face slot holds: the triangle (counterclockwise, as the data structure stores
 // it) and a constraint flag per edge (bit i: the edge from v[i] to v[(i+1)%3]). A dead slot
@@ -167,6 +184,7 @@ inline constexpr EventSchema kSchemas[kEventTypeCount] = {
     {"lepp_path", 3, {V, V, K::count}, {"a", "b", "terminal_triangles"}, false, false, true, false, false},
     {"encroached", 3, {V, V, V}, {"a", "b", "vertex"}, true, false, false, false, false},
     {"criterion_test", 3, {V, V, V}, {"a", "b", "c"}, false, true, false, false, false},
+    {"elevation", 1, {V}, {"vertex"}, false, true, false, false, false},
 };
 
 }  // namespace detail

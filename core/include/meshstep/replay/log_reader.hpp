@@ -49,6 +49,7 @@ struct VertexInfo {
   std::uint64_t event = 0;            // the event that introduced it
   VertexId same_as = kNone;           // for a duplicate: the vertex standing for it
   std::uint64_t removed = UINT64_MAX;  // the event that removed it (remove_vertex), if any
+  double z = 0.0;                      // its height (elevation event; 0 in a planar run)
 };
 
 class LogReader {
@@ -112,6 +113,8 @@ class LogReader {
 
   // Every vertex the run introduced, by vertex id (ids never used have event == kNone).
   const std::vector<VertexInfo>& vertices() const { return vertices_; }
+  // A terrain's log: its vertices have heights (elevation events), and it can be seen in 3D.
+  bool has_elevation() const { return counts_[static_cast<std::size_t>(EventType::elevation)] > 0; }
   // The final mesh hash from the end block (complete logs only).
   std::uint64_t final_hash() const { return final_hash_; }
 

@@ -115,6 +115,7 @@ struct NullRecorder {
   void point_selected(std::uint8_t, VertexId, VertexId, VertexId, const Point&, std::span<const Point>) {}
   void encroached(VertexId, VertexId, VertexId, const Point&) {}
   void lepp_path(VertexId, VertexId, std::uint32_t, std::span<const VertexId>) {}
+  void elevation(VertexId, double) {}
 };
 
 class Recorder {
@@ -322,6 +323,13 @@ class Recorder {
     ids(a, b, terminal_triangles);
     sink_->put(static_cast<std::uint32_t>(triangles.size()));
     for (const VertexId v : triangles) sink_->put(v);
+    end_event();
+  }
+  // Terrains: vertex v stands at height z (after its vertex event; heights are not scaled).
+  void elevation(VertexId v, double z) {
+    begin(EventType::elevation, 0);
+    ids(v);
+    sink_->put(z);
     end_event();
   }
   // Segment a-b is encroached by vertex v (kNone: by a point not inserted, p).

@@ -54,7 +54,10 @@ struct TerrainOptions {
   bool flips_3d = false;
   // Called now and then (about every 2^16 insertions) with the triangles so far and the
   // current largest error, for progress lines.
-  std::function<void(std::size_t triangles, double worst_error)> progress;
+  std::function<void(std::size_t triangles, double worst_error)> progress = nullptr;
+  // Record every step into this replay log (replay/log_writer.hpp), heights included
+  // (elevation events); null: not recorded.
+  replay::EventSink* record = nullptr;
 };
 
 struct TerrainReport {
