@@ -18,6 +18,7 @@
 #include "meshstep/scene/surface_view.hpp"
 #include "meshstep/scene/svg.hpp"
 #include "moment_scene.hpp"
+#include "orbit_options.hpp"
 #include "output_prefix.hpp"
 #include "painter.hpp"
 #include "scene_source.hpp"
@@ -31,8 +32,7 @@ struct RenderArgs {
   std::int64_t step = -2;   // -2: not given
   std::int64_t event = -2;
   DrawArgs draw;
-  std::string orbit;    // "AZ,EL" in degrees; empty: not given
-  std::string z_scale;  // empty: not given
+  OrbitArgs orbit;
   bool quiet = false;
 };
 
@@ -50,37 +50,6 @@ std::string default_output(const SceneSource& source) {
 
 // A surface in 3D: the input's extension is that of a surface format (.obj .off .ply .stl).
 bool is_surface(const std::string& path) { return io::surface_format_for(path).has_value(); }
-
-// A whole string as a finite number, or nullopt.
-std::optional<double> number_of(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
-
-// The 3D camera the options ask for, checked.
-scene::SurfaceView surface_view_of(const RenderArgs& args) {
-  scene::SurfaceView view;
-  if (!args.orbit.empty()) {
-    const std::size_t comma = args.orbit.find(',');
-    const std::optional<double> az = comma == std::string::npos ? std::nullopt : number_of(args.orbit.substr(0, comma));
-    const std::optional<double> el = comma == std::string::npos ? std::nullopt : number_of(args.orbit.substr(comma + 1));
-    if (!az || !el)
-      throw UsageError("--orbit " + args.orbit + ": expected two numbers AZ,EL (azimuth and elevation in degrees)");
-    if (*el < -90.0 || *el > 90.0)
-      throw UsageError("--orbit " + args.orbit + ": the elevation must be from -90 to 90 degrees");
-    view.azimuth_deg = *az;
-    view.elevation_deg = *el;
-  }
-  if (!args.z_scale.empty()) {
-    const std::optional<double> k = number_of(args.z_scale);
-    if (!k || !(*k > 0.0)) throw UsageError("--z-scale " + args.z_scale + ": expected a number > 0");
-    view.z_scale = *k;
-  }
-  return view;
-}
 
 // The replay position the options ask for, checked against the run.
 std::uint64_t position_of(const RenderArgs& args, const replay::LogReader& log) {
@@ -124,7 +93,7 @@ int render_surface(const RenderArgs& args, Verbosity verbosity) {
   draw_args.color_by = "none";
   const DrawSettings draw = parse_draw_args(draw_args);
   if (args.step != -2 || args.event != -2) throw UsageError("--step and --event need a replay log; " + args.input + " is a surface");
-  const scene::SurfaceView view = surface_view_of(args);
+  const scene::SurfaceView view = surface_view_of(args.orbit);
   const std::string output = args.output.empty() ? strip_extension(args.input) + ".png" : args.output;
   format_of(output);
 
@@ -144,14 +113,14 @@ int run_render(const RenderArgs& args) {
   return with_picture_errors(" (an .svg picture needs no OpenGL)", [&] {
     const bool surface = is_surface(args.input);
     if (surface) return render_surface(args, verbosity);
-    const bool in_3d = !args.orbit.empty() || !args.z_scale.empty();
+    const bool in_3d = args.orbit.given();
     const DrawSettings draw = parse_draw_args(args.draw);
     if (!args.output.empty()) format_of(args.output);
     std::vector<std::string> warnings;
     SceneSource source = open_scene_source(args.input, &warnings);
     for (const std::string& w : warnings) print_warning(verbosity, w);
     if (in_3d && !(source.kind == SourceKind::log && source.log->has_elevation()))
-      throw UsageError(std::string(args.orbit.empty() ? "--z-scale" : "--orbit") +
+      throw UsageError(args.orbit.name() +
                        " needs a 3D surface (.obj, .off, .ply or .stl) or a terrain's replay log (meshstep terrain "
                        "--record); " + args.input + " is neither");
     if (source.kind != SourceKind::log && (args.step != -2 || args.event != -2))
@@ -164,11 +133,12 @@ int run_render(const RenderArgs& args) {
     std::string moment;
     if (source.kind == SourceKind::log) {
       const std::uint64_t position = position_of(args, *source.log);
-      LogScenes scenes(*source.log, draw.scene);
-      picture = scenes.at(position);
+      scene::SceneOptions scene_options = draw.scene;
+      // A surface seen at a slant packs its vertices closer: a quarter as many markers.
+      if (in_3d) scene_options.max_vertex_markers /= 4;
+      LogScenes scenes(*source.log, scene_options);
       // A terrain's moment in 3D: the same step, lifted onto its surface (scene/lift.hpp).
-      if (in_3d)
-        picture = scene::lift_scene(picture, scene::mesh_point_heights(picture, *source.log), surface_view_of(args));
+      picture = in_3d ? scenes.at(position, surface_view_of(args.orbit)) : scenes.at(position);
       moment = " at step " + std::to_string(scenes.cursor().completed_steps()) + " of " +
                std::to_string(source.log->step_count()) + " (event " + std::to_string(position) + ")";
     } else if (source.kind == SourceKind::mesh) {
@@ -207,17 +177,16 @@ Command add_render_command(CLI::App& parent) {
       "  a mesh PREFIX (PREFIX.node + PREFIX.ele);\n"
       "  an input .poly or .node, before triangulation;\n"
       "  a triangle surface .obj, .off, .ply or .stl (a terrain TIN, say) in 3D: an orbit camera\n"
-      "    (parallel projection), lit faces coloured by height, a wireframe (--orbit, --z-scale).");
+      "    (parallel projection), lit faces coloured by height, a wireframe (--orbit, --z-scale);\n"
+      "  a terrain run's log (meshstep terrain --record) in 3D as well, with --orbit or --z-scale:\n"
+      "    the step's overlays (the worst triangle, its Lepp path, the next sample) on the surface.");
   cmd->add_option("INPUT", args->input, "Replay log, mesh prefix, .poly/.node input, or .obj/.off/.ply/.stl surface")
       ->required();
   cmd->add_option("-o,--output", args->output,
                   "OUT.png or OUT.svg (default: INPUT without its extension, plus .png)");
   cmd->add_option("--step", args->step, "The moment after K steps (0: before the first; -1: the end)");
   cmd->add_option("--event", args->event, "The moment after N events (-1: the end)");
-  cmd->add_option("--orbit", args->orbit,
-                  "Surfaces and terrain logs: where the camera looks from, AZ,EL in degrees (azimuth from +x toward +y, "
-                  "elevation -90..90 above the xy plane; default -60,35; 90 looks straight down)");
-  cmd->add_option("--z-scale", args->z_scale, "Surfaces and terrain logs: heights multiplied by K > 0 before drawing (default 1)");
+  add_orbit_options(*cmd, args->orbit, "Surfaces and terrain logs");
   add_draw_options(cmd, args->draw);
   cmd->add_flag("-q,--quiet", args->quiet, "Print only errors");
   cmd->footer(

@@ -5,6 +5,7 @@
 #include "draw_options.hpp"
 #include "meshstep/replay/replay.hpp"
 #include "meshstep/scene/build.hpp"
+#include "meshstep/scene/lift.hpp"
 #include "scene_source.hpp"
 
 namespace meshstep::app {
@@ -21,6 +22,11 @@ class LogScenes {
     ages_.update(cursor_);
     return scene::build_scene(cursor_, options_, &ages_);
   }
+  // The same moment of a terrain's run in 3D (scene/lift.hpp).
+  scene::Scene at(std::uint64_t position, const scene::SurfaceView& view) {
+    const scene::Scene planar = at(position);
+    return scene::lift_scene(planar, scene::mesh_point_heights(planar, cursor_.log()), view);
+  }
   const replay::Replay& cursor() const { return cursor_; }
 
  private:
@@ -34,6 +40,38 @@ inline BBox run_bounds(const replay::LogReader& log) {
   BBox box;
   for (const replay::VertexInfo& v : log.vertices())
     if (v.event != kNone) box.add(v.point);
+  return box;
+}
+
+// Every point of a terrain's run, and the range of its heights.
+struct RunBox3d {
+  BBox plan;
+  double low, high;
+};
+inline RunBox3d run_box_3d(const replay::LogReader& log) {
+  RunBox3d box{run_bounds(log), INFINITY, -INFINITY};
+  for (const replay::VertexInfo& v : log.vertices())
+    if (v.event != kNone) box.low = std::min(box.low, v.z), box.high = std::max(box.high, v.z);
+  return box;
+}
+
+// The middle of a terrain's run: a spinning camera turns about it.
+inline Point3 run_pivot(const replay::LogReader& log) {
+  const RunBox3d box = run_box_3d(log);
+  if (box.plan.empty() || !(box.low <= box.high)) return {0.0, 0.0, 0.0};
+  return {(box.plan.lo.x + box.plan.hi.x) / 2, (box.plan.lo.y + box.plan.hi.y) / 2, (box.low + box.high) / 2};
+}
+
+// The box a 3D animation keeps still: every point of the run, at every height it reaches,
+// as each of the views sees it.
+inline BBox run_bounds_3d(const replay::LogReader& log, std::span<const scene::SurfaceView> views) {
+  const auto [plan, low, high] = run_box_3d(log);
+  BBox box;
+  if (plan.empty() || !(low <= high)) return box;
+  for (const scene::SurfaceView& view : views)
+    for (const double x : {plan.lo.x, plan.hi.x})
+      for (const double y : {plan.lo.y, plan.hi.y})
+        for (const double z : {low, high}) box.add(scene::project({x, y}, z, view));
   return box;
 }
 

@@ -4,7 +4,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -42,6 +44,33 @@ const replay::LogReader* lesson_run(const std::string& arguments) {
   const std::string log = (run_folder() / ("run" + std::to_string(runs.size()) + ".mslog")).string();
   const std::string command = std::string(MESHSTEP_BINARY) + " refine " + asset("lesson.poly") + " " + arguments +
                               " --record " + log + " --no-output -q";
+  const int status = std::system(command.c_str());
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    ADD_FAILURE() << "recording failed: " << command;
+    return nullptr;
+  }
+  return runs.emplace(arguments, std::make_unique<replay::LogReader>(log)).first->second.get();
+}
+
+const replay::LogReader* terrain_run(const std::string& arguments) {
+  static std::map<std::string, std::unique_ptr<replay::LogReader>> runs;
+  static FolderCleanup cleanup;
+  if (auto found = runs.find(arguments); found != runs.end()) return found->second.get();
+  const fs::path grid = run_folder() / "hills.asc";
+  if (!fs::exists(grid)) {
+    std::ofstream out(grid);
+    out << "ncols 33\nnrows 25\nxllcorner 0\nyllcorner 0\ncellsize 10\n";
+    for (int row = 0; row < 25; ++row) {
+      for (int i = 0; i < 33; ++i) {
+        const double x = i - 20.0, y = row - 12.0, r = std::hypot(x, y);
+        out << 40.0 + 30.0 * std::exp(-(r - 5.0) * (r - 5.0) / 8.0) + 6.0 * std::sin(0.35 * i) << ' ';
+      }
+      out << '\n';
+    }
+  }
+  const std::string log = (run_folder() / ("terrain" + std::to_string(runs.size()) + ".mslog")).string();
+  const std::string command =
+      std::string(MESHSTEP_BINARY) + " terrain " + grid.string() + " " + arguments + " --record " + log + " -q";
   const int status = std::system(command.c_str());
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     ADD_FAILURE() << "recording failed: " << command;

@@ -13,6 +13,10 @@ namespace meshstep::golden {
 // Fails the test (and returns nullptr) when the run fails.
 const replay::LogReader* lesson_run(const std::string& arguments);
 
+// The log of `meshstep terrain GRID ARGUMENTS --record LOG` on a grid of smooth hills and a
+// crater (33 x 25 samples, 10 m apart) that the tests write (recorded on first use).
+const replay::LogReader* terrain_run(const std::string& arguments);
+
 std::string asset(const std::string& name);
 
 }  // namespace meshstep::golden

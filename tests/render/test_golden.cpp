@@ -21,6 +21,7 @@
 #include <functional>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,7 @@
 #include "meshstep/scene/build.hpp"
 #include "meshstep/scene/image.hpp"
 #include "meshstep/scene/layout.hpp"
+#include "meshstep/scene/lift.hpp"
 #include "meshstep/scene/surface_view.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
@@ -444,6 +446,67 @@ std::optional<Scene> surface_hill_case() {
   return s;
 }
 
+// A terrain run's step in 3D: the worst triangle, its Lepp path and the sample that goes
+// in next, lifted onto the surface (scene/lift.hpp), the camera turning about the middle.
+std::optional<Scene> terrain_step_3d_case() {
+  const replay::LogReader* log = golden::terrain_run("--max-error 1 --algorithm lepp-surface");
+  if (!log) return std::nullopt;
+  // The first refine step whose Lepp path has three triangles or more.
+  std::optional<std::uint64_t> step;
+  for (std::uint64_t k = 0; k < log->step_count() && !step; ++k)
+    for (std::uint64_t e = log->step_start(k); e < log->step_start(k + 1); ++e) {
+      const Event ev = log->event(e);
+      if (ev.type == EventType::lepp_path && ev.list.size() >= 9 && log->step_start(k) > 40) {
+        step = k;
+        break;
+      }
+    }
+  if (!step) {
+    ADD_FAILURE() << "no step with a Lepp path of three triangles";
+    return std::nullopt;
+  }
+  replay::Replay cursor(*log);
+  cursor.seek_step(*step + 1);
+  const Scene planar = scene::build_scene(cursor, scene::SceneOptions{});
+  scene::SurfaceView view;
+  view.azimuth_deg = -70.0;
+  view.elevation_deg = 40.0;
+  view.z_scale = 2.0;
+  view.pivot = {160.0, 120.0, 50.0};
+  const Scene s = scene::lift_scene(planar, scene::mesh_point_heights(planar, *log), view);
+  // Each corner of the worst triangle and of the path is a vertex: it goes to the projection of
+  // its position at its own height, about the pivot.
+  const auto z_of = [&](const Point& p) {
+    for (const replay::VertexInfo& v : log->vertices())
+      if (v.event != kNone && v.point == p) return v.z;
+    ADD_FAILURE() << "no vertex at (" << p.x << ", " << p.y << ")";
+    return 0.0;
+  };
+  const double a = -70.0 * std::numbers::pi / 180.0, e = 40.0 * std::numbers::pi / 180.0;
+  const auto projected = [&](const Point& p) {
+    const double x = p.x - 160.0, y = p.y - 120.0, z = 2.0 * (z_of(p) - 50.0);
+    return Point{-std::sin(a) * x + std::cos(a) * y, -std::sin(e) * std::cos(a) * x - std::sin(e) * std::sin(a) * y + std::cos(e) * z};
+  };
+  for (const char* role : {"bad_triangle", "lepp_path", "terminal_edge", "selected_point"}) {
+    const scene::Shape& flat = shape(planar, role);
+    const scene::Shape& lifted = shape(s, role);
+    EXPECT_EQ(lifted.points.size(), flat.points.size()) << role;
+    std::multiset<std::pair<double, double>> want, got;
+    for (const Point& p : flat.points) {
+      const Point q = projected(p);
+      want.insert({std::round(q.x * 1e9), std::round(q.y * 1e9)});
+    }
+    for (const Point& p : lifted.points) got.insert({std::round(p.x * 1e9), std::round(p.y * 1e9)});
+    EXPECT_EQ(got, want) << role;
+  }
+  EXPECT_EQ(s.find("circumcircle"), nullptr);
+  EXPECT_TRUE(s.mesh.painter_order);
+  EXPECT_TRUE(s.legend && s.legend->title == "height");
+  EXPECT_NE(s.caption.find("vertical error"), std::string::npos) << s.caption;
+  EXPECT_NE(s.caption.find("\u00B7 3D -70\u00B0, 40\u00B0, heights \u00D72"), std::string::npos) << s.caption;
+  return s;
+}
+
 const std::vector<GoldenCase>& cases() {
   static const std::vector<GoldenCase> list = {
       {"input", input_case},
@@ -462,6 +525,7 @@ const std::vector<GoldenCase>& cases() {
       {"color_age", age_case},
       {"color_region", region_case},
       {"surface_hill", surface_hill_case},
+      {"terrain_step_3d", terrain_step_3d_case},
   };
   return list;
 }

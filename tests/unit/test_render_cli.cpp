@@ -7,7 +7,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "meshstep/scene/image.hpp"
 #include "run_cli.hpp"
@@ -254,4 +256,69 @@ TEST_F(RenderSurfaceCli, BadCameraOptionsAreUsageErrors) {
   EXPECT_EQ(flat.status, 2) << flat.err;
   EXPECT_NE(flat.err.find("3D surface"), std::string::npos) << flat.err;
   EXPECT_FALSE(fs::exists(file("bad.svg")));
+}
+
+namespace {
+
+// The box of the pixels that are not the background (white), left of the legend.
+struct PixelBox {
+  int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+};
+PixelBox drawn_box(const meshstep::scene::Image& image, int legend_left) {
+  PixelBox b;
+  for (int y = 40; y < image.height; ++y)  // below the caption
+    for (int x = 0; x < legend_left; ++x) {
+      const std::uint8_t* p = image.row(y) + 4 * x;
+      if (p[0] > 245 && p[1] > 245 && p[2] > 245) continue;
+      b.x0 = std::min(b.x0, x), b.x1 = std::max(b.x1, x), b.y0 = std::min(b.y0, y), b.y1 = std::max(b.y1, y);
+    }
+  return b;
+}
+
+}  // namespace
+
+// A terrain's run exported in 3D with the camera turning half round: every frame is drawn
+// from its own side, and the surface stays in the middle (the camera turns about it). A
+// planar run's log has no heights, and --spin needs --orbit: both refused, nothing written.
+TEST_F(RenderCli, TerrainRunTurnsIn3D) {
+  if (!gl_available()) GTEST_SKIP() << "no OpenGL on this machine";
+  const fs::path grid = file("hill.asc");
+  {
+    std::ofstream out(grid);
+    out << "ncols 24\nnrows 18\nxllcorner 0\nyllcorner 0\ncellsize 10\n";
+    for (int j = 0; j < 18; ++j) {
+      for (int i = 0; i < 24; ++i) out << 20.0 + 15.0 * std::exp(-((i - 12.0) * (i - 12.0) + (j - 9.0) * (j - 9.0)) / 20.0) << ' ';
+      out << '\n';
+    }
+  }
+  const std::string log = file("hill.mslog").string();
+  ASSERT_EQ(run_meshstep("terrain " + grid.string() + " --max-error 0.5 -q --record " + log, dir_.path()).status, 0);
+  const CommandResult spun = run_meshstep("export " + log + " --frames " + file("spun").string() +
+                                              " --every 1000 --orbit -60,35 --z-scale 3 --spin 180 --size 480x300 -q",
+                                          dir_.path());
+  ASSERT_EQ(spun.status, 0) << spun.err;
+  std::vector<fs::path> frames;
+  for (const auto& entry : fs::directory_iterator(file("spun"))) frames.push_back(entry.path());
+  std::sort(frames.begin(), frames.end());
+  ASSERT_GE(frames.size(), 2u);
+  const auto first = meshstep::scene::read_png(frames.front().string());
+  const auto last = meshstep::scene::read_png(frames.back().string());
+  EXPECT_GT(meshstep::scene::compare_images(first, last, 8).differing_pixels, 1000u);
+  // The legend takes the right fifth or so; the surface is centred in what is left of it.
+  for (const auto* image : {&first, &last}) {
+    const PixelBox b = drawn_box(*image, 360);
+    ASSERT_GE(b.x1, b.x0);
+    EXPECT_NEAR((b.x0 + b.x1) / 2.0, 190.0, 60.0);
+  }
+
+  const CommandResult planar =
+      run_meshstep("export " + log_ + " --frames " + file("planar").string() + " --orbit 30,40", dir_.path());
+  EXPECT_EQ(planar.status, 2);
+  EXPECT_NE(planar.err.find("no heights"), std::string::npos) << planar.err;
+  EXPECT_FALSE(fs::exists(file("planar")));
+  const CommandResult no_orbit =
+      run_meshstep("export " + log + " --frames " + file("no_orbit").string() + " --spin 90", dir_.path());
+  EXPECT_EQ(no_orbit.status, 2);
+  EXPECT_NE(no_orbit.err.find("--orbit"), std::string::npos) << no_orbit.err;
+  EXPECT_FALSE(fs::exists(file("no_orbit")));
 }

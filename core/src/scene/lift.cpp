@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <unordered_map>
 
 #include "parts.hpp"
@@ -71,12 +72,22 @@ class HeightField {
   std::unordered_map<Point, double, PointHash> at_;
 };
 
+// "-32.3°", "35°": a tenth of a degree at most (a turning camera's azimuth is any number).
+std::string degrees_text(double deg) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f", deg);
+  std::string text = buf;
+  if (text.ends_with(".0")) text.resize(text.size() - 2);
+  if (text == "-0") text = "0";
+  return text + "\u00B0";
+}
+
 }  // namespace
 
 Point project(const Point& p, double z, const SurfaceView& view) {
   const ViewBasis b = view_basis(view);
-  const double zs = z * view.z_scale;
-  return {p.x * b.right.x + p.y * b.right.y + zs * b.right.z, p.x * b.up.x + p.y * b.up.y + zs * b.up.z};
+  const double x = p.x - view.pivot.x, y = p.y - view.pivot.y, zs = (z - view.pivot.z) * view.z_scale;
+  return {x * b.right.x + y * b.right.y + zs * b.right.z, x * b.up.x + y * b.up.y + zs * b.up.z};
 }
 
 Scene lift_scene(const Scene& planar, std::span<const double> point_heights, const SurfaceView& view) {
@@ -118,10 +129,7 @@ Scene lift_scene(const Scene& planar, std::span<const double> point_heights, con
     out.at = lifted(l.at);
   }
 
-  char view_text[96];
-  std::snprintf(view_text, sizeof view_text, " \u00B7 3D %g\u00B0, %g\u00B0", view.azimuth_deg,
-                view.elevation_deg);
-  scene.caption = planar.caption + view_text;
+  scene.caption = planar.caption + " \u00B7 3D " + degrees_text(view.azimuth_deg) + ", " + degrees_text(view.elevation_deg);
   if (view.z_scale != 1.0) {
     char scale[48];
     std::snprintf(scale, sizeof scale, ", heights \u00D7%g", view.z_scale);

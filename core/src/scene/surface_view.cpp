@@ -109,7 +109,7 @@ Scene surface_scene(const io::Surface& surface, const SurfaceView& view, Theme t
   std::vector<Point3> world(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Point3& v = surface.vertices[i];
-    world[i] = {v.x, v.y, v.z * k};
+    world[i] = {v.x - view.pivot.x, v.y - view.pivot.y, (v.z - view.pivot.z) * k};
   }
   // Parallel projection: a vertex's screen position is its components along the screen's
   // right and up, whatever its distance from the camera.

@@ -18,8 +18,9 @@
 
 namespace meshstep::scene {
 
-// Where a point of the plane goes on screen, at height z (parallel projection, heights
-// scaled by view.z_scale): the same projection surface_scene() gives the vertices.
+// Where a point of the plane goes on screen, at height z (parallel projection about
+// view.pivot, heights scaled by view.z_scale): the projection surface_scene() gives the
+// vertices.
 Point project(const Point& p, double z, const SurfaceView& view);
 
 // The planar scene lifted. point_heights: the height of each of planar.mesh.points. A point

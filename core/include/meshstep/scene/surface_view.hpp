@@ -35,6 +35,10 @@ struct SurfaceView {
   std::optional<Point3> light;
   // Strength of the light that reaches every face, lit or not (0..1): nothing goes black.
   double ambient = 0.35;
+  // The point the camera turns about: it projects to the screen's origin, whatever the
+  // view. An animation that turns the camera about the middle of its surface keeps the
+  // surface in the middle of every frame.
+  Point3 pivot{0.0, 0.0, 0.0};
 };
 
 // The unit vectors of the view: toward the camera, and the screen's right and up.
