@@ -169,6 +169,7 @@ int refine_surface(const RefineArgs& args) {
   surface.no_output = args.no_output;
   surface.quiet = args.quiet;
   surface.flip_dihedral = args.flip_dihedral;
+  surface.record = args.record;
   return run_refine_surface(surface);
 }
 

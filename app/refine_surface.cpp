@@ -9,7 +9,9 @@
 #include "meshstep/error.hpp"
 #include "meshstep/io/surface_io.hpp"
 #include "meshstep/surface/surface_flips.hpp"
+#include "meshstep/io/shortest_text.hpp"
 #include "meshstep/surface/surface_refine.hpp"
+#include "record_option.hpp"
 
 namespace meshstep::app {
 
@@ -49,24 +51,34 @@ int run_refine_surface(const SurfaceRefineArgs& args) {
     options.max_area = args.max_area;
     options.max_triangles = args.max_triangles;
     options.data_structure = args.ds == "dcel" ? DataStructure::dcel : DataStructure::tds;
+    std::unique_ptr<replay::LogWriter> log;
+    if (!args.record.empty()) {
+      log = open_log(args.record, args.input, "lepp-bisection",
+                     "surface=1 insertion=bisection size=" + io::shortest_text(args.max_edge) +
+                         " max_area=" + io::shortest_text(args.max_area) + " input_vertices=" +
+                         std::to_string(in.vertices.size()) + " max_triangles=" + std::to_string(args.max_triangles) +
+                         " flip_dihedral=" + io::shortest_text(args.flip_dihedral),
+                     options.data_structure, Insertion::flip, nullptr);
+      options.record = log.get();
+    }
+    // The bisection, then the flips, in one mesh (and one log).
+    options.flip_dihedral_deg = args.flip_dihedral;
     surface::BisectionReport report;
     Stopwatch clock;
     io::Surface out = surface::bisect_surface(in, options, &report);
-    surface::FlipReport flips;
-    if (args.flip_dihedral >= 0.0) {
-      out = surface::flip_surface(out, {args.flip_dihedral}, &flips);
-      report.smallest_angle_after_deg = flips.smallest_angle_after_deg;
-      report.area_after = flips.area_after;
-    }
     const double refine_ms = clock.lap_ms();
     if (!args.no_output) io::write_surface(output, out, *format);
+    if (log) {
+      log->finish();
+      print_progress(verbosity, record_summary(*log));
+    }
     if (report.capped)
       print_warning(verbosity, "stopped at --max-triangles " + std::to_string(args.max_triangles) +
                                    " before every bound was met");
     if (verbosity != Verbosity::quiet)
       std::printf("%s: %zu triangles -> %zu (%zu bisections%s); smallest angle %.2f -> %.2f degrees; area %.17g%s\n",
                   args.input.c_str(), in.triangles.size(), report.triangles, report.bisections,
-                  args.flip_dihedral < 0.0 ? "" : (", " + std::to_string(flips.flips) + " flips").c_str(),
+                  args.flip_dihedral < 0.0 ? "" : (", " + std::to_string(report.flips) + " flips").c_str(),
                   report.smallest_angle_before_deg, report.smallest_angle_after_deg, report.area_after,
                   args.no_output ? " (not written)" : (", written to " + output).c_str());
     if (args.stats == "json") {
@@ -76,8 +88,8 @@ int run_refine_surface(const SurfaceRefineArgs& args) {
           .field("triangles", report.triangles)
           .field("vertices", out.vertices.size())
           .field("bisections", report.bisections)
-          .field("flips", flips.flips)
-          .field("largest_dihedral_flipped", flips.largest_dihedral_flipped_deg)
+          .field("flips", report.flips)
+          .field("largest_dihedral_flipped", report.largest_dihedral_flipped_deg)
           .field("min_angle_before", report.smallest_angle_before_deg)
           .field("min_angle", report.smallest_angle_after_deg)
           .field("area_before", report.area_before)

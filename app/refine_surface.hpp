@@ -18,6 +18,7 @@ struct SurfaceRefineArgs {
   bool no_output = false;
   bool quiet = false;
   double flip_dihedral = -1.0;  // after the bisection, flips up to this dihedral angle (< 0: none)
+  std::string record;           // --record LOG (empty: not recorded)
 };
 
 bool is_surface_file(const std::string& path);

@@ -8,6 +8,7 @@
 // same surface; broken inputs are refused with what is wrong.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -19,7 +20,12 @@
 
 #include "meshstep/error.hpp"
 #include "meshstep/io/surface_io.hpp"
+#include "meshstep/replay/log_reader.hpp"
+#include "meshstep/replay/log_writer.hpp"
+#include "meshstep/replay/replay.hpp"
+#include "meshstep/replay/verify.hpp"
 #include "meshstep/surface/surface_refine.hpp"
+#include "temp_dir.hpp"
 
 namespace meshstep {
 namespace {
@@ -546,6 +552,96 @@ TEST(SurfaceBisection, RefusesWhatIsNoManifoldSurface) {
   const Surface out = bisect_surface(spare, options);
   EXPECT_EQ(out.vertices[4], (Point3{7, 7, 7}));
   EXPECT_EQ(io::report_surface(out).unused_vertices, 1u);
+}
+
+}  // namespace
+}  // namespace meshstep
+
+namespace meshstep {
+namespace {
+
+// ---------------------------------------------------------------------------------------
+// Recorded runs (BisectionOptions::record): the bisection and the flips after it, on every
+// surface and both data structures. The log replays, forward and backward, to the surface
+// the run returned; every vertex carries its 3D position (x, y in the plane, z as an
+// elevation); a step per target and per flip; and recording changes nothing.
+
+struct Replayed {
+  std::vector<Triangle> triangles;  // each from its smallest vertex id, sorted
+  std::vector<Point3> vertices;
+};
+
+Replayed replay_to_end(const replay::LogReader& log) {
+  replay::Replay cursor(log);
+  cursor.seek_event(log.event_count());
+  Replayed out;
+  for (const replay::FaceRecord& r : cursor.slots()) {
+    if (r.dead() || r.ghost()) continue;
+    Triangle t = r.v;
+    while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
+    out.triangles.push_back(t);
+  }
+  std::sort(out.triangles.begin(), out.triangles.end());
+  for (const replay::VertexInfo& v : log.vertices()) out.vertices.push_back({v.point.x, v.point.y, v.z});
+  return out;
+}
+
+TEST(SurfaceRecord, EveryRunReplaysToItsSurfaceOnBothStructures) {
+  testing::TempDir dir;
+  for (const Case& c : all_surfaces()) {
+    std::vector<Triangle> first;
+    for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel}) {
+      SCOPED_TRACE(c.name + (ds == DataStructure::dcel ? " dcel" : " tds"));
+      BisectionOptions options;
+      options.max_edge = fine_edge(c.surface);
+      options.flip_dihedral_deg = 20.0;
+      options.data_structure = ds;
+      BisectionReport plain_report, report;
+      const Surface plain = bisect_surface(c.surface, options, &plain_report);
+
+      const std::string path = dir.file("run.mslog");
+      replay::LogHeader header;
+      header.algorithm = "lepp-bisection";
+      header.parameters = "input_vertices=" + std::to_string(c.surface.vertices.size());
+      replay::LogWriterOptions small_blocks;
+      small_blocks.block_bytes = 4096;
+      small_blocks.keyframes.min_events = 256;
+      {
+        replay::LogWriter writer(path, header, small_blocks);
+        options.record = &writer;
+        const Surface out = bisect_surface(c.surface, options, &report);
+        writer.finish();
+        EXPECT_EQ(out.vertices, plain.vertices);
+        EXPECT_EQ(out.triangles, plain.triangles);
+        EXPECT_EQ(report.flips, plain_report.flips);
+      }
+      const replay::LogReader log(path);
+      ASSERT_TRUE(log.complete());
+      EXPECT_TRUE(log.has_elevation());
+      const replay::VerifyReport verified = replay::verify(log);
+      EXPECT_TRUE(verified.ok) << verified.problem;
+
+      const Replayed end = replay_to_end(log);
+      EXPECT_EQ(end.triangles, plain.triangles);
+      EXPECT_EQ(end.vertices, plain.vertices);
+
+      std::size_t bisect_steps = 0, flip_steps = 0, bisections = 0;
+      for (std::uint64_t k = 0; k < log.step_count(); ++k) {
+        bisect_steps += log.step_kind(k) == replay::StepKind::bisect;
+        flip_steps += log.step_kind(k) == replay::StepKind::flip_3d;
+      }
+      for (std::uint64_t e = 0; e < log.event_count(); ++e) {
+        const replay::Event ev = log.event(e);
+        bisections += ev.type == replay::EventType::vertex && ev.ids[0] >= c.surface.vertices.size();
+      }
+      EXPECT_EQ(bisections, report.bisections);
+      EXPECT_GT(bisect_steps, 0u);
+      EXPECT_LE(bisect_steps, report.bisections);
+      EXPECT_EQ(flip_steps, report.flips);
+      if (first.empty()) first = plain.triangles;
+      else EXPECT_EQ(plain.triangles, first) << "tds and dcel differ after the flips";
+    }
+  }
 }
 
 }  // namespace

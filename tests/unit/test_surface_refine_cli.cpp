@@ -86,6 +86,39 @@ TEST(SurfaceRefineCli, FlipsEdgesWithinADihedralBound) {
   EXPECT_NE(refused.err.find("3D surface"), std::string::npos) << refused.err;
 }
 
+// --record: the loading, every bisection and every flip go into a replay log with heights,
+// which `log verify` replays and `render --orbit` draws in 3D (SVG: no OpenGL needed). A
+// failed run leaves no log.
+TEST(SurfaceRefineCli, RecordsBisectionAndFlipsForReplayIn3D) {
+  TempDir dir;
+  const auto cube = write_cube(dir.path());
+  const std::string log = (dir.path() / "cube.mslog").string();
+  auto r = run_meshstep("refine " + cube.string() + " --algorithm lepp-bisection --size 0.4 --flip-dihedral 0 --ds dcel "
+                        "--no-output -q --record " + log, dir.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = run_meshstep("log verify -q " + log, dir.path());
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  r = run_meshstep("log dump " + log, dir.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("step_begin bisect"), std::string::npos);
+  EXPECT_NE(r.out.find("criterion_test size failed"), std::string::npos);
+  EXPECT_NE(r.out.find("split_edge bisection"), std::string::npos);
+  EXPECT_NE(r.out.find("elevation vertex=7"), std::string::npos);  // the cube's last corner
+  const std::string svg = (dir.path() / "cube.svg").string();
+  r = run_meshstep("render " + log + " --step 20 --orbit 30,30 -q -o " + svg, dir.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string picture = testing::slurp(svg);
+  EXPECT_NE(picture.find("bisected (Lepp of"), std::string::npos);
+  EXPECT_NE(picture.find("3D 30\u00B0, 30\u00B0"), std::string::npos);
+
+  const std::string failed = (dir.path() / "failed.mslog").string();
+  r = run_meshstep("refine " + (dir.path() / "missing.off").string() + " --algorithm lepp-bisection --size 1 --record " +
+                       failed, dir.path());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_FALSE(std::filesystem::exists(failed));
+  EXPECT_FALSE(std::filesystem::exists(failed + ".partial"));
+}
+
 TEST(SurfaceRefineCli, TheDefaultOutputIsNumberedLikeTriangles) {
   TempDir dir;
   const auto cube = write_cube(dir.path());

@@ -12,7 +12,7 @@ constexpr const char* kPhaseNames[] = {"insert_vertices", "recover_segments", "c
                                        "improve"};
 constexpr const char* kLocateNames[] = {"in_face", "on_edge", "on_vertex"};
 constexpr const char* kSplitNames[] = {"insert", "crossing", "encroached", "bisection"};
-constexpr const char* kFlipNames[] = {"delaunay", "segment_recovery", "vertex_removal", "angles_3d"};
+constexpr const char* kFlipNames[] = {"delaunay", "segment_recovery", "vertex_removal", "angles_3d", "load"};
 constexpr const char* kRemoveNames[] = {"ghost", "hole", "outside"};
 constexpr const char* kCriterionNames[] = {"min_angle", "max_angle", "max_aspect", "max_area", "local_max_area", "size",
                                            "vertical_error"};

@@ -142,13 +142,12 @@ Scene lift_scene(const Scene& planar, std::span<const double> point_heights, con
 }
 
 std::vector<double> mesh_point_heights(const Scene& planar, const replay::LogReader& log) {
-  std::unordered_map<Point, double, PointHash> z;
-  z.reserve(log.vertices().size());
-  for (const replay::VertexInfo& v : log.vertices())
-    if (v.event != kNone) z.emplace(v.point, v.z);
+  // A log's scene indexes its points by the log's vertex ids (build_replay.cpp): the height
+  // of point i is vertex i's, even where two vertices share a position in the plane (the
+  // top and bottom of a closed surface).
+  const std::vector<replay::VertexInfo>& vertices = log.vertices();
   std::vector<double> heights(planar.mesh.points.size(), 0.0);
-  for (std::size_t i = 0; i < heights.size(); ++i)
-    if (const auto it = z.find(planar.mesh.points[i]); it != z.end()) heights[i] = it->second;
+  for (std::size_t i = 0; i < heights.size() && i < vertices.size(); ++i) heights[i] = vertices[i].z;
   return heights;
 }
 

@@ -12,9 +12,11 @@
 #include "meshstep/huge_pages.hpp"
 #include "meshstep/mesh/dcel.hpp"
 #include "meshstep/mesh/tds.hpp"
+#include "meshstep/replay/recorder.hpp"
 #include "meshstep/surface/surface_refine.hpp"
 #include "seam_table.hpp"
 #include "surface_bisector.hpp"
+#include "surface_flipper.hpp"
 #include "surface_geometry.hpp"
 #include "surface_input.hpp"
 #include "surface_loader.hpp"
@@ -33,22 +35,42 @@ void check_bound(double value, const char* name) {
 void check_input(const io::Surface& in, const BisectionOptions& options) {
   check_bound(options.max_edge, "the largest edge length");
   check_bound(options.max_area, "the largest area");
-  detail::check_surface_input(in, "surface bisection");
+  if (!(options.flip_dihedral_deg <= 180.0))
+    throw InputError("surface flips: the dihedral bound must be between 0 and 180 degrees, not " +
+                     std::to_string(options.flip_dihedral_deg));
+  detail::check_surface_input(in, options.max_edge > 0.0 || options.max_area > 0.0 ? "surface bisection"
+                                                                                     : "surface flips");
 }
 
 // Each triangle from its smallest vertex id, keeping its orientation.
 Triangle from_smallest(VertexId a, VertexId b, VertexId c) { return detail::from_smallest(Triangle{a, b, c}); }
 
-template <TriangleMesh Mesh>
-io::Surface bisect_with(const io::Surface& in, const BisectionOptions& options, BisectionReport& report) {
+template <TriangleMesh Mesh, class Rec>
+io::Surface bisect_with(const io::Surface& in, const BisectionOptions& options, BisectionReport& report, Rec rec) {
   io::Surface out;
   out.vertices = in.vertices;
   {
     Mesh mesh;
     detail::SeamTable seams;
-    detail::load_surface(in, mesh, seams);
-    detail::SurfaceBisector<Mesh> bisector(mesh, seams, out.vertices, options);
+    if constexpr (Rec::enabled) {
+      // The first step: every vertex (in the plane, with its height), then the surface
+      // loaded triangle by triangle.
+      rec.step_begin(mesh, replay::StepKind::start);
+      for (VertexId v = 0; v < in.vertices.size(); ++v) {
+        rec.vertex(v, Point{in.vertices[v].x, in.vertices[v].y});
+        rec.elevation(v, in.vertices[v].z);
+      }
+    }
+    detail::load_surface(in, mesh, seams, rec);
+    detail::SurfaceBisector<Mesh, Rec> bisector(mesh, seams, out.vertices, options, rec);
     bisector.run();
+    if (options.flip_dihedral_deg >= 0.0) {
+      FlipReport flips;
+      detail::SurfaceFlipper<Mesh, Rec>(mesh, out.vertices, options.flip_dihedral_deg, rec).run(flips);
+      report.flips = flips.flips;
+      report.largest_dihedral_flipped_deg = flips.largest_dihedral_flipped_deg;
+    }
+    rec.run_end(mesh);
     report.bisections = bisector.bisections();
     report.capped = bisector.capped();
     reserve_huge(out.triangles, mesh.face_count());
@@ -69,8 +91,15 @@ io::Surface bisect_surface(const io::Surface& in, const BisectionOptions& option
   check_input(in, options);
   BisectionReport r;
   const detail::SurfaceMeasures before = detail::measure_surface(in.vertices, in.triangles);
-  io::Surface out = options.data_structure == DataStructure::dcel ? bisect_with<Dcel>(in, options, r)
-                                                                  : bisect_with<Tds>(in, options, r);
+  io::Surface out;
+  if (options.record) {
+    const replay::Recorder rec(*options.record);
+    out = options.data_structure == DataStructure::dcel ? bisect_with<Dcel>(in, options, r, rec)
+                                                        : bisect_with<Tds>(in, options, r, rec);
+  } else {
+    out = options.data_structure == DataStructure::dcel ? bisect_with<Dcel>(in, options, r, replay::NullRecorder{})
+                                                        : bisect_with<Tds>(in, options, r, replay::NullRecorder{});
+  }
   const detail::SurfaceMeasures after = detail::measure_surface(out.vertices, out.triangles);
   r.triangles = out.triangles.size();
   r.smallest_angle_before_deg = before.smallest_angle_deg;

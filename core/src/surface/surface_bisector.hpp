@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <tuple>
 #include <vector>
@@ -23,6 +24,7 @@
 #include "meshstep/huge_pages.hpp"
 #include "meshstep/mesh/concept.hpp"
 #include "meshstep/refine/lepp.hpp"
+#include "meshstep/replay/recorder.hpp"
 #include "meshstep/surface/surface_refine.hpp"
 #include "seam_table.hpp"
 #include "surface_geometry.hpp"
@@ -30,21 +32,29 @@
 
 namespace meshstep::surface::detail {
 
-template <TriangleMesh Mesh>
+// Rec records the run (replay/recorder.hpp): a `bisect` step per target, which names the
+// bound it breaks (a failed size or max_area criterion_test, measured in 3D), then for each
+// cut the Lepp path, the new vertex with its height (vertex, elevation) and the split(s).
+template <TriangleMesh Mesh, class Rec = replay::NullRecorder>
 class SurfaceBisector {
  public:
-  SurfaceBisector(Mesh& mesh, SeamTable& seams, std::vector<Point3>& points,
-                  const BisectionOptions& options)
-      : mesh_(mesh), seams_(seams), points_(points), options_(options),
+  SurfaceBisector(Mesh& mesh, SeamTable& seams, std::vector<Point3>& points, const BisectionOptions& options,
+                  Rec& rec)
+      : mesh_(mesh), seams_(seams), points_(points), options_(options), rec_(rec),
         max_edge_squared_(options.max_edge * options.max_edge) {}
 
   void run() {
     if (options_.max_edge <= 0.0 && options_.max_area <= 0.0) return;
     queue_first_targets();
+    rec_.phase_begin(replay::Phase::refine);
     Target t;
-    while (!capped_ && targets_.pop(t))
+    while (!capped_ && targets_.pop(t)) {
+      if (!still_there(t)) continue;
+      if constexpr (Rec::enabled) record_target(t);
       while (still_there(t))
         if (!bisect_terminal_edge(t.face)) break;
+    }
+    rec_.phase_end(replay::Phase::refine);
   }
 
   std::size_t bisections() const { return bisections_; }
@@ -144,6 +154,30 @@ class SurfaceBisector {
     }
   }
 
+  // The step's opening: the target and every bound it breaks, measured in 3D.
+  void record_target(const Target& t) {
+    rec_.step_begin(mesh_, replay::StepKind::bisect);
+    const auto& c = t.corners;
+    const Point3 &a = points_[c[0]], &b = points_[c[1]], &p = points_[c[2]];
+    const double longest = std::max({squared_length(a, b), squared_length(b, p), squared_length(p, a)});
+    if (options_.max_edge > 0.0 && longest > max_edge_squared_)
+      rec_.criterion_test(replay::Criterion::size, false, c[0], c[1], c[2], std::sqrt(longest));
+    if (options_.max_area > 0.0 && area(a, b, p) > options_.max_area)
+      rec_.criterion_test(replay::Criterion::max_area, false, c[0], c[1], c[2], area(a, b, p));
+  }
+
+  // The Lepp path from f to the terminal edge e, for the log.
+  void record_lepp_path(FaceId f, HalfEdge e, std::uint32_t terminal_triangles) {
+    path_vertices_.clear();
+    for (HalfEdge h = longest_edge(f);;) {
+      const std::array<VertexId, 3> k = corners(mesh_.face(h));
+      path_vertices_.insert(path_vertices_.end(), k.begin(), k.end());
+      if (h == e) break;
+      h = longest_edge(mesh_.face(across(h)));
+    }
+    rec_.lepp_path(mesh_.origin(e), mesh_.dest(e), terminal_triangles, path_vertices_);
+  }
+
   // One bisection on f's path. False when none is possible: the cap is reached, or the
   // edge is too short for its midpoint to differ from its ends (then f stays as it is).
   bool bisect_terminal_edge(FaceId f) {
@@ -162,17 +196,23 @@ class SurfaceBisector {
     grow_huge(points_);
     points_.push_back(m);
     mesh_.set_vertex_count(points_.size());
+    if constexpr (Rec::enabled) {
+      record_lepp_path(f, e, t == kNone ? 1 : 2);
+      rec_.vertex(v, Point{m.x, m.y});
+      rec_.elevation(v, m.z);
+    }
+    const auto split = [&](HalfEdge h) { return rec_.split_edge(mesh_, h, v, replay::SplitReason::bisection); };
     std::size_t count = 0;
     if (t == kNone || mesh_.twin(e) == t) {
-      count = faces_of_split(mesh_.split_edge(e, v), new_faces_.data());
+      count = faces_of_split(split(e), new_faces_.data());
     } else {
       // A seam: both sides are borders of the mesh, each cut on its own, and the two
       // halves become seams in turn.
       seams_.remove(a, b);
       seams_.add(a, v);
       seams_.add(v, b);
-      count = faces_of_split(mesh_.split_edge(e, v), new_faces_.data());
-      count += faces_of_split(mesh_.split_edge(t, v), new_faces_.data() + count);
+      count = faces_of_split(split(e), new_faces_.data());
+      count += faces_of_split(split(t), new_faces_.data() + count);
     }
     for (std::size_t i = 0; i < count; ++i) {
       note_seam_sides(new_faces_[i]);
@@ -205,7 +245,9 @@ class SurfaceBisector {
   SeamTable& seams_;
   std::vector<Point3>& points_;
   const BisectionOptions& options_;
+  Rec& rec_;
   double max_edge_squared_;
+  std::vector<VertexId> path_vertices_;  // recording: the Lepp path's triangles
   TargetQueue targets_;
   std::array<FaceId, 4> new_faces_{};
   std::size_t bisections_ = 0;

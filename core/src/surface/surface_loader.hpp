@@ -28,20 +28,25 @@
 #include <array>
 #include <cassert>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "edge_neighbours.hpp"
 #include "meshstep/io/surface_io.hpp"
 #include "meshstep/mesh/concept.hpp"
+#include "meshstep/replay/recorder.hpp"
 #include "seam_table.hpp"
 
 namespace meshstep::surface::detail {
 
-template <TriangleMesh Mesh>
+// Rec records every change into a replay log (replay/recorder.hpp): the loading is then the
+// run's first step, scaffold and all (the scaffold faces are ghost faces: a replay's mesh
+// leaves them out, and shows the surface growing triangle by triangle).
+template <TriangleMesh Mesh, class Rec = replay::NullRecorder>
 class SurfaceLoader {
  public:
-  SurfaceLoader(const io::Surface& surface, Mesh& mesh, SeamTable& seams)
-      : triangles_(surface.triangles), mesh_(mesh), seams_(seams),
+  SurfaceLoader(const io::Surface& surface, Mesh& mesh, SeamTable& seams, Rec& rec)
+      : triangles_(surface.triangles), mesh_(mesh), seams_(seams), rec_(rec),
         opposite_(opposite_corner_edges(surface.triangles)),
         half_edge_(3 * triangles_.size(), kNone), built_neighbours_(triangles_.size(), 0) {
     mesh_.set_vertex_count(surface.vertices.size());
@@ -96,7 +101,8 @@ class SurfaceLoader {
   void start_piece(std::uint32_t t) {
     const Triangle& p = triangles_[t];
     if (mesh_.face_capacity() == 0) {
-      mark_built(t, 0, mesh_.init_sphere(p[0], p[1], p[2], kHub));
+      static_assert(kHub == kInfiniteVertex, "the recorder's init_sphere joins the triangle to kInfiniteVertex");
+      mark_built(t, 0, rec_.init_sphere(mesh_, p[0], p[1], p[2]));
       return;
     }
     // A later piece is split out of a scaffold face (o, x, y) at the hub o, as the fan
@@ -107,18 +113,18 @@ class SurfaceLoader {
     // the change does not touch, so it keeps its id.
     const HalfEdge ox = mesh_.vertex_half_edge(kHub);
     const HalfEdge outside_ox = mesh_.twin(ox);
-    mesh_.split_face(mesh_.face(ox), p[1]);  // (x, y, n1) (y, o, n1) (o, x, n1)
+    rec_.split_face(mesh_, mesh_.face(ox), p[1]);  // (x, y, n1) (y, o, n1) (o, x, n1)
     const HalfEdge ox1 = mesh_.twin(outside_ox);                  // o->x in (o, x, n1)
     const HalfEdge n1_x = mesh_.twin(mesh_.next(ox1));            // in (x, y, n1)
     const HalfEdge o_n1 = mesh_.twin(mesh_.prev(ox1));            // in (y, o, n1)
-    mesh_.split_face(mesh_.face(ox1), p[0]);  // (o, x, n0) (x, n1, n0) (n1, o, n0)
+    rec_.split_face(mesh_, mesh_.face(ox1), p[0]);  // (o, x, n0) (x, n1, n0) (n1, o, n0)
     const HalfEdge n1_o = mesh_.twin(o_n1);                       // in (n1, o, n0)
     const HalfEdge n1_n0 = mesh_.twin(mesh_.prev(n1_o));          // in (x, n1, n0)
-    mesh_.split_face(mesh_.face(n1_o), p[2]);  // (n1, o, n2) (o, n0, n2) (n0, n1, n2)
+    rec_.split_face(mesh_, mesh_.face(n1_o), p[2]);  // (n1, o, n2) (o, n0, n2) (n0, n1, n2)
     const HalfEdge triangle = mesh_.twin(n1_n0);                  // n0->n1 in (n0, n1, n2)
     // n1 has four scaffold faces round it; two flips leave it the two of the fan.
-    const HalfEdge y_n0 = mesh_.flip(n1_x);  // (y, n1, n0) (n0, x, y)
-    mesh_.flip(mesh_.next(mesh_.twin(y_n0)));  // y->n1: (o, n1, n0) (n0, y, o)
+    const HalfEdge y_n0 = rec_.flip(mesh_, n1_x, replay::FlipReason::load);  // (y, n1, n0) (n0, x, y)
+    rec_.flip(mesh_, mesh_.next(mesh_.twin(y_n0)), replay::FlipReason::load);  // y->n1: (o, n1, n0) (n0, y, o)
     mark_built(t, 0, triangle);
   }
 
@@ -136,13 +142,13 @@ class SurfaceLoader {
       const HalfEdge gi = mesh_.twin(sides[i]), gj = mesh_.twin(sides[j]);
       const HalfEdge shared = mesh_.next(gi);
       if (mesh_.twin(shared) != mesh_.prev(gj)) continue;
-      mesh_.flip(shared);
+      rec_.flip(mesh_, shared, replay::FlipReason::load);
       mark_built(t, i, mesh_.twin(sides[i]));
       return;
     }
     for (std::uint32_t i = 0; i < 3; ++i) {
       if (sides[i] == kNone) continue;
-      mesh_.split_face(mesh_.face(mesh_.twin(sides[i])), p[(i + 2) % 3]);
+      rec_.split_face(mesh_, mesh_.face(mesh_.twin(sides[i])), p[(i + 2) % 3]);
       mark_built(t, i, mesh_.twin(sides[i]));
       return;
     }
@@ -170,7 +176,7 @@ class SurfaceLoader {
 
   void remove_scaffold() {
     for (FaceId f = 0; f < mesh_.face_capacity(); ++f)
-      if (mesh_.is_live(f) && (f >= is_surface_.size() || !is_surface_[f])) mesh_.remove_face(f);
+      if (mesh_.is_live(f) && (f >= is_surface_.size() || !is_surface_[f])) rec_.remove_face(mesh_, f, replay::RemoveReason::ghost);
     mesh_.rebuild_vertex_half_edges();
   }
 
@@ -188,6 +194,7 @@ class SurfaceLoader {
   const std::vector<Triangle>& triangles_;
   Mesh& mesh_;
   SeamTable& seams_;
+  Rec& rec_;
   std::vector<std::uint32_t> opposite_;      // per corner edge (edge_neighbours.hpp)
   std::vector<HalfEdge> half_edge_;          // per corner edge, once its triangle is built
   std::vector<std::uint8_t> built_neighbours_;  // per triangle
@@ -197,9 +204,9 @@ class SurfaceLoader {
 };
 
 // Loads `surface` into the empty `mesh`; the seams go into the empty `seams`.
-template <TriangleMesh Mesh>
-void load_surface(const io::Surface& surface, Mesh& mesh, SeamTable& seams) {
-  SurfaceLoader<Mesh>(surface, mesh, seams).run();
+template <TriangleMesh Mesh, class Rec = replay::NullRecorder>
+void load_surface(const io::Surface& surface, Mesh& mesh, SeamTable& seams, Rec&& rec = Rec{}) {
+  SurfaceLoader<Mesh, std::remove_cvref_t<Rec>>(surface, mesh, seams, rec).run();
 }
 
 }  // namespace meshstep::surface::detail

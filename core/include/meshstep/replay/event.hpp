@@ -69,8 +69,10 @@ enum class Phase : std::uint8_t { insert_vertices, recover_segments, carve, refi
 enum class LocateResult : std::uint8_t { in_face, on_edge, on_vertex, count_ };
 enum class SplitReason : std::uint8_t { insert, crossing, encroached, bisection, count_ };
 // vertex_removal: a flip that lowers a vertex's degree on the way to removing it.
-// angles_3d: a terrain's edge flipped to raise the smallest 3D angle of its two triangles.
-enum class FlipReason : std::uint8_t { delaunay, segment_recovery, vertex_removal, angles_3d, count_ };
+// angles_3d: an edge of a terrain or a surface flipped to raise the smallest 3D angle of its
+// two triangles. load: a surface put into the mesh structure (surface_loader.hpp) flips
+// its scaffold to join two sides of a triangle at once.
+enum class FlipReason : std::uint8_t { delaunay, segment_recovery, vertex_removal, angles_3d, load, count_ };
 enum class RemoveReason : std::uint8_t { ghost, hole, outside, count_ };
 
 // The bound a criterion_test weighed a triangle against, and what its value measured, in

@@ -192,11 +192,15 @@ class Recorder {
     w[4] = old.v[2];
     w[5] = f;
     std::uint32_t packed = old.constrained;
-    HalfEdge h = out;  // the star of v: three faces, closed
-    for (int i = 0; i < 3; ++i, h = m.twin(m.prev(h))) {
+    // The star of v: three faces, closed. `out` leaves v toward old.v[0] (the concept's
+    // split_face), so going round, the i-th face holds the old face's edge i; and h leaves
+    // v, so v stands at corner(h) of its face. Both are read from positions, never by
+    // looking ids up: a face may name one id twice (a surface's seam, surface_loader.hpp).
+    HalfEdge h = out;
+    for (std::uint32_t i = 0; i < 3; ++i, h = m.twin(m.prev(h))) {
       const FaceId s = m.face(h);
       w[6 + i] = s;
-      packed |= spoke_face_bits(face_record(m, s), v, old) << (3 + 7 * i);
+      packed |= spoke_face_bits(i, m.corner(h), face_record(m, s).constrained) << (3 + 7 * i);
     }
     w[9] = packed;
     end_event();
@@ -388,13 +392,11 @@ class Recorder {
     const std::uint32_t rotation = corner == 0 ? 0 : 3 - corner;
     return rotation | m.constraint_mask(m.face(h)) << 2;
   }
-  // A face (x, y, v) made by splitting `old` at v, with x -> y an edge of `old`: which edge
-  // (2 bits), the rotation the data structure lists it in (2 bits), constraint bits (3).
-  static std::uint32_t spoke_face_bits(const FaceRecord& r, VertexId v, const FaceRecord& old) {
-    const std::uint32_t k = r.v[0] == v ? 0 : r.v[1] == v ? 1 : 2;
-    const VertexId x = r.v[(k + 1) % 3];
-    const std::uint32_t edge = old.v[0] == x ? 0 : old.v[1] == x ? 1 : 2;
-    return edge | (2 - k) << 2 | std::uint32_t{r.constrained} << 4;
+  // A face (x, y, v) made by splitting a face at v, x -> y the old face's edge `edge`, v at
+  // corner k of the data structure's listing: which edge (2 bits), the rotation the data
+  // structure lists it in (2 bits), constraint bits (3).
+  static std::uint32_t spoke_face_bits(std::uint32_t edge, std::uint32_t k, std::uint8_t constrained) {
+    return edge | (2 - k) << 2 | std::uint32_t{constrained} << 4;
   }
   // The faces on both sides of the edge of h (t: its twin, kNone on the boundary).
   template <TriangleMesh M> void put_edge_faces(const M& m, HalfEdge h, HalfEdge t) {

@@ -24,12 +24,14 @@ namespace meshstep::scene {
 Point project(const Point& p, double z, const SurfaceView& view);
 
 // The planar scene lifted. point_heights: the height of each of planar.mesh.points. A point
-// of a shape that is not a mesh point takes the height of the plane of the triangle that
-// holds it (or of the nearest mesh point, outside the mesh).
+// of a shape takes the height of the mesh point at its position, else of the plane of the
+// triangle that holds it, else of the nearest mesh point (outside the mesh). On a surface
+// that is not a height field (two points at one position), a shape's point may take
+// either's height.
 Scene lift_scene(const Scene& planar, std::span<const double> point_heights, const SurfaceView& view);
 
-// The heights of planar.mesh.points from the log's vertices (matched by position; 0 for a
-// point no vertex of the log is at).
+// The heights of the points of a log's planar scene (build_scene of a Replay, whose points
+// are indexed by the log's vertex ids): each vertex's own (0 for a planar run's).
 std::vector<double> mesh_point_heights(const Scene& planar, const replay::LogReader& log);
 
 }  // namespace meshstep::scene

@@ -15,18 +15,26 @@
 // grows with every flip and the process ends; the surface's smallest angle never falls.
 // Edges are tried in the order of their vertex ids, and again when a flip changes a
 // triangle beside them, until none is flipped: the result depends on the geometry and the
-// numbering only, not on the order of the triangle list. Angles and normals are measured
-// in 3D, each triangle from its smallest vertex id.
+// numbering only, not on the order of the triangle list nor on the data structure. Angles
+// and normals are measured in 3D, each triangle from its smallest vertex id. The flips are
+// made in a mesh structure (either) that the surface is loaded into; an edge that the
+// loading left as a seam (its two sides built apart: one for a sphere, the cuts of a torus,
+// surface_loader.hpp) is not flipped.
 #pragma once
 
 #include <cstddef>
 
+#include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/io/surface_io.hpp"
 
 namespace meshstep::surface {
 
 struct FlipOptions {
   double max_dihedral_deg = 0.0;  // 0 .. 180
+  DataStructure data_structure = DataStructure::tds;
+  // Record the run into this replay log (the loading, then a flip_3d step per flip); null:
+  // not recorded.
+  replay::EventSink* record = nullptr;
 };
 
 struct FlipReport {

@@ -28,7 +28,14 @@ struct BisectionOptions {
   double max_edge = 0.0;          // every edge at most this long at the end (0: no bound)
   double max_area = 0.0;          // every triangle's area at most this (0: no bound)
   std::size_t max_triangles = 0;  // never more triangles than this (0: no cap)
+  // Then flip edges up to this dihedral angle, in the same mesh (surface_flips.hpp; < 0:
+  // no flips).
+  double flip_dihedral_deg = -1.0;
   DataStructure data_structure = DataStructure::tds;
+  // Record the run into this replay log (replay/log_writer.hpp): every vertex with its
+  // height (x, y in the plane, z as an elevation event), the loading as the first step,
+  // then a bisect step per target. Null: not recorded.
+  replay::EventSink* record = nullptr;
 };
 
 struct BisectionReport {
@@ -39,6 +46,8 @@ struct BisectionReport {
   double area_before = 0.0;
   double area_after = 0.0;
   bool capped = false;  // max_triangles stopped the run before every bound was met
+  std::size_t flips = 0;                      // with flip_dihedral_deg >= 0
+  double largest_dihedral_flipped_deg = 0.0;  // of the pairs flipped
 };
 
 // The refined surface: the input's vertices first, in their order, then one midpoint per
@@ -46,7 +55,7 @@ struct BisectionReport {
 // from its smallest vertex id, sorted. Throws InputError for an input that is not a
 // manifold surface (border allowed): degenerate or duplicate triangles, edges of more than
 // two triangles, neighbours of opposite orientation, coordinates that are not finite; and
-// for a negative or non-finite bound. Vertices of no triangle are kept as they are. A
+// for a negative or non-finite bound, or a dihedral bound above 180. Vertices of no triangle are kept as they are. A
 // triangle whose terminal edge is too short for its rounded midpoint to differ from its
 // ends (a bound near the precision of the coordinates) is left as it is.
 io::Surface bisect_surface(const io::Surface& in, const BisectionOptions& options,
