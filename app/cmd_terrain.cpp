@@ -296,7 +296,8 @@ Command add_terrain_command(CLI::App& parent) {
       "terrain",
       "Approximate a height grid by a triangulated irregular network (TIN): grid samples as\n"
       "vertices, Delaunay in the plane, every sample within --max-error of the surface.");
-  cmd->add_option("GRID", args->grid, "Height grid: ESRI ASCII (.asc) or a greyscale PNG heightmap (8 or 16 bit)")
+  cmd->add_option("GRID", args->grid, "Height grid: ESRI ASCII (.asc), a greyscale PNG heightmap (8 or 16 bit), or a\n"
+                  "GeoTIFF (.tif) or any raster GDAL reads (when meshstep is built with GDAL)")
       ->required();
   cmd->add_option("--max-error", args->max_error,
                   "Largest vertical error, in height units, or with a % suffix as a share of\n"

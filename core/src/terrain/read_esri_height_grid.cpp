@@ -37,14 +37,6 @@ std::string number(double v) {
   return text;
 }
 
-// Rows arrive northernmost first; the grid keeps them southernmost first.
-void flip_rows(HeightGrid& grid) {
-  for (std::size_t j = 0, k = grid.ny - 1; j < k; ++j, --k)
-    std::swap_ranges(grid.z.begin() + static_cast<std::ptrdiff_t>(j * grid.nx),
-                     grid.z.begin() + static_cast<std::ptrdiff_t>((j + 1) * grid.nx),
-                     grid.z.begin() + static_cast<std::ptrdiff_t>(k * grid.nx));
-}
-
 // Sets dx, dy, geographic and units_note from the header and the user's choice.
 void set_spacing(const std::string& path, const io::EsriGrid& header, const HeightGridOptions& options,
                  HeightGrid& grid) {
