@@ -82,7 +82,7 @@ void CanvasWorker::draw(const CanvasRequest& wanted, Session& session, View3d& v
   const bool in_3d = wanted.in_3d && view.available();
   if (in_3d) {
     view.set_orbit(wanted.orbit);
-    out.lifted = view.lifted(out.moment.scene, out.moment.serial);
+    out.lifted = view.lifted(out.moment.scene, out.moment.serial, max_vertex_markers_for(wanted.width, wanted.height));
     out.lifted.visible = wanted.layers;
   }
   const scene::Scene& drawn = in_3d ? out.lifted : out.moment.scene;

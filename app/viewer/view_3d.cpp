@@ -72,11 +72,17 @@ bool View3d::scale_heights(double factor) {
   return set_orbit(next);
 }
 
-scene::Scene& View3d::lifted(const scene::Scene& planar, std::size_t serial) {
-  if (serial != lifted_serial_ || !(orbit_ == lifted_orbit_)) {
+scene::Scene& View3d::lifted(const scene::Scene& planar, std::size_t serial, std::size_t max_vertex_markers) {
+  if (serial != lifted_serial_ || !(orbit_ == lifted_orbit_) || max_vertex_markers != lifted_markers_) {
     lifted_ = scene::lift_scene(planar, heights_, orbit_.view());
+    std::size_t markers = 0;
+    for (const scene::Shape& s : lifted_.shapes)
+      if (s.layer == scene::Layer::vertices) markers += s.points.size();
+    if (markers > max_vertex_markers)
+      std::erase_if(lifted_.shapes, [](const scene::Shape& s) { return s.layer == scene::Layer::vertices; });
     lifted_serial_ = serial;
     lifted_orbit_ = orbit_;
+    lifted_markers_ = max_vertex_markers;
   }
   return lifted_;
 }

@@ -39,6 +39,11 @@ struct Orbit {
 // scale clamped (a NaN becomes the default).
 Orbit normalized(Orbit orbit);
 
+// As `meshstep render` has it: about one vertex marker per 30 x 30 pixels of the picture.
+inline std::size_t max_vertex_markers_for(int width, int height) {
+  return width > 0 && height > 0 ? static_cast<std::size_t>(width) * static_cast<std::size_t>(height) / 900 : 0;
+}
+
 class View3d {
  public:
   // The run this view shows; a log without heights (or none) makes the 3D view unavailable.
@@ -58,8 +63,10 @@ class View3d {
   bool scale_heights(double factor);
 
   // The moment's planar scene (built `serial`-th) lifted as the orbit sees it: lifted again
-  // only when the moment or the orbit changes. The caller sets its `visible` layers.
-  scene::Scene& lifted(const scene::Scene& planar, std::size_t serial);
+  // only when the moment or the orbit changes. The caller sets its `visible` layers. Vertex
+  // markers stay only while there are at most max_vertex_markers of them: on a foreshortened
+  // surface they crowd sooner than in the plane (max_vertex_markers_for says how many).
+  scene::Scene& lifted(const scene::Scene& planar, std::size_t serial, std::size_t max_vertex_markers);
 
   // Every vertex of the run where the orbit puts it on screen (index: vertex id, as the planar
   // scene's mesh.points), and its depth toward the camera (larger: nearer). Moment-free:
@@ -93,7 +100,7 @@ class View3d {
   bool projected_ = false;  // screen_ and depth_ are of orbit_
 
   scene::Scene lifted_;
-  std::size_t lifted_serial_ = SIZE_MAX;
+  std::size_t lifted_serial_ = SIZE_MAX, lifted_markers_ = 0;
   Orbit lifted_orbit_;
 };
 

@@ -166,7 +166,10 @@ const scene::Scene& Viewer::shown_scene() {
   if (!view3d_.on()) return session_->scene();
   // The worker's picture brings its lifted scene; until the first 3D one, the planar moment.
   if (worker_) return picture_in_3d_ ? worker_lifted_ : session_->scene();
-  scene::Scene& lifted = view3d_.lifted(session_->scene(), session_->scene_builds());
+  // The planar scene first: building it counts a build, which names the lift to keep.
+  const scene::Scene& planar = session_->scene();
+  scene::Scene& lifted = view3d_.lifted(planar, session_->scene_builds(),
+                                        max_vertex_markers_for(camera_.width(), camera_.height()));
   lifted.visible = session_->options().layers;
   return lifted;
 }
