@@ -296,9 +296,9 @@ void terrain_insertion(Builder& b) {
 
 void terrain_improvement(Builder& b, const char* when) {
   b.add(At::each, {when})
-      .add(At::removal_accept, {"    if removing v keeps errors within E, and the smallest 3D angle round v:"})
-      .add(At::removal_flip, {"        flip v's spokes away until v has degree 3"})
-      .add(At::removal_merge, {"        remove v: its three triangles become one"})
+      .add(At::removal_accept, {"    if removing v keeps errors within E, not lowering its least 3D angle:"})
+      .add(At::removal_flip, {"        flip v's spokes away to degree 3, then remove v: 3 triangles → 1"})
+      .also(At::removal_merge)
       .add(At::flip_3d, {"then, with --flips: flip edges that raise the smallest 3D angle, within E"});
 }
 
@@ -311,8 +311,9 @@ Entry lepp_surface() {
       .add(At::bad, {kWorstLoop})
       .add(At::lepp, {"    follow Lepp(t): across longest edges (3D lengths) to the terminal edge e"})
       .add(At::terminal_worst, {"    if a terminal triangle misses the bound: s ← its worst sample"})
-      .add(At::terminal_point, {"    else: s ← the sample nearest the terminal point, the centroid of",
-                                "        the terminal triangles (or e's midpoint); taken: t's worst"});
+      .add(At::terminal_point, {"    else: s ← the sample nearest the terminal point, the terminal",
+                                "        triangles' centroid (or e's midpoint, if the run asked for it);",
+                                "        s a vertex already or without data: s ← t's own worst sample"});
   terrain_insertion(b);
   terrain_improvement(b, "improve: for each vertex v off the border, in up to three rounds:");
   return b.take();

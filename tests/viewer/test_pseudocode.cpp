@@ -566,7 +566,7 @@ TEST(PseudoCode, LeppSurfaceLinesSayWhyTheSampleWentWhereItDid) {
   ASSERT_LT(height, log->event_count());
   EXPECT_TRUE(contains(highlighted(pseudocode_at(*log, height + 1)), "s takes its height"));
   // The improvement and the 3D flips.
-  EXPECT_TRUE(contains(line_of_first(*log, EventType::remove_vertex), "remove v"));
+  EXPECT_TRUE(contains(line_of_first(*log, EventType::remove_vertex), "then remove v"));
   EXPECT_TRUE(contains(line_of_first(*log, EventType::flip, code(FlipReason::vertex_removal)), "flip v's spokes"));
   EXPECT_TRUE(contains(line_of_first(*log, EventType::flip, code(FlipReason::angles_3d)), "smallest 3D angle"));
   // A step's beginning highlights what the step decides.
