@@ -93,8 +93,11 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
     draw_view_controls();
     int color = static_cast<int>(session_->options().color_by);
     static const char* const kColorNames[] = {"none", "smallest angle", "quality (vs bound)", "area", "region", "age"};
-    if (ImGui::Combo("colour by (C)", &color, kColorNames, IM_ARRAYSIZE(kColorNames)))
+    // In 3D the surface is coloured by its heights: the colouring waits for 2D.
+    ImGui::BeginDisabled(view3d_.on());
+    if (ImGui::Combo(view3d_.on() ? "colour by (2D)" : "colour by (C)", &color, kColorNames, IM_ARRAYSIZE(kColorNames)))
       session_->set_color_by(static_cast<scene::ColorBy>(color));
+    ImGui::EndDisabled();
     bool dark = session_->options().theme == scene::Theme::dark;
     if (ImGui::Checkbox("dark theme (T)", &dark)) session_->set_theme(dark ? scene::Theme::dark : scene::Theme::light);
     ImGui::SameLine();

@@ -180,6 +180,7 @@ void Viewer::say(const char* text) {
 }
 
 void Viewer::cycle_color_by(int direction) {
+  if (view3d_.on()) say("in 3D the surface is coloured by its heights: the colouring shows in 2D (V)");
   const int n = static_cast<int>(scene::ColorBy::count_);
   const int now = static_cast<int>(session_->options().color_by);
   session_->set_color_by(static_cast<scene::ColorBy>(((now + direction) % n + n) % n));
@@ -204,6 +205,8 @@ void Viewer::fit_camera(int width, int height) {
 // Keeps the faces the current step changed in view: pans when they leave the middle 80% of
 // the canvas, and zooms out when they do not fit.
 void Viewer::follow_step() {
+  // Just after switching to 3D, the worker's picture (and its points) may still be planar.
+  if (view3d_.on() && worker_ && !picture_in_3d_) return;
   const scene::Scene& s = shown_scene();
   BBox box;
   for (const std::uint32_t t : s.highlighted)
