@@ -62,7 +62,8 @@ std::string CanvasWorker::error() const {
   return error_;
 }
 
-void CanvasWorker::draw(const CanvasRequest& wanted, Session& session, render::Renderer& renderer, CanvasPicture& out) {
+void CanvasWorker::draw(const CanvasRequest& wanted, Session& session, View3d& view, render::Renderer& renderer,
+                        CanvasPicture& out) {
   session.seek(wanted.position);
   session.set_color_by(wanted.color_by);
   session.set_theme(wanted.theme);
@@ -75,11 +76,21 @@ void CanvasWorker::draw(const CanvasRequest& wanted, Session& session, render::R
   out.stats = stats_;
   out.moment.scene.visible = wanted.layers;
   out.request = wanted;
+  // In 3D the picture is the lifted scene, handed back with the planar moment (whose words
+  // and mesh the inspector reads). The lift is kept while only the camera changes; the copy
+  // into the picture (its buffers reused) costs little beside the drawing.
+  const bool in_3d = wanted.in_3d && view.available();
+  if (in_3d) {
+    view.set_orbit(wanted.orbit);
+    out.lifted = view.lifted(out.moment.scene, out.moment.serial, max_vertex_markers_for(wanted.width, wanted.height));
+    out.lifted.visible = wanted.layers;
+  }
+  const scene::Scene& drawn = in_3d ? out.lifted : out.moment.scene;
   const scene::Camera camera =
-      wanted.fit ? scene::Camera::fit(out.moment.scene.bounds, wanted.width, wanted.height,
-                                      scene::layout(out.moment.scene, wanted.width, wanted.height).margins)
+      wanted.fit ? scene::Camera::fit(drawn.bounds, wanted.width, wanted.height,
+                                      scene::layout(drawn, wanted.width, wanted.height).margins)
                  : wanted.camera();
-  renderer.render(out.moment.scene, camera);
+  renderer.render(drawn, camera);
   renderer.read_pixels(out.image);
 }
 
@@ -93,6 +104,7 @@ void CanvasWorker::run() {
   std::unique_ptr<render::GlContext> context;
   std::unique_ptr<render::Renderer> renderer;
   std::unique_ptr<Session> session;
+  std::unique_ptr<View3d> view;  // of the session's log
   const auto fail = [&](const char* what, const std::exception& e) {
     {
       const std::lock_guard lock(mutex_);
@@ -104,7 +116,10 @@ void CanvasWorker::run() {
     context = backend_ == "osmesa" ? render::make_osmesa_context() : render::make_egl_worker_context();
     context->make_current_with_loaded_functions();
     renderer = std::make_unique<render::Renderer>();
-    if (follow_ == Follow::fixed_log) session = Session::open_log(log_path_);
+    if (follow_ == Follow::fixed_log) {
+      session = Session::open_log(log_path_);
+      view = std::make_unique<View3d>(session->log());
+    }
   } catch (const std::exception& e) {
     fail("the canvas's worker could not start: ", e);
     return;
@@ -128,11 +143,12 @@ void CanvasWorker::run() {
         // or gone (renamed when the run ended): no picture this time.
         try {
           session = Session::open_log(log_path_);
+          view = std::make_unique<View3d>(session->log());
         } catch (const std::exception&) {
           drawn = false;
         }
       }
-      if (drawn) draw(wanted, *session, *renderer, out);
+      if (drawn) draw(wanted, *session, *view, *renderer, out);
     } catch (const std::exception& e) {
       fail("the canvas could not be drawn: ", e);
       break;

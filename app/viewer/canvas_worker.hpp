@@ -19,6 +19,7 @@
 #include "meshstep/scene/image.hpp"
 #include "mesh_stats.hpp"
 #include "session.hpp"
+#include "view_3d.hpp"
 
 namespace meshstep::render {
 class Renderer;
@@ -35,6 +36,10 @@ struct CanvasRequest {
   double pixels_per_unit = 1.0;
   int width = 0, height = 0;
   bool fit = false;              // the camera fitted to the picture's scene instead
+  // A terrain's run in 3D: the moment lifted onto its heights, as the orbit sees it (the
+  // camera is then in the orbit's screen plane).
+  bool in_3d = false;
+  Orbit orbit;
   std::uint32_t generation = 0;  // a new one asks again for the same (a log that grew)
   friend bool operator==(const CanvasRequest&, const CanvasRequest&) = default;
 
@@ -43,7 +48,8 @@ struct CanvasRequest {
 
 struct CanvasPicture {
   CanvasRequest request;
-  Session::Moment moment;  // the scene and words of request.position
+  Session::Moment moment;  // the scene and words of request.position (planar)
+  scene::Scene lifted;     // request.in_3d: the scene drawn, moment.scene lifted (else stale)
   Stats stats;             // of the moment's mesh
   scene::Image image;      // rows top to bottom, request.width x request.height
 };
@@ -76,7 +82,8 @@ class CanvasWorker {
 
  private:
   void run();
-  void draw(const CanvasRequest& wanted, Session& session, render::Renderer& renderer, CanvasPicture& out);
+  void draw(const CanvasRequest& wanted, Session& session, View3d& view, render::Renderer& renderer,
+            CanvasPicture& out);
 
   const std::string log_path_, backend_;
   const Follow follow_;

@@ -21,14 +21,23 @@ bool valid(const scene::MeshLayer& mesh, const std::array<std::uint32_t, 3>& t) 
   return t[0] < mesh.points.size() && t[1] < mesh.points.size() && t[2] < mesh.points.size();
 }
 
-// Edge i of a triangle runs from its vertex i to vertex i + 1.
-int longest_edge(const scene::MeshLayer& mesh, const std::array<std::uint32_t, 3>& t) {
+// Edge i of a triangle runs from its vertex i to vertex i + 1. With heights, edges are
+// measured in 3D and ties go to the smaller vertex ids, both as Lepp-surface has them
+// (terrain/tin_builder.hpp), so that the path is the one the run followed.
+int longest_edge(const scene::MeshLayer& mesh, const std::array<std::uint32_t, 3>& t, std::span<const double> heights) {
   int best = 0;
-  double longest = -1.0;
+  std::array<double, 3> longest{-1.0, 0.0, 0.0};
   for (int i = 0; i < 3; ++i) {
-    const double l = distance2(mesh.points[t[i]], mesh.points[t[(i + 1) % 3]]);
-    // Ties go to the lowest vertex pair, so that both triangles of an edge agree.
-    if (l > longest) best = i, longest = l;
+    const std::uint32_t u = t[i], w = t[(i + 1) % 3];
+    const Point &p = mesh.points[u], &q = mesh.points[w];
+    std::array<double, 3> key{distance2(p, q), 0.0, 0.0};
+    if (u < heights.size() && w < heights.size()) {
+      const double dz = heights[u] - heights[w];
+      key = {(p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y) + dz * dz, -static_cast<double>(std::min(u, w)),
+             -static_cast<double>(std::max(u, w))};
+    }
+    // In the plane, ties go to the first edge of the triangle.
+    if (key > longest) best = i, longest = key;
   }
   return best;
 }
@@ -57,6 +66,34 @@ Picked pick(const scene::MeshLayer& mesh, Point at, double radius) {
     }
   }
   return vertex.kind != Picked::Kind::none ? vertex : triangle;
+}
+
+Picked pick_front(const scene::MeshLayer& shown, Point at, double radius) {
+  for (std::size_t k = shown.triangles.size(); k-- > 0;) {
+    const auto& v = shown.triangles[k];
+    if (!valid(shown, v)) continue;
+    const Point &a = shown.points[v[0]], &b = shown.points[v[1]], &c = shown.points[v[2]];
+    if (!(orient2d(a, b, at) >= 0 && orient2d(b, c, at) >= 0 && orient2d(c, a, at) >= 0)) continue;
+    Picked picked{Picked::Kind::triangle, static_cast<std::uint32_t>(k)};
+    double nearest = radius * radius;
+    for (const std::uint32_t i : v)
+      if (const double d = distance2(shown.points[i], at); d <= nearest) {
+        nearest = d;
+        picked = {Picked::Kind::vertex, i};
+      }
+    return picked;
+  }
+  return {};
+}
+
+std::uint32_t find_triangle(const scene::MeshLayer& mesh, std::array<std::uint32_t, 3> vertices) {
+  std::sort(vertices.begin(), vertices.end());
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    auto v = mesh.triangles[t];
+    std::sort(v.begin(), v.end());
+    if (v == vertices) return t;
+  }
+  return kNoIndex;
 }
 
 namespace {
@@ -133,7 +170,7 @@ TriangleFacts triangle_facts(const scene::MeshLayer& mesh, std::uint32_t triangl
   return f;
 }
 
-LeppPath lepp_path(const scene::MeshLayer& mesh, std::uint32_t triangle) {
+LeppPath lepp_path(const scene::MeshLayer& mesh, std::uint32_t triangle, std::span<const double> heights) {
   LeppPath path;
   if (triangle >= mesh.triangles.size() || !valid(mesh, mesh.triangles[triangle])) return path;
   // Each edge's triangles (two at most in a valid mesh).
@@ -151,7 +188,7 @@ LeppPath lepp_path(const scene::MeshLayer& mesh, std::uint32_t triangle) {
   for (std::size_t guard = 0; guard <= mesh.triangles.size(); ++guard) {
     path.triangles.push_back(t);
     const auto& v = mesh.triangles[t];
-    const int e = longest_edge(mesh, v);
+    const int e = longest_edge(mesh, v, heights);
     path.a = v[static_cast<std::size_t>(e)];
     path.b = v[static_cast<std::size_t>((e + 1) % 3)];
     const auto& across = edges.at(edge_key(path.a, path.b));
@@ -161,7 +198,7 @@ LeppPath lepp_path(const scene::MeshLayer& mesh, std::uint32_t triangle) {
       return path;
     }
     const auto& w = mesh.triangles[next];
-    const int f = longest_edge(mesh, w);
+    const int f = longest_edge(mesh, w, heights);
     if (edge_key(w[static_cast<std::size_t>(f)], w[static_cast<std::size_t>((f + 1) % 3)]) == edge_key(path.a, path.b)) {
       path.triangles.push_back(next);  // the terminal pair
       return path;

@@ -39,6 +39,16 @@ std::vector<MeshEdge> constrained_edges(const scene::Scene& scene);
 Picked pick(const scene::MeshLayer& mesh, std::span<const MeshEdge> edges, Point at, double vertex_radius,
             double edge_radius);
 
+// What is under a point of a 3D view's picture. `shown` is the lifted mesh (scene/lift.hpp):
+// its points are the vertices on screen, index for index; its triangles go back to front,
+// each counterclockwise on screen. The front triangle that holds `at` (the last drawn), or a
+// vertex of it within `radius` of `at`; nothing when no triangle holds it. A vertex hidden
+// behind a ridge is not picked through it. A triangle's index is into shown.triangles.
+Picked pick_front(const scene::MeshLayer& shown, Point at, double radius);
+
+// The triangle of `mesh` with these three vertices (in any order), or kNoIndex.
+std::uint32_t find_triangle(const scene::MeshLayer& mesh, std::array<std::uint32_t, 3> vertices);
+
 struct TriangleFacts {
   std::array<std::uint32_t, 3> vertices{};
   std::array<double, 3> angles{};  // at each vertex, degrees
@@ -52,7 +62,8 @@ struct LeppPath {
   std::uint32_t a = 0, b = 0;            // the terminal edge's vertices
   bool boundary = false;                 // the terminal edge has one triangle
 };
-// The triangles' neighbours are found from the mesh (an edge map, built per call).
-LeppPath lepp_path(const scene::MeshLayer& mesh, std::uint32_t triangle);
+// The triangles' neighbours are found from the mesh (an edge map, built per call). With
+// `heights` (a terrain's, by vertex), edges are measured in 3D as Lepp-surface measures them.
+LeppPath lepp_path(const scene::MeshLayer& mesh, std::uint32_t triangle, std::span<const double> heights = {});
 
 }  // namespace meshstep::viewer

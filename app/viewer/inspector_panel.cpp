@@ -32,13 +32,48 @@ void Viewer::select_at(Point world) {
   const bool canvas_known = camera_.width() > 1;
   if (fit_pending_ && canvas_known) fit_camera(camera_.width(), camera_.height());
   const double pixel = canvas_known ? 1.0 / camera_.pixels_per_unit() : 0.0;
-  selected_ = pick(s.mesh, constrained_edges(s), world, 8.0 * pixel, 5.0 * pixel);
+  // World points are the plane's, in 3D too: the camera's pixels are about the same size.
+  select(pick(s.mesh, constrained_edges(s), world, 8.0 * pixel, 5.0 * pixel));
+}
+
+void Viewer::select(const Picked& picked) {
+  const scene::Scene& s = session_->scene();
+  selected_ = picked;
   lepp_ = {};
   if (selected_.kind == Picked::Kind::triangle) {
     selected_vertices_ = s.mesh.triangles[selected_.index];
-    lepp_ = lepp_path(s.mesh, selected_.index);
+    lepp_ = lepp_path(s.mesh, selected_.index, view3d_.heights());
   }
   selection_build_ = session_->scene_builds();
+}
+
+// What is under a pixel of the canvas, named as the inspector names it: a triangle of the
+// session's (planar) scene, a vertex by its id, a segment by its ends. In 3D, the front
+// triangle on the picture or a vertex of it (no segments: a terrain has none).
+void Viewer::pick_under(Point screen, Picked& picked) {
+  const scene::Scene& s = session_->scene();
+  const Point at = camera_.to_world(screen);
+  const double pixel = 1.0 / camera_.pixels_per_unit();
+  if (!view3d_.on()) {
+    if (hover_edges_build_ != session_->scene_builds()) {  // the segments, found once per scene
+      hover_edges_ = constrained_edges(s);
+      hover_edges_build_ = session_->scene_builds();
+    }
+    picked = pick(s.mesh, hover_edges_, at, 8.0 * pixel, 5.0 * pixel);
+    return;
+  }
+  // Before the worker's first 3D picture, the canvas still shows the planar one.
+  if (worker_ && !picture_in_3d_) {
+    picked = {};
+    return;
+  }
+  const scene::Scene& shown = shown_scene();
+  picked = pick_front(shown.mesh, at, 8.0 * pixel);
+  if (picked.kind == Picked::Kind::triangle) {
+    // Lifted triangles are in drawing order: the planar one has the same three vertices.
+    const std::uint32_t t = find_triangle(s.mesh, shown.mesh.triangles[picked.index]);
+    picked = t == kNoIndex ? Picked{} : Picked{Picked::Kind::triangle, t};
+  }
 }
 
 // After the scene changed: the selected triangle is looked for by its vertices (gone: the
@@ -50,16 +85,10 @@ void Viewer::refresh_selection() {
   selection_build_ = session_->scene_builds();
   hovered_ = {};
   if (selected_.kind != Picked::Kind::triangle) return;
-  auto sorted = selected_vertices_;
-  std::sort(sorted.begin(), sorted.end());
-  for (std::uint32_t t = 0; t < s.mesh.triangles.size(); ++t) {
-    auto v = s.mesh.triangles[t];
-    std::sort(v.begin(), v.end());
-    if (v == sorted) {
-      selected_.index = t;
-      lepp_ = lepp_path(s.mesh, t);
-      return;
-    }
+  if (const std::uint32_t t = find_triangle(s.mesh, selected_vertices_); t != kNoIndex) {
+    selected_.index = t;
+    lepp_ = lepp_path(s.mesh, t, view3d_.heights());
+    return;
   }
   selected_ = {};
   lepp_ = {};
@@ -69,9 +98,14 @@ void Viewer::refresh_selection() {
 // with the pointer; the renderer's picture stays as it is).
 void Viewer::draw_selection_overlay(float x, float y) {
   const scene::Scene& s = session_->scene();
+  // Where the vertices are in the picture: the shown scene's points (in 3D the lifted ones,
+  // index for index the planar scene's). Nothing while the worker's picture is of the other
+  // view (just after a switch).
+  if (worker_ && view3d_.on() != picture_in_3d_) return;
+  const std::vector<Point>& points = shown_scene().mesh.points;
   ImDrawList& draw = *ImGui::GetWindowDrawList();
   const auto screen = [&](std::uint32_t v) {
-    const Point p = camera_.to_screen(s.mesh.points[v]);
+    const Point p = camera_.to_screen(points[v]);
     return ImVec2(static_cast<float>(p.x) + x, static_cast<float>(p.y) + y);
   };
   const auto outline = [&](std::uint32_t t, ImU32 colour, float width) {

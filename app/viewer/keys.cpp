@@ -60,6 +60,16 @@ std::vector<KeyAction> make_actions() {
     Session& s = v.session();
     s.set_theme(s.options().theme == scene::Theme::light ? scene::Theme::dark : scene::Theme::light);
   });
+  // The 3D view of a terrain's run (view_3d.hpp). Ctrl and the arrows turn it (the arrows
+  // alone step through the run); Z stretches the heights, as terrain is often flat.
+  add({GLFW_KEY_V}, "V", "2D / 3D view (a terrain's run)", [](Viewer& v) { v.set_view_3d(!v.view_3d()); });
+  add({GLFW_KEY_LEFT, false, true}, "Ctrl+Left", "3D: azimuth -15\u00B0", [](Viewer& v) { v.turn_orbit(-15.0, 0.0); });
+  add({GLFW_KEY_RIGHT, false, true}, "Ctrl+Right", "3D: azimuth +15\u00B0", [](Viewer& v) { v.turn_orbit(15.0, 0.0); });
+  add({GLFW_KEY_UP, false, true}, "Ctrl+Up", "3D: elevation +5\u00B0 (more from above)",
+      [](Viewer& v) { v.turn_orbit(0.0, 5.0); });
+  add({GLFW_KEY_DOWN, false, true}, "Ctrl+Down", "3D: elevation -5\u00B0", [](Viewer& v) { v.turn_orbit(0.0, -5.0); });
+  add({GLFW_KEY_Z}, "Z", "3D: heights twice as high", [](Viewer& v) { v.scale_heights(2.0); });
+  add({GLFW_KEY_Z, true}, "Shift+Z", "3D: heights half as high", [](Viewer& v) { v.scale_heights(0.5); });
   // Layers on F2..F11, in the scene's layer order.
   static constexpr std::array<const char*, scene::kLayerCount> kLayerKeys = {"F2", "F3", "F4", "F5", "F6",
                                                                               "F7", "F8", "F9", "F10", "F11"};

@@ -71,10 +71,12 @@ int main(int argc, char** argv) {
   app.footer(
       "Keys: Space play/pause, Left/Right a step, Shift+Left/Right an event, Page Up/Down a phase,\n"
       "Home/End, +/- speed, F fit, L follow, C colouring, F2-F11 layers, 1-9 bookmarks (Ctrl+1-9 set),\n"
+      "V 2D/3D (a terrain's run: Ctrl+arrows turn it, Z/Shift+Z stretch the heights, drag to turn),\n"
       "? all keys.\n"
       "Examples:\n"
       "  meshstep view assets/examples/lesson.poly --algorithm offcenter --min-angle 30\n"
       "  meshstep view run.mslog --step 45\n"
+      "  meshstep terrain volcano.asc --max-error 1% --record v.mslog && meshstep view v.mslog\n"
       "  meshstep view run.mslog --offscreen --script tour.txt");
   try {
     app.parse(argc, argv);

@@ -44,6 +44,10 @@ enum class At : std::uint8_t {
   removal_accept,   // vertex removal: the plan is accepted
   removal_flip,     // vertex removal: flip a spoke away
   removal_merge,    // vertex removal: the vertex of degree 3 goes
+  terminal_worst,   // Lepp-surface: a terminal triangle's worst sample
+  terminal_point,   // Lepp-surface: the sample nearest the terminal point
+  height,           // terrain: the new vertex takes its sample's height
+  flip_3d,          // terrain: an edge flipped for the smallest 3D angle
   count_
 };
 
@@ -277,6 +281,56 @@ Entry vertex_removal() {
       .take();
 }
 
+// The terrains' programs share their start, their insertion and their improvement. A grid
+// sample has no choice of place: where a Delaunay program would locate a point, these
+// locate a sample, and where it is inserted the triangles round it are measured again.
+constexpr const char* kGridCorners = "T ← the grid's four corners: two Delaunay triangles, at their heights";
+constexpr const char* kWorstLoop = "while the worst triangle t misses the bound (its vertical error > E):";
+
+void terrain_insertion(Builder& b) {
+  b.add(At::insert, {"    locate s; split its triangle in 3 (s on an edge: its two in 4)"})
+      .also(At::locate)
+      .add(At::legalize, {"    while an edge fails the in-circle test: flip it"})
+      .add(At::height, {"    s takes its height; the new triangles' worst samples are measured"});
+}
+
+void terrain_improvement(Builder& b, const char* when) {
+  b.add(At::each, {when})
+      .add(At::removal_accept, {"    if removing v keeps errors within E, not lowering its least 3D angle:"})
+      .add(At::removal_flip, {"        flip v's spokes away to degree 3, then remove v: 3 triangles → 1"})
+      .also(At::removal_merge)
+      .add(At::flip_3d, {"then, with --flips: flip edges that raise the smallest 3D angle, within E"});
+}
+
+Entry lepp_surface() {
+  Builder b("Lepp-surface terrain approximation (Coll, Guerrieri, Rivara, Sellarès 2008)",
+            "N. Coll, M. Guerrieri, M.-C. Rivara, J. A. Sellarès, 17th International Meshing Roundtable (IMR), "
+            "2008; here triangles are ranked by their exact vertical error, and a terminal triangle that misses "
+            "the bound gives its worst sample (docs/terrain.md)");
+  b.add(At::start, {kGridCorners})
+      .add(At::bad, {kWorstLoop})
+      .add(At::lepp, {"    follow Lepp(t): across longest edges (3D lengths) to the terminal edge e"})
+      .add(At::terminal_worst, {"    if a terminal triangle misses the bound: s ← its worst sample"})
+      .add(At::terminal_point, {"    else: s ← the sample nearest the terminal point, the terminal",
+                                "        triangles' centroid (or e's midpoint, if the run asked for it);",
+                                "        s a vertex already or without data: s ← t's own worst sample"});
+  terrain_insertion(b);
+  terrain_improvement(b, "improve: for each vertex v off the border, in up to three rounds:");
+  return b.take();
+}
+
+Entry greedy_terrain() {
+  Builder b("Greedy insertion (Garland, Heckbert 1995)",
+            "M. Garland, P. S. Heckbert, \"Fast polygonal approximation of terrains and height fields\", "
+            "CMU-CS-95-181, Carnegie Mellon University, 1995");
+  b.add(At::start, {kGridCorners})
+      .add(At::bad, {kWorstLoop})
+      .add(At::select, {"    s ← t's worst sample: of all samples, the one of largest error"});
+  terrain_insertion(b);
+  terrain_improvement(b, "with --improve: for each vertex v off the border, in up to three rounds:");
+  return b.take();
+}
+
 constexpr std::size_t kProgramCount = static_cast<std::size_t>(Program::count_);
 
 // Every text, built once: [program][insertion].
@@ -298,6 +352,8 @@ const std::array<std::array<Entry, 2>, kProgramCount>& entries() {
     both(Program::lepp_centroid, lepp_delaunay(true, Insertion::flips), lepp_delaunay(true, Insertion::cavity));
     one(Program::lepp_bisection, lepp_bisection());
     one(Program::vertex_removal, vertex_removal());
+    one(Program::lepp_surface, lepp_surface());
+    one(Program::greedy_terrain, greedy_terrain());
     return t;
   }();
   return table;
@@ -366,7 +422,16 @@ struct Choice {
   Insertion insertion;
 };
 
+// A terrain's program, by the algorithm the header names; nullopt for any other run.
+std::optional<Program> terrain_program(const replay::LogReader& log) {
+  if (!log.has_elevation()) return std::nullopt;
+  if (log.header().algorithm == "lepp-surface") return Program::lepp_surface;
+  if (log.header().algorithm == "greedy") return Program::greedy_terrain;
+  return std::nullopt;
+}
+
 Choice program_for(const replay::LogReader& log, const replay::PhaseSpan* span) {
+  if (const std::optional<Program> terrain = terrain_program(log)) return {*terrain, Insertion::flips};
   const Phase phase = span ? span->phase : Phase::insert_vertices;
   switch (phase) {
     case Phase::recover_segments:
@@ -530,6 +595,62 @@ std::optional<At> removal_line(const Event& ev) {
   }
 }
 
+// A terrain's run: the four corners (the first two steps) are the start; each refinement
+// step opens with its worst triangle, its Lepp path and its sample; the improvement's
+// removals and the 3D flips are steps of their own.
+std::optional<At> terrain_line(const replay::LogReader& log, std::uint64_t e, const Event& ev) {
+  std::uint64_t step = 0;
+  const std::optional<StepKind> kind = step_kind_of(log, e, step);
+  const bool corners = !kind || kind == StepKind::start || kind == StepKind::insert_vertex;
+  switch (ev.type) {
+    case EventType::phase_begin:
+      if (static_cast<Phase>(ev.code) == Phase::refine) return At::bad;
+      // The improvement's phase, or that of the 3D flips after it (their steps follow).
+      if (e + 1 < log.event_count()) {
+        const Event next = log.event(e + 1);
+        if (next.type == EventType::step_begin && static_cast<StepKind>(next.code) == StepKind::flip_3d)
+          return At::flip_3d;
+      }
+      return At::each;
+    case EventType::step_begin:
+      switch (static_cast<StepKind>(ev.code)) {
+        case StepKind::start:
+        case StepKind::insert_vertex: return At::start;
+        case StepKind::refine: return At::bad;
+        case StepKind::remove_vertex: return At::removal_accept;
+        case StepKind::flip_3d: return At::flip_3d;
+        default: return kNoLine;
+      }
+    case EventType::criterion_test: return At::bad;
+    case EventType::lepp_path: return At::lepp;
+    case EventType::point_selected:
+      switch (static_cast<replay::SampleChoice>(ev.code)) {
+        case replay::SampleChoice::worst_sample: return At::select;
+        case replay::SampleChoice::terminal_worst: return At::terminal_worst;
+        case replay::SampleChoice::terminal_point:
+        case replay::SampleChoice::own_worst: return At::terminal_point;
+      }
+      return kNoLine;
+    case EventType::init:
+    case EventType::vertex:
+    case EventType::locate:
+    case EventType::split_face:
+    case EventType::split_edge:
+      if (corners) return At::start;
+      return ev.type == EventType::locate ? At::locate : At::insert;
+    case EventType::elevation: return corners ? At::start : At::height;
+    case EventType::flip:
+      switch (static_cast<FlipReason>(ev.code)) {
+        case FlipReason::delaunay: return corners ? At::start : At::legalize;
+        case FlipReason::vertex_removal: return At::removal_flip;
+        case FlipReason::angles_3d: return At::flip_3d;
+        default: return kNoLine;
+      }
+    case EventType::remove_vertex: return At::removal_merge;
+    default: return kNoLine;
+  }
+}
+
 }  // namespace
 
 const PseudoCode& pseudocode(Program program, Insertion insertion) {
@@ -569,6 +690,8 @@ CodeAt pseudocode_at(const replay::LogReader& log, std::uint64_t position) {
     }
     case Program::segment_recovery: role = recovery_line(log, e, ev); break;
     case Program::vertex_removal: role = removal_line(ev); break;
+    case Program::lepp_surface:
+    case Program::greedy_terrain: role = terrain_line(log, e, ev); break;
     default: role = refinement_line(log, e, ev, span); break;
   }
   if (!role) return at;

@@ -39,6 +39,8 @@ enum class Program : std::uint8_t {
   lepp_centroid,          // Lepp-Delaunay, terminal-triangles centroid
   lepp_bisection,         // Rivara's Lepp longest-edge bisection
   vertex_removal,         // improvement: removal of Steiner vertices
+  lepp_surface,           // terrain: Coll, Guerrieri, Rivara, Sellarès's Lepp-surface
+  greedy_terrain,         // terrain: Garland and Heckbert's greedy insertion
   count_
 };
 

@@ -1,5 +1,7 @@
 #include "script.hpp"
 
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -58,6 +60,20 @@ std::string check(const ScriptAction& a) {
   if (v == "unit") {
     if (n == 1 && (a.args[0] == "event" || a.args[0] == "step" || a.args[0] == "phase")) return "";
     return "expected: unit event|step|phase";
+  }
+  if (v == "view") {
+    if (n == 1 && (a.args[0] == "2d" || a.args[0] == "3d")) return "";
+    return "expected: view 2d|3d";
+  }
+  if (v == "orbit") {
+    if (n == 2 && is_number(a.args[0], true, true) && is_number(a.args[1], true, true) &&
+        std::abs(std::strtod(a.args[1].c_str(), nullptr)) <= 90.0)
+      return "";
+    return "expected: orbit AZ EL (degrees, the elevation from -90 to 90)";
+  }
+  if (v == "z-scale") {
+    if (n == 1 && is_number(a.args[0], false, true) && std::strtod(a.args[0].c_str(), nullptr) > 0.0) return "";
+    return "expected: z-scale K (a number > 0)";
   }
   if (v == "select") {
     if (n == 2 && is_number(a.args[0], true, true) && is_number(a.args[1], true, true)) return "";

@@ -13,10 +13,16 @@
 //   unit event|step|phase
 //   toggle-marks KIND   mark a kind on the timeline, or stop: splits, rejected, cavities,
 //                       flips, refine, triangulate (timeline_marks.hpp)
+//   view 2d|3d          the canvas in 2D, or in 3D (a terrain's run: a log with heights; for
+//                       any other the script stops, saying why)
+//   orbit AZ EL         the 3D view's azimuth and elevation, in degrees (elevation -90..90)
+//   z-scale K           the 3D view's heights multiplied by K (> 0)
 //   mouse X Y           move the pointer to pixel X, Y of the window
 //   click               press and release the left button where the pointer is
-//   select X Y          select what is at world point X, Y, as a click there does
-//   drag DX DY          drag with the left button by DX, DY pixels (over 4 frames)
+//   select X Y          select what is at world point X, Y, as a click there does (in 3D too,
+//                       X, Y are a point of the plane)
+//   drag DX DY          drag with the left button by DX, DY pixels (over 4 frames): pans in
+//                       2D, turns the orbit in 3D
 //   wheel N             turn the wheel N notches (positive: zoom in)
 //   screenshot FILE     the window with its UI, as PNG
 //   canvas FILE         the canvas alone (the renderer's picture), PNG or SVG

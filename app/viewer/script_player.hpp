@@ -108,6 +108,11 @@ class ScriptPlayer {
              verb == "wheel" || verb == "screenshot" || verb == "quit" || verb == "watch");
   }
 
+  static std::string no_heights(Viewer& viewer) {
+    return viewer.session().title() +
+           " has no heights: only a terrain's run (meshstep terrain GRID --record LOG) is seen in 3D";
+  }
+
   static std::string escaped(const std::string& s) {
     std::string out;
     for (const char c : s) {
@@ -262,12 +267,30 @@ class ScriptPlayer {
     }
     if (v == "canvas") {
       const std::string& file = a.args[0];
-      if (ends_with(file, ".svg")) io::write_file_atomically(file, scene::to_svg(viewer->session().scene(), viewer->camera()));
+      if (ends_with(file, ".svg")) io::write_file_atomically(file, scene::to_svg(viewer->shown_scene(), viewer->camera()));
       else scene::write_png(file, viewer->canvas_picture(), 6);
       return false;
     }
     if (v == "state" || v == "peek") {
       io::write_file_atomically(a.args[0], state_json(*viewer));
+      return false;
+    }
+    if (v == "view") {
+      if (!viewer->set_view_3d(a.args[0] == "3d"))
+        throw InputError(path_, static_cast<std::size_t>(a.line), "view 3d: " + no_heights(*viewer));
+      return false;
+    }
+    if (v == "orbit" || v == "z-scale") {
+      if (!viewer->can_view_3d())
+        throw InputError(path_, static_cast<std::size_t>(a.line), v + ": " + no_heights(*viewer));
+      Orbit orbit = viewer->orbit();
+      if (v == "orbit") {
+        orbit.azimuth_deg = std::strtod(a.args[0].c_str(), nullptr);
+        orbit.elevation_deg = std::strtod(a.args[1].c_str(), nullptr);
+      } else {
+        orbit.z_scale = std::strtod(a.args[0].c_str(), nullptr);
+      }
+      viewer->set_orbit(orbit);
       return false;
     }
     if (v == "select") {

@@ -90,6 +90,10 @@ std::string Viewer::selection_text() {
     const Point& p = s.mesh.points[v];
     std::snprintf(buf, sizeof buf, "vertex %u at (%.6g, %.6g)", v, p.x, p.y);
     std::string out = buf;
+    if (log && log->has_elevation() && v < log->vertices().size()) {
+      std::snprintf(buf, sizeof buf, ", height %.6g", log->vertices()[v].z);
+      out += buf;
+    }
     if (!log || v >= log->vertices().size()) return out + (log ? "" : ", of the mesh");
     const replay::VertexInfo& info = log->vertices()[v];
     const std::uint64_t inputs = std::strtoull(log->parameter("input_vertices", "0").c_str(), nullptr, 10);

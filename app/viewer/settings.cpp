@@ -274,6 +274,10 @@ Problem apply(Settings& s, std::string_view key, std::string_view value) {
   if (key == "code_open") return parse_bool(key, value, s.code_open);
   if (key == "plots_open") return parse_bool(key, value, s.plots_open);
   if (key == "follow") return parse_bool(key, value, s.follow);
+  if (key == "view_3d") return parse_bool(key, value, s.view_3d);
+  if (key == "azimuth") return parse_real(key, value, -180.0, 180.0, s.orbit.azimuth_deg);
+  if (key == "elevation") return parse_real(key, value, -90.0, 90.0, s.orbit.elevation_deg);
+  if (key == "z_scale") return parse_real(key, value, Orbit::kMinZScale, Orbit::kMaxZScale, s.orbit.z_scale);
   if (key == "speed") return parse_real(key, value, Playback::kMinSpeed, Playback::kMaxSpeed, s.speed);
   if (key == "layers") return parse_layers(value, s.layers);
   if (key == "timeline_marks") {
@@ -471,6 +475,10 @@ std::string format_settings(const Settings& s) {
   line("unit", file_name(s.unit));
   line("follow", boolean(s.follow));
   line("timeline_marks", format_marks(s.timeline_marks));
+  line("view_3d", boolean(s.view_3d));
+  line("azimuth", format_real(s.orbit.azimuth_deg));
+  line("elevation", format_real(s.orbit.elevation_deg));
+  line("z_scale", format_real(s.orbit.z_scale));
   // As load_settings would keep them: no empty paths, no duplicates, the first ten.
   std::vector<std::string> written;
   for (const std::string& path : s.recent_files) {

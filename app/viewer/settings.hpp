@@ -17,6 +17,10 @@
 //   unit = step
 //   follow = false
 //   timeline_marks = splits, rejected
+//   view_3d = true
+//   azimuth = -60
+//   elevation = 35
+//   z_scale = 2
 //   recent = /home/me/runs/square log.msl
 //   recent = /home/me/runs/key.msl
 //
@@ -33,6 +37,7 @@
 #include "meshstep/scene/scene.hpp"
 #include "session.hpp"
 #include "timeline_marks.hpp"
+#include "view_3d.hpp"
 
 namespace meshstep::viewer {
 
@@ -52,6 +57,9 @@ struct Settings {
   Unit unit = Unit::step;
   bool follow = false;
   MarkSet timeline_marks = MarkSet::defaults();  // the kinds the timeline marks
+  // A terrain's run is seen in 3D (logs without heights stay 2D), from this orbit.
+  bool view_3d = false;
+  Orbit orbit;
   std::vector<std::string> recent_files;  // most recent first, at most kMaxRecent, no duplicates
 
   // Puts `path` first (moving it there if it is already in the list) and drops the oldest

@@ -90,10 +90,14 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
 
   ImGui::SetNextItemOpen(layers_open_);
   if ((layers_open_ = ImGui::CollapsingHeader("Layers and colours"))) {
+    draw_view_controls();
     int color = static_cast<int>(session_->options().color_by);
     static const char* const kColorNames[] = {"none", "smallest angle", "quality (vs bound)", "area", "region", "age"};
-    if (ImGui::Combo("colour by (C)", &color, kColorNames, IM_ARRAYSIZE(kColorNames)))
+    // In 3D the surface is coloured by its heights: the colouring waits for 2D.
+    ImGui::BeginDisabled(view3d_.on());
+    if (ImGui::Combo(view3d_.on() ? "colour by (2D)" : "colour by (C)", &color, kColorNames, IM_ARRAYSIZE(kColorNames)))
       session_->set_color_by(static_cast<scene::ColorBy>(color));
+    ImGui::EndDisabled();
     bool dark = session_->options().theme == scene::Theme::dark;
     if (ImGui::Checkbox("dark theme (T)", &dark)) session_->set_theme(dark ? scene::Theme::dark : scene::Theme::light);
     ImGui::SameLine();
@@ -124,6 +128,37 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
     draw_run_plots(w - 24.0f);
   }
   ImGui::End();
+}
+
+// The 3D view's switch and orbit (a terrain's run; disabled for others, saying why).
+void Viewer::draw_view_controls() {
+  const bool available = view3d_.available();
+  bool on = view3d_.on();
+  ImGui::BeginDisabled(!available);
+  if (ImGui::Checkbox("3D view (V)", &on)) set_view_3d(on);
+  ImGui::EndDisabled();
+  if (!available) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(a terrain's run only: it has heights)");
+    return;
+  }
+  if (!on) return;
+  Orbit orbit = view3d_.orbit();
+  bool changed = false;
+  ImGui::SetNextItemWidth(140.0f);
+  changed |= ImGui::DragScalar("azimuth (Ctrl+\u2190\u2192)", ImGuiDataType_Double, &orbit.azimuth_deg, 1.0f, nullptr,
+                               nullptr, "%.0f\u00B0");
+  ImGui::SetNextItemWidth(140.0f);
+  static constexpr double kLowest = -90.0, kHighest = 90.0;
+  changed |= ImGui::SliderScalar("elevation (Ctrl+\u2191\u2193)", ImGuiDataType_Double, &orbit.elevation_deg, &kLowest,
+                                 &kHighest, "%.0f\u00B0");
+  ImGui::SetNextItemWidth(140.0f);
+  static constexpr double kFlattest = 0.1, kSteepest = 100.0;
+  changed |= ImGui::SliderScalar("heights \u00D7 (Z, Shift+Z)", ImGuiDataType_Double, &orbit.z_scale, &kFlattest,
+                                 &kSteepest, "%.3g", ImGuiSliderFlags_Logarithmic);
+  if (changed) set_orbit(orbit);
+  ImGui::TextDisabled("drag: turn; right-drag: pan; wheel: zoom");
+  ImGui::Separator();
 }
 
 // The running algorithm's pseudo-code, the line of the cursor's event highlighted.
@@ -191,7 +226,7 @@ void Viewer::draw_export() {
   if (ImGui::Button("canvas SVG")) {
     const std::string file = export_name(base, step, "step", ".svg");
     try {
-      io::write_file_atomically(file, scene::to_svg(session_->scene(), camera_));
+      io::write_file_atomically(file, scene::to_svg(shown_scene(), camera_));
       export_status = "wrote " + file;
     } catch (const std::exception& e) {
       export_status = std::string("failed: ") + e.what();

@@ -94,10 +94,17 @@ std::string state_json(Viewer& v) {
   const scene::Camera& cam = v.camera();
   field("camera", "{\"x\": " + number(cam.center().x) + ", \"y\": " + number(cam.center().y) +
                       ", \"pixels_per_unit\": " + number(cam.pixels_per_unit()) + "}");
+  // The view: 2D, or 3D (a terrain's run) from the orbit; in 3D the camera is in the orbit's
+  // screen plane. The notice: why the last key did nothing, while the canvas shows it.
+  field("view", v.view_3d() ? "\"3d\"" : "\"2d\"");
+  field("view_3d_available", v.can_view_3d() ? "true" : "false");
+  field("orbit", "{\"azimuth\": " + number(v.orbit().azimuth_deg) + ", \"elevation\": " +
+                     number(v.orbit().elevation_deg) + ", \"z_scale\": " + number(v.orbit().z_scale) + "}");
+  field("notice", v.notice_shown() ? quoted(v.notice()) : "null");
   // Who drew the canvas, and which moment it shows (the cursor's, once settled).
   field("canvas", v.canvas_on_worker() ? "\"worker\"" : "\"main\"");
   field("shown_position", std::to_string(s.shown_position()));
-  field("caption", quoted(s.scene().caption));
+  field("caption", quoted(v.shown_scene().caption));
   const scene::Explanation& e = s.explanation();
   field("explain_heading", quoted(e.heading));
   std::string lines = "[";

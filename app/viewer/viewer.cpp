@@ -14,6 +14,8 @@ namespace meshstep::viewer {
 namespace {
 
 constexpr float kTimelineHeight = 122.0f;
+// How far a drag on the 3D canvas turns the orbit: a canvas's width is about a full turn.
+constexpr double kDegreesPerPixel = 0.5;
 // The box every vertex of the run lies in: a camera fitted to it holds still while the
 // mesh grows, as an exported animation does.
 BBox run_box(Session& session) {
@@ -28,7 +30,8 @@ BBox run_box(Session& session) {
 
 }  // namespace
 
-Viewer::Viewer(std::unique_ptr<Session> session, const CanvasOptions& canvas) : session_(std::move(session)) {
+Viewer::Viewer(std::unique_ptr<Session> session, const CanvasOptions& canvas)
+    : session_(std::move(session)), view3d_(session_->log()) {
   const replay::LogReader* log = session_->log();
   if (!log) return;
   angle_bound_ = std::strtod(log->parameter("min_angle", "0").c_str(), nullptr);
@@ -64,6 +67,10 @@ void Viewer::apply(const Settings& s) {
   layers_open_ = s.layers_open;
   stats_open_ = s.stats_open;
   code_open_ = s.code_open;
+  view3d_.set_orbit(s.orbit);
+  prefer_3d_ = s.view_3d;
+  // Quietly: the settings ask for 3D whenever a terrain's run is open.
+  if (view3d_.on() != (s.view_3d && view3d_.available())) set_view_3d(s.view_3d && view3d_.available());
 }
 
 void Viewer::capture(Settings& s) const {
@@ -79,9 +86,101 @@ void Viewer::capture(Settings& s) const {
   s.layers_open = layers_open_;
   s.stats_open = stats_open_;
   s.code_open = code_open_;
+  // A run without heights says nothing about the 3D view: the wish is kept for the next.
+  s.view_3d = view3d_.available() ? view3d_.on() : prefer_3d_;
+  s.orbit = view3d_.orbit();
+}
+
+bool Viewer::set_view_3d(bool on) {
+  if (on == view3d_.on()) return true;
+  if (on && !view3d_.available()) {
+    say(session_->log() ? "3D view: this run has no heights (a terrain's run has: meshstep terrain GRID --record LOG)"
+                        : "3D view: only for a terrain's recorded run (meshstep terrain GRID --record LOG)");
+    return false;
+  }
+  view3d_.set_on(on);
+  prefer_3d_ = on;
+  hovered_ = {};
+  if (on) {
+    // The 2D camera waits for the way back; the 3D one starts fitted.
+    camera_2d_ = camera_;
+    moved_2d_ = camera_moved_;
+    camera_moved_ = false;
+    fit_pending_ = true;
+  } else {
+    camera_ = camera_2d_;
+    camera_moved_ = moved_2d_;
+    if (!camera_moved_ || camera_.width() <= 1) fit_pending_ = true;
+  }
+  return true;
+}
+
+bool Viewer::set_orbit(const Orbit& orbit) {
+  if (!view3d_.available()) {
+    say("3D view: this run has no heights, so there is no orbit to turn");
+    return false;
+  }
+  if (view3d_.set_orbit(orbit)) orbit_changed();
+  return true;
+}
+
+bool Viewer::turn_orbit(double d_azimuth_deg, double d_elevation_deg) {
+  Orbit next = view3d_.orbit();
+  next.azimuth_deg += d_azimuth_deg;
+  next.elevation_deg += d_elevation_deg;
+  if (view3d_.available() && !view3d_.on()) {
+    say("the orbit turns the 3D view: press V to see it");
+    return false;
+  }
+  return set_orbit(next);
+}
+
+bool Viewer::scale_heights(double factor) {
+  Orbit next = view3d_.orbit();
+  next.z_scale *= factor;
+  if (view3d_.available() && !view3d_.on()) {
+    say("the heights' scale is the 3D view's: press V to see it");
+    return false;
+  }
+  return set_orbit(next);
+}
+
+// A new orbit: the whole run fitted again, unless the person zoomed or panned; then the
+// camera turns about the pivot, at the same zoom (view_3d.hpp says why).
+void Viewer::orbit_changed() {
+  if (!view3d_.on()) return;
+  if (!camera_moved_) {
+    if (camera_.width() > 1) fit_camera(camera_.width(), camera_.height());
+    else fit_pending_ = true;
+    return;
+  }
+  camera_ = scene::Camera(view3d_.pivot_on_screen(), camera_.pixels_per_unit(), camera_.width(), camera_.height());
+}
+
+// After a pan, a zoom or a follow: in 3D the pivot goes under the camera's new centre.
+void Viewer::camera_changed_by_hand() {
+  if (view3d_.on()) view3d_.aim(camera_);
+}
+
+const scene::Scene& Viewer::shown_scene() {
+  if (!view3d_.on()) return session_->scene();
+  // The worker's picture brings its lifted scene; until the first 3D one, the planar moment.
+  if (worker_) return picture_in_3d_ ? worker_lifted_ : session_->scene();
+  // The planar scene first: building it counts a build, which names the lift to keep.
+  const scene::Scene& planar = session_->scene();
+  scene::Scene& lifted = view3d_.lifted(planar, session_->scene_builds(),
+                                        max_vertex_markers_for(camera_.width(), camera_.height()));
+  lifted.visible = session_->options().layers;
+  return lifted;
+}
+
+void Viewer::say(const char* text) {
+  notice_ = text;
+  notice_seconds_ = 4.0;
 }
 
 void Viewer::cycle_color_by(int direction) {
+  if (view3d_.on()) say("in 3D the surface is coloured by its heights: the colouring shows in 2D (V)");
   const int n = static_cast<int>(scene::ColorBy::count_);
   const int now = static_cast<int>(session_->options().color_by);
   session_->set_color_by(static_cast<scene::ColorBy>(((now + direction) % n + n) % n));
@@ -90,8 +189,15 @@ void Viewer::cycle_color_by(int direction) {
 void Viewer::toggle_layer(scene::Layer layer) { session_->set_layer(layer, !session_->layer(layer)); }
 
 void Viewer::fit_camera(int width, int height) {
-  const scene::Scene& s = session_->scene();
-  camera_ = scene::Camera::fit(run_box(*session_), width, height, scene::layout(s, width, height).margins);
+  const scene::Scene& s = shown_scene();
+  if (view3d_.on()) {
+    // The run's box as the orbit sees it: still while stepping, new with each turn.
+    camera_ = scene::Camera::fit(view3d_.run_box(), width, height, scene::layout(s, width, height).margins);
+    view3d_.center_pivot();
+    view3d_.aim(camera_);
+  } else {
+    camera_ = scene::Camera::fit(run_box(*session_), width, height, scene::layout(s, width, height).margins);
+  }
   fit_pending_ = false;
   camera_moved_ = false;
 }
@@ -99,7 +205,9 @@ void Viewer::fit_camera(int width, int height) {
 // Keeps the faces the current step changed in view: pans when they leave the middle 80% of
 // the canvas, and zooms out when they do not fit.
 void Viewer::follow_step() {
-  const scene::Scene& s = session_->scene();
+  // Just after switching to 3D, the worker's picture (and its points) may still be planar.
+  if (view3d_.on() && worker_ && !picture_in_3d_) return;
+  const scene::Scene& s = shown_scene();
   BBox box;
   for (const std::uint32_t t : s.highlighted)
     if (t < s.mesh.triangles.size())
@@ -116,6 +224,7 @@ void Viewer::follow_step() {
   const double scale = need > 1.0 ? camera_.pixels_per_unit() / need : camera_.pixels_per_unit();
   camera_ = scene::Camera({0.5 * (box.lo.x + box.hi.x), 0.5 * (box.lo.y + box.hi.y)}, scale, camera_.width(),
                           camera_.height());
+  camera_changed_by_hand();
 }
 
 void Viewer::handle_keys() {
@@ -131,6 +240,7 @@ void Viewer::handle_keys() {
 void Viewer::frame(int width, int height, double seconds) {
   handle_keys();
   session_->advance(seconds);
+  notice_seconds_ = std::max(0.0, notice_seconds_ - seconds);
 
   const float side = std::min(side_panel_width_, 0.4f * static_cast<float>(width));
   const float timeline = session_->has_timeline() ? kTimelineHeight : 0.0f;
@@ -144,8 +254,18 @@ void Viewer::frame(int width, int height, double seconds) {
 
 void Viewer::post_canvas_request() {
   const scene::SceneOptions& o = session_->options();
-  worker_->request({session_->cursor_info().position, o.color_by, o.theme, o.layers, camera_.center(),
-                    camera_.pixels_per_unit(), camera_.width(), camera_.height()});
+  CanvasRequest wanted;
+  wanted.position = session_->cursor_info().position;
+  wanted.color_by = o.color_by;
+  wanted.theme = o.theme;
+  wanted.layers = o.layers;
+  wanted.center = camera_.center();
+  wanted.pixels_per_unit = camera_.pixels_per_unit();
+  wanted.width = camera_.width();
+  wanted.height = camera_.height();
+  wanted.in_3d = view3d_.on();
+  wanted.orbit = view3d_.orbit();
+  worker_->request(wanted);
 }
 
 // A finished picture: its moment becomes the session's scene and words, its pixels the
@@ -155,6 +275,12 @@ void Viewer::show_worker_picture() {
   stats_ = picture_.stats;
   picture_texture_.upload(picture_.image);
   ++canvas_renders_;
+  // Its lifted scene, swapped so that both keep their buffers. The first 3D picture may ask
+  // for a new fit: before it, the fit left room for the planar moment's caption and legend.
+  const bool was_3d = picture_in_3d_;
+  picture_in_3d_ = picture_.request.in_3d;
+  if (picture_in_3d_) std::swap(worker_lifted_, picture_.lifted);
+  if (picture_in_3d_ && !was_3d && view3d_.on() && !camera_moved_) fit_pending_ = true;
   if (!has_picture_) {
     has_picture_ = true;
     // The first fit had no caption or legend to leave room for.
@@ -196,7 +322,6 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
   }
   if (follow && session_->playback().playing) follow_step();
 
-  const scene::Scene& s = session_->scene();
   if (worker_) {
     if (const std::string why = worker_->error(); !why.empty()) {
       // The worker could not start or draw: this thread draws from now on.
@@ -212,10 +337,11 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
     if (has_picture_) opaque_image(picture_texture_.id(), ImVec2(w, h));
     else ImGui::InvisibleButton("##canvas", ImVec2(w, h));
   } else {
-    const Drawn now{session_->scene_builds(), s.visible.bits(), camera_.center().x, camera_.center().y,
-                    camera_.pixels_per_unit(), width, height};
+    const scene::Scene& shown = shown_scene();
+    const Drawn now{session_->scene_builds(), shown.visible.bits(), camera_.center().x, camera_.center().y,
+                    camera_.pixels_per_unit(), width, height, view3d_.on(), view3d_.orbit()};
     if (!(now == drawn_)) {
-      renderer_.render(s, camera_);
+      renderer_.render(shown, camera_);
       drawn_ = now;
       ++canvas_renders_;
     }
@@ -223,32 +349,48 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
   }
   const bool canvas_hovered = ImGui::IsItemHovered();
   if (worker_ && worker_->drawing()) draw_drawing_badge(x, y);
+  if (notice_shown()) draw_notice(x, y);
 
-  // Pan by dragging, zoom at the pointer with the wheel.
+  // 2D: drag to pan. 3D: drag to turn the orbit, right-drag to pan. The wheel zooms at the
+  // pointer in both.
   const ImGuiIO& io = ImGui::GetIO();
   refresh_selection();
+  const bool in_3d = view3d_.on();
   if (canvas_hovered) {
     const ImVec2 mouse = io.MousePos;
-    const Point world = camera_.to_world({mouse.x - x, mouse.y - y});
+    const Point at{mouse.x - x, mouse.y - y};
     if (io.MouseWheel != 0.0f) {
-      camera_.zoom_at({mouse.x - x, mouse.y - y}, std::pow(1.2, static_cast<double>(io.MouseWheel)));
+      camera_.zoom_at(at, std::pow(1.2, static_cast<double>(io.MouseWheel)));
       camera_moved_ = true;
+      camera_changed_by_hand();
     }
-    if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+    const bool moved = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f;
+    if (moved && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
+      // Dragging right turns the near side of the surface right; down looks more from above.
+      if (in_3d) {
+        turn_orbit(-kDegreesPerPixel * io.MouseDelta.x, kDegreesPerPixel * io.MouseDelta.y);
+      } else {
+        camera_.pan(io.MouseDelta.x, io.MouseDelta.y);
+        camera_moved_ = true;
+      }
+    }
+    if (moved && in_3d && ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f)) {
       camera_.pan(io.MouseDelta.x, io.MouseDelta.y);
       camera_moved_ = true;
+      camera_changed_by_hand();
     }
     // Hover: looked up again only when the pointer moves, and not in huge meshes (a scan).
-    if ((io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) && s.mesh.triangles.size() <= 200000) {
-      if (hover_edges_build_ != session_->scene_builds()) {  // the segments, found once per scene
-        hover_edges_ = constrained_edges(s);
-        hover_edges_build_ = session_->scene_builds();
-      }
-      const double pixel = 1.0 / camera_.pixels_per_unit();
-      hovered_ = pick(s.mesh, hover_edges_, world, 8.0 * pixel, 5.0 * pixel);
-    }
+    if (moved && session_->scene().mesh.triangles.size() <= 200000) pick_under(at, hovered_);
     // A click (pressed and released without a drag) selects.
-    if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f) select_at(world);
+    if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f) {
+      if (in_3d) {
+        Picked picked;
+        pick_under(at, picked);
+        select(picked);
+      } else {
+        select_at(camera_.to_world(at));
+      }
+    }
   } else {
     hovered_ = {};
   }
@@ -279,6 +421,17 @@ void Viewer::draw_drawing_badge(float x, float y) {
   draw.AddText(at, IM_COL32(255, 255, 255, 255), text);
 }
 
+// Why a key did nothing, at the canvas's bottom, fading out over its last second.
+void Viewer::draw_notice(float x, float y) {
+  const float alpha = static_cast<float>(std::min(1.0, notice_seconds_));
+  ImDrawList& draw = *ImGui::GetWindowDrawList();
+  const ImVec2 size = ImGui::CalcTextSize(notice_.c_str());
+  const ImVec2 at(x + 0.5f * (canvas_rect_.z - size.x), y + canvas_rect_.w - size.y - 20.0f);
+  draw.AddRectFilled(ImVec2(at.x - 8.0f, at.y - 5.0f), ImVec2(at.x + size.x + 8.0f, at.y + size.y + 5.0f),
+                     IM_COL32(30, 30, 30, static_cast<int>(220 * alpha)), 4.0f);
+  draw.AddText(at, IM_COL32(255, 255, 255, static_cast<int>(255 * alpha)), notice_.c_str());
+}
+
 void Viewer::draw_help() {
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
@@ -298,6 +451,7 @@ void Viewer::draw_help() {
     ImGui::EndTable();
   }
   ImGui::TextUnformatted("Drag the canvas to pan, turn the wheel to zoom at the pointer; drag the timeline to scrub.");
+  ImGui::TextUnformatted("In 3D (a terrain's run, V): drag to turn the view, right-drag to pan, the wheel zooms.");
   ImGui::End();
 }
 
@@ -306,7 +460,7 @@ scene::Image Viewer::canvas_picture() {
     settle_canvas();
     return picture_.image;
   }
-  renderer_.render(session_->scene(), camera_);
+  renderer_.render(shown_scene(), camera_);
   drawn_ = Drawn{};
   return renderer_.read_pixels();
 }

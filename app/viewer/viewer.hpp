@@ -30,6 +30,7 @@
 #include "session.hpp"
 #include "settings.hpp"
 #include "timeline.hpp"
+#include "view_3d.hpp"
 
 namespace meshstep::viewer {
 
@@ -71,6 +72,23 @@ class Viewer {
   void request_fit() { fit_pending_ = true; }
   void cycle_color_by(int direction);
   void toggle_layer(scene::Layer layer);
+
+  // The 3D view of a terrain's run (view_3d.hpp). Switching it on for a run without heights
+  // is refused: false, and the canvas says why (notice()). The orbit changes only where
+  // there is a 3D view; without one the canvas says so too.
+  bool can_view_3d() const { return view3d_.available(); }
+  bool view_3d() const { return view3d_.on(); }
+  bool set_view_3d(bool on);
+  const Orbit& orbit() const { return view3d_.orbit(); }
+  bool set_orbit(const Orbit& orbit);
+  bool turn_orbit(double d_azimuth_deg, double d_elevation_deg);
+  bool scale_heights(double factor);
+  // What the canvas shows: the session's scene, or in 3D that scene lifted (its points are
+  // then in the orbit's screen plane, as the camera's are).
+  const scene::Scene& shown_scene();
+  // A line the canvas shows for a few seconds: why a key did nothing.
+  const std::string& notice() const { return notice_; }
+  bool notice_shown() const { return notice_seconds_ > 0.0; }
 
   // Selects what is under a world point (a vertex within 8 pixels, else a segment within 5,
   // else the triangle), as a click on the canvas does; nothing there clears the selection.
@@ -129,6 +147,13 @@ class Viewer {
   void post_canvas_request();
   void show_worker_picture();
   void draw_drawing_badge(float x, float y);
+  void draw_notice(float x, float y);
+  void draw_view_controls();
+  void say(const char* text);
+  void orbit_changed();
+  void camera_changed_by_hand();
+  void pick_under(Point screen, Picked& picked);
+  void select(const Picked& picked);
 
   std::unique_ptr<Session> session_;
   render::Renderer renderer_;
@@ -142,6 +167,8 @@ class Viewer {
     std::uint32_t layers = 0;
     double cx = 0, cy = 0, scale = 0;
     int width = 0, height = 0;
+    bool in_3d = false;
+    Orbit orbit;
     friend bool operator==(const Drawn&, const Drawn&) = default;
   } drawn_;
   std::size_t canvas_renders_ = 0;
@@ -184,6 +211,16 @@ class Viewer {
   PictureTexture picture_texture_;
   bool has_picture_ = false, background_started_ = false;
   bool camera_moved_ = false;  // by the person, since the last fit
+  // The 3D view; the 2D camera, put back when the view goes back to 2D; whether the canvas's
+  // worker picture is a 3D one (it is, once drawn, what the 3D overlays go over).
+  View3d view3d_;
+  scene::Camera camera_2d_;
+  bool moved_2d_ = false;
+  bool prefer_3d_ = false;  // asked for (settings), kept for the next terrain run opened
+  scene::Scene worker_lifted_;
+  bool picture_in_3d_ = false;
+  std::string notice_;
+  double notice_seconds_ = 0.0;
 };
 
 }  // namespace meshstep::viewer

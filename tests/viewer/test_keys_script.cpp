@@ -55,6 +55,11 @@ TEST_F(ScriptFile, ReadsActionsSkippingCommentsAndBlankLines) {
   EXPECT_EQ(actions[0].args, (std::vector<std::string>{"step", "4"}));
   EXPECT_EQ(actions[0].line, 3);
   EXPECT_EQ(actions[3].verb, "quit");
+  // The 3D view's actions.
+  const auto view = read_script(write("view 3d\norbit -60.5 -90\nz-scale 2.5\nview 2d\n"));
+  ASSERT_EQ(view.size(), 4u);
+  EXPECT_EQ(view[1].args, (std::vector<std::string>{"-60.5", "-90"}));
+  EXPECT_EQ(view[2].verb, "z-scale");
 }
 
 TEST_F(ScriptFile, NamesTheFileAndLineOfAMistake) {
@@ -70,6 +75,10 @@ TEST_F(ScriptFile, NamesTheFileAndLineOfAMistake) {
       {"\n\nplay\n", ":3: expected: play N"},
       {"screenshot\n", ":1: expected: screenshot FILE"},
       {"drag 1\n", ":1: expected: drag X Y"},
+      {"view 4d\n", ":1: expected: view 2d|3d"},
+      {"orbit -60 95\n", ":1: expected: orbit AZ EL (degrees, the elevation from -90 to 90)"},
+      {"orbit -60\n", ":1: expected: orbit AZ EL"},
+      {"z-scale 0\n", ":1: expected: z-scale K (a number > 0)"},
   };
   for (const auto& c : cases) {
     try {

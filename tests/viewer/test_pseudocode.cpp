@@ -1,5 +1,6 @@
 // The pseudo-code panel's model: the programs' texts, and which program and line each event
-// of a recorded run of lesson.poly highlights, for every refinement algorithm.
+// of a recorded run of lesson.poly highlights, for every refinement algorithm; and of a
+// recorded terrain run, for both terrain algorithms.
 #include <gtest/gtest.h>
 
 #include <optional>
@@ -9,6 +10,7 @@
 #include "golden_runs.hpp"
 #include "meshstep/replay/replay.hpp"
 #include "pseudocode.hpp"
+#include "terrain_runs.hpp"
 
 namespace meshstep::viewer {
 namespace {
@@ -97,8 +99,8 @@ std::size_t columns(const std::string& text) {
 
 TEST(PseudoCode, EveryProgramHasATitleAReferenceAndASlideOfCode) {
   const std::vector<const PseudoCode*> all = all_pseudocode();
-  // Ten programs, the five Delaunay refinement ones once per insertion.
-  EXPECT_EQ(all.size(), 15u);
+  // Twelve programs, the five Delaunay refinement ones once per insertion.
+  EXPECT_EQ(all.size(), 17u);
   for (const PseudoCode* code : all) {
     ASSERT_TRUE(code);
     SCOPED_TRACE(code->title);
@@ -130,6 +132,10 @@ TEST(PseudoCode, EveryProgramHasATitleAReferenceAndASlideOfCode) {
   EXPECT_TRUE(contains(pseudocode(Program::lepp_midpoint).reference, "Hitschfeld"));
   EXPECT_TRUE(contains(pseudocode(Program::lepp_bisection).reference, "New longest-edge algorithms"));
   EXPECT_TRUE(contains(pseudocode(Program::vertex_removal).title, "Coll"));
+  EXPECT_TRUE(contains(pseudocode(Program::lepp_surface).title, "Coll, Guerrieri, Rivara, Sellarès 2008"));
+  EXPECT_TRUE(contains(pseudocode(Program::lepp_surface).reference, "Meshing Roundtable"));
+  EXPECT_TRUE(contains(pseudocode(Program::greedy_terrain).title, "Garland, Heckbert 1995"));
+  EXPECT_TRUE(contains(pseudocode(Program::greedy_terrain).reference, "terrains and height fields"));
   // A refinement program says how its points go in; the others have one text.
   EXPECT_NE(&pseudocode(Program::offcenter, Insertion::flips), &pseudocode(Program::offcenter, Insertion::cavity));
   EXPECT_EQ(&pseudocode(Program::lawson, Insertion::flips), &pseudocode(Program::lawson, Insertion::cavity));
@@ -475,6 +481,115 @@ TEST(PseudoCode, ImprovementShowsVertexRemoval) {
   const std::uint64_t selected =
       find_event(*log, [](std::uint64_t, const Event& ev) { return ev.type == EventType::point_selected; });
   EXPECT_EQ(pseudocode_at(*log, selected + 1).program, Program::circumcenter);
+}
+
+// --- Terrains ---------------------------------------------------------------------------
+
+constexpr const char* kLeppSurface = "--max-error 1 --flips";  // with the improvement (its default)
+constexpr const char* kGreedy = "--algorithm greedy --max-error 1 --improve --flips";
+
+// Walks every event of a terrain run: each one but a phase's end highlights a line of the
+// run's one program; together they reach every line of it. Returns the lines' text by
+// event type and code, for the tests below to look at.
+void expect_every_terrain_line_reached(const char* args, Program program) {
+  SCOPED_TRACE(args);
+  const replay::LogReader* log = testing::terrain_run(args);
+  ASSERT_TRUE(log);
+  ASSERT_TRUE(log->has_elevation());
+  const PseudoCode& code = pseudocode(program);
+  std::set<int> reached;
+  replay::Replay cursor(*log);
+  EXPECT_EQ(pseudocode_at(*log, cursor).program, program) << "before the first event";
+  for (std::uint64_t e = 0; e < log->event_count(); ++e) {
+    ASSERT_TRUE(cursor.next_event());
+    const CodeAt at = pseudocode_at(*log, cursor);
+    ASSERT_EQ(at.program, program) << "event " << e;
+    ASSERT_EQ(at.code, &code);
+    const Event ev = log->event(e);
+    if (ev.type == EventType::phase_end) {
+      EXPECT_EQ(at.line, -1) << "event " << e;
+      continue;
+    }
+    ASSERT_GE(at.line, 0) << "event " << e << ": " << replay::name(ev.type) << " " << replay::code_name(ev.type, ev.code);
+    ASSERT_LE(at.line + at.lines, static_cast<int>(code.lines.size())) << "event " << e;
+    for (int i = at.line; i < at.line + at.lines; ++i) reached.insert(i);
+  }
+  for (int i = 0; i < static_cast<int>(code.lines.size()); ++i)
+    EXPECT_TRUE(reached.count(i)) << "no event reaches line " << i << ": " << code.lines[static_cast<std::size_t>(i)];
+}
+
+TEST(PseudoCode, EveryLineOfTheTerrainProgramsIsReachedByARecordedRun) {
+  expect_every_terrain_line_reached(kLeppSurface, Program::lepp_surface);
+  expect_every_terrain_line_reached(kGreedy, Program::greedy_terrain);
+}
+
+// The first event of this type (and code, unless any) and the text it highlights.
+std::string line_of_first(const replay::LogReader& log, EventType type, int code = -1) {
+  const std::uint64_t e = find_event(log, [&](std::uint64_t, const Event& ev) {
+    return ev.type == type && (code < 0 || ev.code == code);
+  });
+  if (e >= log.event_count()) return "(no such event)";
+  return highlighted(pseudocode_at(log, e + 1));
+}
+
+TEST(PseudoCode, LeppSurfaceLinesSayWhyTheSampleWentWhereItDid) {
+  const replay::LogReader* log = testing::terrain_run(kLeppSurface);
+  ASSERT_TRUE(log);
+  using replay::SampleChoice;
+  const auto code = [](auto c) { return static_cast<int>(c); };
+  // The four corners, then each step's worst triangle, Lepp path and sample.
+  EXPECT_TRUE(contains(line_of_first(*log, EventType::init), "four corners"));
+  EXPECT_TRUE(contains(line_of_first(*log, EventType::criterion_test), "worst triangle t misses the bound"));
+  EXPECT_TRUE(contains(line_of_first(*log, EventType::lepp_path), "follow Lepp(t)"));
+  EXPECT_TRUE(contains(line_of_first(*log, EventType::lepp_path), "3D lengths"));
+  EXPECT_TRUE(contains(line_of_first(*log, EventType::point_selected, code(SampleChoice::terminal_worst)),
+                       "if a terminal triangle misses the bound: s ← its worst sample"));
+  const std::string nearest = line_of_first(*log, EventType::point_selected, code(SampleChoice::terminal_point));
+  EXPECT_TRUE(contains(nearest, "nearest the terminal point")) << nearest;
+  EXPECT_TRUE(contains(nearest, "centroid")) << nearest;
+  // The fourth corner goes in as the first line says; a sample by the insertion's lines:
+  // Delaunay by flips, then the sample's height.
+  EXPECT_TRUE(contains(line_of_first(*log, EventType::split_face), "four corners"));
+  const std::uint64_t split = find_event(*log, [&](std::uint64_t e, const Event& ev) {
+    return ev.type == EventType::split_face && in_phase(*log, e, Phase::refine);
+  });
+  ASSERT_LT(split, log->event_count());
+  EXPECT_TRUE(contains(highlighted(pseudocode_at(*log, split + 1)), "split its triangle in 3"));
+  const std::uint64_t refine = find_event(*log, [&](std::uint64_t e, const Event& ev) {
+    return ev.type == EventType::flip && in_phase(*log, e, Phase::refine);
+  });
+  ASSERT_LT(refine, log->event_count());
+  EXPECT_TRUE(contains(highlighted(pseudocode_at(*log, refine + 1)), "in-circle"));
+  const std::uint64_t height = find_event(*log, [&](std::uint64_t e, const Event& ev) {
+    return ev.type == EventType::elevation && in_phase(*log, e, Phase::refine);
+  });
+  ASSERT_LT(height, log->event_count());
+  EXPECT_TRUE(contains(highlighted(pseudocode_at(*log, height + 1)), "s takes its height"));
+  // The improvement and the 3D flips.
+  EXPECT_TRUE(contains(line_of_first(*log, EventType::remove_vertex), "then remove v"));
+  EXPECT_TRUE(contains(line_of_first(*log, EventType::flip, code(FlipReason::vertex_removal)), "flip v's spokes"));
+  EXPECT_TRUE(contains(line_of_first(*log, EventType::flip, code(FlipReason::angles_3d)), "smallest 3D angle"));
+  // A step's beginning highlights what the step decides.
+  const std::uint64_t removal = find_event(*log, [&](std::uint64_t, const Event& ev) {
+    return ev.type == EventType::step_begin && static_cast<replay::StepKind>(ev.code) == replay::StepKind::remove_vertex;
+  });
+  EXPECT_TRUE(contains(highlighted(pseudocode_at(*log, removal + 1)), "if removing v keeps errors within E"));
+  // No line of a planar program shows in a terrain run.
+  for (std::uint64_t e = 0; e < log->event_count(); e += 97)
+    EXPECT_EQ(pseudocode_at(*log, e + 1).program, Program::lepp_surface) << "event " << e;
+}
+
+TEST(PseudoCode, GreedyInsertsTheSampleOfLargestError) {
+  const replay::LogReader* log = testing::terrain_run(kGreedy);
+  ASSERT_TRUE(log);
+  const std::string selected = line_of_first(*log, EventType::point_selected);
+  EXPECT_TRUE(contains(selected, "s ← t's worst sample")) << selected;
+  EXPECT_TRUE(contains(selected, "largest error")) << selected;
+  for (const std::string& line : pseudocode(Program::greedy_terrain).lines)
+    EXPECT_FALSE(contains(line, "Lepp")) << line;
+  // The improvement is asked of greedy here: the program says it is optional.
+  EXPECT_TRUE(contains(line_of_first(*log, EventType::phase_begin, static_cast<int>(Phase::improve)),
+                       "with --improve"));
 }
 
 TEST(PseudoCode, PositionsPastTheEndAreTheLastEvent) {

@@ -103,6 +103,8 @@ Settings unusual() {
   s.unit = Unit::phase;
   s.follow = true;
   s.timeline_marks = MarkSet::none().set(Mark::rejected).set(Mark::flips).set(Mark::triangulate);
+  s.view_3d = true;
+  s.orbit = {-123.5, 12.25, 0.1 + 0.2};  // the scale not a short decimal either
   s.recent_files = {"/home/me/runs/square with spaces.msl",
                     " leading and trailing blanks\t",
                     "/a\nnewline, a \"quote\", a back\\slash, a tab\t and \x01 a control",
@@ -136,6 +138,10 @@ TEST_F(ViewerSettings, EveryFieldRoundTrips) {
   EXPECT_NE(s.unit, d.unit);
   EXPECT_NE(s.follow, d.follow);
   EXPECT_NE(s.timeline_marks, d.timeline_marks);
+  EXPECT_NE(s.view_3d, d.view_3d);
+  EXPECT_NE(s.orbit.azimuth_deg, d.orbit.azimuth_deg);
+  EXPECT_NE(s.orbit.elevation_deg, d.orbit.elevation_deg);
+  EXPECT_NE(s.orbit.z_scale, d.orbit.z_scale);
   EXPECT_NE(s.recent_files, d.recent_files);
 
   const std::string p = path("viewer.ini");
@@ -158,6 +164,8 @@ TEST_F(ViewerSettings, EveryFieldRoundTrips) {
   EXPECT_EQ(back.unit, s.unit);
   EXPECT_EQ(back.follow, s.follow);
   EXPECT_EQ(back.timeline_marks, s.timeline_marks);
+  EXPECT_EQ(back.view_3d, s.view_3d);
+  EXPECT_EQ(back.orbit, s.orbit);  // exactly
   EXPECT_EQ(back.recent_files, s.recent_files);
   EXPECT_TRUE(back == s);
 
@@ -169,9 +177,10 @@ TEST_F(ViewerSettings, EveryFieldRoundTrips) {
   EXPECT_NE(text.find("\nunit = phase\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nlayers = fill, edges, overlay, segments, vertices, holes, caption\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\ntimeline_marks = rejected, flips, triangulate\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nview_3d = true\nazimuth = -123.5\nelevation = 12.25\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nrecent = /home/me/runs/square with spaces.msl\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nrecent = /ünïcödé/ðata.msl\n"), std::string::npos) << text;
-  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 16 + 6) << text;  // one line each
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 20 + 6) << text;  // one line each
 
   // Saving what was loaded gives the same file.
   save_settings(back, p);
@@ -293,6 +302,9 @@ TEST_F(ViewerSettings, EveryKindOfBadValueFallsBackToTheDefault) {
       "recent = \"unterminated",      "recent = \"bad \\q escape\"",
       "recent = \"x\" trailing",      "recent = \"\"",
       "= 12",                         "[viewer]",
+      "view_3d = 3d",                 "azimuth = 180.5",
+      "elevation = -90.01",           "elevation = nan",
+      "z_scale = 0",                  "z_scale = 1001",
   };
   for (const char* line : bad) {
     const std::string p = write("viewer.ini", std::string("# header\n") + line + "\n");
@@ -311,6 +323,9 @@ TEST_F(ViewerSettings, EveryKindOfBadValueFallsBackToTheDefault) {
                               "unit = events\n"
                               "layers =  \n"
                               "timeline_marks =\n"
+                              "azimuth = -180\n"
+                              "elevation = 90\n"
+                              "z_scale = 0.01\n"
                               "recent =   /spaced out/path.msl   \n");
   std::vector<std::string> warnings;
   const Settings s = load_settings(p, warnings);
@@ -322,6 +337,7 @@ TEST_F(ViewerSettings, EveryKindOfBadValueFallsBackToTheDefault) {
   EXPECT_EQ(s.unit, Unit::event);
   EXPECT_EQ(s.layers, LayerSet::none());
   EXPECT_EQ(s.timeline_marks, MarkSet::none());  // no marks at all is a choice too
+  EXPECT_EQ(s.orbit, (Orbit{-180.0, 90.0, 0.01}));
   EXPECT_EQ(s.recent_files, std::vector<std::string>{"/spaced out/path.msl"});
 }
 
