@@ -28,7 +28,8 @@ std::uint64_t checksum(std::span<const std::uint8_t> bytes, std::uint64_t seed) 
     h = std::rotl(h ^ (w * kMul1), 31) * kMul2;
   }
   std::uint64_t tail = 0;
-  std::memcpy(&tail, bytes.data() + i, bytes.size() - i);
+  // An empty span may have no data pointer at all, which memcpy must not be given.
+  if (i < bytes.size()) std::memcpy(&tail, bytes.data() + i, bytes.size() - i);
   h = std::rotl(h ^ (tail * kMul1), 31) * kMul2;
   h ^= h >> 33;
   h *= kMul1;
