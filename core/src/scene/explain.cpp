@@ -108,8 +108,11 @@ class Explainer {
   void bad_triangle() {
     // The failed tests name the triangle and how far it is off; the selection names it too
     // when the test itself is not in the log (format 2).
+    // A terrain's triangle is not bad but the worst: the one farthest from the grid.
     for (const StepStory::Criterion& f : story_.failed)
-      add("bad triangle " + triangle_name(f.triangle) + ": " + detail::criterion_text(f, cursor_.log()));
+      add((f.criterion == static_cast<std::uint8_t>(replay::Criterion::vertical_error) ? "worst triangle "
+                                                                                        : "bad triangle ") +
+          triangle_name(f.triangle) + ": " + detail::criterion_text(f, cursor_.log()));
     if (story_.failed.empty() && story_.selected) {
       const auto s = shape(story_.selected->bad);
       add("bad triangle " + triangle_name(story_.selected->bad) +

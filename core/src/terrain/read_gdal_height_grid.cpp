@@ -8,6 +8,9 @@
 // unit (times its metres per unit) for a projected one. Without a spatial reference the
 // ESRI reader's guess decides, or HeightGridOptions::geographic. Heights are the band's
 // values times its scale plus its offset; its NoData value, and NaN, are no data.
+//
+// GDAL is loaded the first time a grid needs it (dlopen of MESHSTEP_GDAL_SONAME), never
+// linked: its hundred libraries would load with every meshstep process.
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -24,6 +27,7 @@
 
 #ifdef MESHSTEP_HAVE_GDAL
 #include <cpl_error.h>
+#include <dlfcn.h>
 #include <gdal.h>
 #include <ogr_srs_api.h>
 #endif
@@ -54,35 +58,76 @@ HeightGrid read_gdal_height_grid(const std::string& path, const HeightGridOption
 
 namespace {
 
+// The GDAL functions this reader calls, looked up in the library once it is loaded; each
+// pointer has the type the header declares.
+struct GdalApi {
+#define MESHSTEP_GDAL_FUNCTIONS(X)                                                                          \
+  X(GDALAllRegister) X(CPLPushErrorHandler) X(CPLPopErrorHandler) X(CPLQuietErrorHandler) X(CPLErrorReset)   \
+  X(CPLGetLastErrorMsg) X(GDALOpen) X(GDALClose) X(GDALGetRasterXSize) X(GDALGetRasterYSize)                 \
+  X(GDALGetGeoTransform) X(GDALGetSpatialRef) X(OSRIsGeographic) X(OSRIsProjected) X(OSRGetLinearUnits)      \
+  X(GDALGetRasterCount) X(GDALGetRasterBand) X(GDALGetRasterNoDataValue) X(GDALGetRasterScale)               \
+  X(GDALGetRasterOffset) X(GDALRasterIO)
+#define MESHSTEP_GDAL_POINTER(name) decltype(&::name) name = nullptr;
+  MESHSTEP_GDAL_FUNCTIONS(MESHSTEP_GDAL_POINTER)
+#undef MESHSTEP_GDAL_POINTER
+  std::string failure;  // why GDAL could not be loaded ("" when it was)
+};
+
+// Loaded on first use, once for the process (thread-safe: a static's initialisation).
+const GdalApi& gdal(const std::string& path) {
+  static const GdalApi api = [] {
+    GdalApi a;
+    void* library = ::dlopen(MESHSTEP_GDAL_SONAME, RTLD_NOW | RTLD_LOCAL);
+    if (!library) {
+      const char* why = ::dlerror();
+      a.failure = std::string("GDAL (" MESHSTEP_GDAL_SONAME ") cannot be loaded: ") + (why ? why : "no reason given") +
+                  " (install libgdal32, or convert the grid to .asc: gdal_translate -of AAIGrid)";
+      return a;
+    }
+#define MESHSTEP_GDAL_LOOKUP(name)                                                   \
+  a.name = reinterpret_cast<decltype(&::name)>(::dlsym(library, #name));              \
+  if (!a.name && a.failure.empty()) a.failure = "GDAL (" MESHSTEP_GDAL_SONAME ") has no " #name;
+    MESHSTEP_GDAL_FUNCTIONS(MESHSTEP_GDAL_LOOKUP)
+#undef MESHSTEP_GDAL_LOOKUP
+    if (a.failure.empty()) a.GDALAllRegister();
+    return a;
+  }();
+  if (!api.failure.empty()) throw InputError(path, 0, api.failure);
+  return api;
+}
+
 // GDAL's messages go to the exceptions this reader throws, not to standard error.
 class QuietGdal {
  public:
-  QuietGdal() {
-    GDALAllRegister();
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    CPLErrorReset();
+  explicit QuietGdal(const GdalApi& api) : api_(api) {
+    api_.CPLPushErrorHandler(api_.CPLQuietErrorHandler);
+    api_.CPLErrorReset();
   }
-  ~QuietGdal() { CPLPopErrorHandler(); }
+  ~QuietGdal() { api_.CPLPopErrorHandler(); }
   QuietGdal(const QuietGdal&) = delete;
   QuietGdal& operator=(const QuietGdal&) = delete;
+
+ private:
+  const GdalApi& api_;
 };
 
-std::string gdal_says(const char* fallback) {
-  const char* message = CPLGetLastErrorMsg();
+std::string gdal_says(const GdalApi& api, const char* fallback) {
+  const char* message = api.CPLGetLastErrorMsg();
   return message && *message ? message : fallback;
 }
 
 class Dataset {
  public:
-  explicit Dataset(const std::string& path) : handle_(GDALOpen(path.c_str(), GA_ReadOnly)) {
-    if (!handle_) throw InputError(path, 0, "GDAL cannot read it: " + gdal_says("not a raster it knows"));
+  Dataset(const GdalApi& api, const std::string& path) : api_(api), handle_(api.GDALOpen(path.c_str(), GA_ReadOnly)) {
+    if (!handle_) throw InputError(path, 0, "GDAL cannot read it: " + gdal_says(api, "not a raster it knows"));
   }
-  ~Dataset() { GDALClose(handle_); }
+  ~Dataset() { api_.GDALClose(handle_); }
   Dataset(const Dataset&) = delete;
   Dataset& operator=(const Dataset&) = delete;
   GDALDatasetH get() const { return handle_; }
 
  private:
+  const GdalApi& api_;
   GDALDatasetH handle_;
 };
 
@@ -94,14 +139,15 @@ std::string number(double v) {
 
 // The grid's sizes, spacing in metres and units, from the raster's geotransform and spatial
 // reference. Sets north_up: whether the raster's first row is its northernmost.
-HeightGrid layout_of(const std::string& path, GDALDatasetH dataset, const HeightGridOptions& options, bool& north_up) {
+HeightGrid layout_of(const GdalApi& api, const std::string& path, GDALDatasetH dataset,
+                     const HeightGridOptions& options, bool& north_up) {
   HeightGrid grid;
-  grid.nx = static_cast<std::size_t>(GDALGetRasterXSize(dataset));
-  grid.ny = static_cast<std::size_t>(GDALGetRasterYSize(dataset));
+  grid.nx = static_cast<std::size_t>(api.GDALGetRasterXSize(dataset));
+  grid.ny = static_cast<std::size_t>(api.GDALGetRasterYSize(dataset));
   if (grid.nx < 2 || grid.ny < 2) throw InputError(path, 0, too_few_samples(grid.nx, grid.ny));
 
   double t[6] = {0.0, 1.0, 0.0, 0.0, 0.0, -1.0};
-  const bool georeferenced = GDALGetGeoTransform(dataset, t) == CE_None;
+  const bool georeferenced = api.GDALGetGeoTransform(dataset, t) == CE_None;
   if (t[2] != 0.0 || t[4] != 0.0)
     throw InputError(path, 0,
                      "the raster is rotated or sheared (geotransform terms " + number(t[2]) + " and " + number(t[4]) +
@@ -114,18 +160,18 @@ HeightGrid layout_of(const std::string& path, GDALDatasetH dataset, const Height
   grid.x0 = west + cell_x / 2.0;
   grid.y0 = south + cell_y / 2.0;
 
-  const OGRSpatialReferenceH srs = GDALGetSpatialRef(dataset);
+  const OGRSpatialReferenceH srs = api.GDALGetSpatialRef(dataset);
   GridExtent extent{west, south, std::max(cell_x, cell_y), grid.nx, grid.ny};
   bool degrees = false;
   double metres_per_unit = 1.0;
   if (options.geographic) {
     degrees = *options.geographic;
   } else if (srs) {
-    degrees = OSRIsGeographic(srs) != 0;
+    degrees = api.OSRIsGeographic(srs) != 0;
   } else {
     degrees = georeferenced && looks_geographic(extent);
   }
-  if (!degrees && srs && OSRIsProjected(srs)) metres_per_unit = OSRGetLinearUnits(srs, nullptr);
+  if (!degrees && srs && api.OSRIsProjected(srs)) metres_per_unit = api.OSRGetLinearUnits(srs, nullptr);
 
   if (degrees) {
     if (!latitudes_valid(extent))
@@ -152,15 +198,16 @@ HeightGrid layout_of(const std::string& path, GDALDatasetH dataset, const Height
 
 HeightGrid read_gdal_height_rows(const std::string& path, const HeightGridOptions& options,
                                  const HeightRowVisitor& visit) {
-  const QuietGdal quiet;
-  const Dataset dataset(path);
-  if (GDALGetRasterCount(dataset.get()) < 1) throw InputError(path, 0, "the raster has no band of heights");
+  const GdalApi& api = gdal(path);
+  const QuietGdal quiet(api);
+  const Dataset dataset(api, path);
+  if (api.GDALGetRasterCount(dataset.get()) < 1) throw InputError(path, 0, "the raster has no band of heights");
   bool north_up = true;
-  HeightGrid grid = layout_of(path, dataset.get(), options, north_up);
-  const GDALRasterBandH band = GDALGetRasterBand(dataset.get(), 1);
+  HeightGrid grid = layout_of(api, path, dataset.get(), options, north_up);
+  const GDALRasterBandH band = api.GDALGetRasterBand(dataset.get(), 1);
   int has_nodata = 0, has_scale = 0, has_offset = 0;
-  const double nodata = GDALGetRasterNoDataValue(band, &has_nodata);
-  const double scale = GDALGetRasterScale(band, &has_scale), offset = GDALGetRasterOffset(band, &has_offset);
+  const double nodata = api.GDALGetRasterNoDataValue(band, &has_nodata);
+  const double scale = api.GDALGetRasterScale(band, &has_scale), offset = api.GDALGetRasterOffset(band, &has_offset);
 
   std::vector<double> raw(grid.nx);
   std::vector<float> heights(grid.nx);
@@ -169,9 +216,9 @@ HeightGrid read_gdal_height_rows(const std::string& path, const HeightGridOption
   for (std::size_t k = 0; k < grid.ny; ++k) {
     const std::size_t j = grid.ny - 1 - k;                  // the grid's row, 0 southernmost
     const std::size_t row = north_up ? k : j;               // the raster's row
-    if (GDALRasterIO(band, GF_Read, 0, static_cast<int>(row), static_cast<int>(grid.nx), 1, raw.data(),
+    if (api.GDALRasterIO(band, GF_Read, 0, static_cast<int>(row), static_cast<int>(grid.nx), 1, raw.data(),
                      static_cast<int>(grid.nx), 1, GDT_Float64, 0, 0) != CE_None)
-      throw InputError(path, 0, "GDAL cannot read row " + std::to_string(row) + ": " + gdal_says("a read error"));
+      throw InputError(path, 0, "GDAL cannot read row " + std::to_string(row) + ": " + gdal_says(api, "a read error"));
     for (std::size_t i = 0; i < grid.nx; ++i) {
       const double v = raw[i];
       if (std::isnan(v) || (has_nodata && v == nodata)) {
