@@ -52,22 +52,34 @@ const replay::LogReader* lesson_run(const std::string& arguments) {
   return runs.emplace(arguments, std::make_unique<replay::LogReader>(log)).first->second.get();
 }
 
+namespace {
+
+// An ESRI ASCII grid in metres: 48 x 36 samples 10 m apart, heights about 100 to 150 (a peak,
+// a slope and a ripple).
+fs::path write_hills(const fs::path& dir) {
+  constexpr int kColumns = 48, kRows = 36;
+  const fs::path path = dir / "hills.asc";
+  std::ofstream out(path);
+  out << "ncols " << kColumns << "\nnrows " << kRows << "\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
+      << "NODATA_value -9999\n";
+  for (int j = 0; j < kRows; ++j) {
+    for (int i = 0; i < kColumns; ++i) {
+      const double peak = 25.0 * std::exp(-((i - 30) * (i - 30) + (j - 12) * (j - 12)) / 60.0);
+      const double ripple = 8.0 * std::sin(i * 0.35) * std::cos(j * 0.3);
+      out << std::round(100.0 * (100.0 + peak + ripple + 0.5 * i)) / 100.0 << ' ';
+    }
+    out << '\n';
+  }
+  return path;
+}
+
+}  // namespace
+
 const replay::LogReader* terrain_run(const std::string& arguments) {
   static std::map<std::string, std::unique_ptr<replay::LogReader>> runs;
   static FolderCleanup cleanup;
+  static const fs::path grid = write_hills(run_folder());
   if (auto found = runs.find(arguments); found != runs.end()) return found->second.get();
-  const fs::path grid = run_folder() / "hills.asc";
-  if (!fs::exists(grid)) {
-    std::ofstream out(grid);
-    out << "ncols 33\nnrows 25\nxllcorner 0\nyllcorner 0\ncellsize 10\n";
-    for (int row = 0; row < 25; ++row) {
-      for (int i = 0; i < 33; ++i) {
-        const double x = i - 20.0, y = row - 12.0, r = std::hypot(x, y);
-        out << 40.0 + 30.0 * std::exp(-(r - 5.0) * (r - 5.0) / 8.0) + 6.0 * std::sin(0.35 * i) << ' ';
-      }
-      out << '\n';
-    }
-  }
   const std::string log = (run_folder() / ("terrain" + std::to_string(runs.size()) + ".mslog")).string();
   const std::string command =
       std::string(MESHSTEP_BINARY) + " terrain " + grid.string() + " " + arguments + " --record " + log + " -q";

@@ -472,7 +472,7 @@ std::optional<Scene> terrain_step_3d_case() {
   view.azimuth_deg = -70.0;
   view.elevation_deg = 40.0;
   view.z_scale = 2.0;
-  view.pivot = {160.0, 120.0, 50.0};
+  view.pivot = {235.0, 175.0, 125.0};  // the middle of the 470 m x 350 m grid
   const Scene s = scene::lift_scene(planar, scene::mesh_point_heights(planar, *log), view);
   // Each corner of the worst triangle and of the path is a vertex: it goes to the projection of
   // its position at its own height, about the pivot.
@@ -484,7 +484,7 @@ std::optional<Scene> terrain_step_3d_case() {
   };
   const double a = -70.0 * std::numbers::pi / 180.0, e = 40.0 * std::numbers::pi / 180.0;
   const auto projected = [&](const Point& p) {
-    const double x = p.x - 160.0, y = p.y - 120.0, z = 2.0 * (z_of(p) - 50.0);
+    const double x = p.x - 235.0, y = p.y - 175.0, z = 2.0 * (z_of(p) - 125.0);
     return Point{-std::sin(a) * x + std::cos(a) * y, -std::sin(e) * std::cos(a) * x - std::sin(e) * std::sin(a) * y + std::cos(e) * z};
   };
   for (const char* role : {"bad_triangle", "lepp_path", "terminal_edge", "selected_point"}) {

@@ -1,5 +1,6 @@
 // What the tests that drive the viewer program share: running a command (its status and
-// everything it printed), reading a file whole, and reading the state file's fields.
+// everything it printed), running the viewer on a log with a script in a mode, reading a
+// file whole, and reading the state file's fields.
 #pragma once
 
 #include <sys/wait.h>
@@ -28,6 +29,35 @@ inline Result run(const std::string& command) {
   r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
 }
+
+inline bool has(const std::string& text, const std::string& part);
+
+// Runs meshstep-view (VIEWER) on LOG with SCRIPT, written to DIR/script.txt, at SIZE
+// ("1024x640"), in MODE: "egl" and "osmesa" off screen, "window" under xvfb-run. Status 77
+// when the mode cannot be had here, the output saying why (VIEW_OR_SKIP skips then).
+inline Result view_log(const std::string& viewer, const std::string& log, const std::filesystem::path& dir,
+                       const std::string& mode, const std::string& size, const std::string& script,
+                       const std::string& extra = "") {
+  const std::filesystem::path file = dir / "script.txt";
+  std::ofstream(file) << script;
+  std::string command = viewer + " " + log + " --size " + size + " -q --script " + file.string() + " " + extra;
+  if (mode == "window") {
+    if (run("command -v xvfb-run").status != 0) return {77, "xvfb-run is not installed (Debian package xvfb)"};
+    command = "xvfb-run -a -s '-screen 0 1280x800x24' " + command;
+  } else {
+    command += " --offscreen --gl " + mode;
+  }
+  Result r = run(command);
+  if (r.status != 0 && has(r.output, "cannot open a window or draw")) return {77, r.output};
+  return r;
+}
+
+// In a fixture whose view(script, extra...) calls view_log: the run's result, the test
+// skipped when the mode is not available, failed when the viewer did.
+#define VIEW_OR_SKIP(result, script, ...)                 \
+  const Result result = view(script, ##__VA_ARGS__);      \
+  if (result.status == 77) GTEST_SKIP() << result.output; \
+  ASSERT_EQ(result.status, 0) << result.output
 
 inline std::string read_text(const std::filesystem::path& p) {
   std::ifstream in(p);

@@ -10,7 +10,6 @@
 #include "golden_runs.hpp"
 #include "meshstep/replay/replay.hpp"
 #include "pseudocode.hpp"
-#include "terrain_runs.hpp"
 
 namespace meshstep::viewer {
 namespace {
@@ -493,7 +492,7 @@ constexpr const char* kGreedy = "--algorithm greedy --max-error 1 --improve --fl
 // event type and code, for the tests below to look at.
 void expect_every_terrain_line_reached(const char* args, Program program) {
   SCOPED_TRACE(args);
-  const replay::LogReader* log = testing::terrain_run(args);
+  const replay::LogReader* log = golden::terrain_run(args);
   ASSERT_TRUE(log);
   ASSERT_TRUE(log->has_elevation());
   const PseudoCode& code = pseudocode(program);
@@ -533,7 +532,7 @@ std::string line_of_first(const replay::LogReader& log, EventType type, int code
 }
 
 TEST(PseudoCode, LeppSurfaceLinesSayWhyTheSampleWentWhereItDid) {
-  const replay::LogReader* log = testing::terrain_run(kLeppSurface);
+  const replay::LogReader* log = golden::terrain_run(kLeppSurface);
   ASSERT_TRUE(log);
   using replay::SampleChoice;
   const auto code = [](auto c) { return static_cast<int>(c); };
@@ -580,7 +579,7 @@ TEST(PseudoCode, LeppSurfaceLinesSayWhyTheSampleWentWhereItDid) {
 }
 
 TEST(PseudoCode, GreedyInsertsTheSampleOfLargestError) {
-  const replay::LogReader* log = testing::terrain_run(kGreedy);
+  const replay::LogReader* log = golden::terrain_run(kGreedy);
   ASSERT_TRUE(log);
   const std::string selected = line_of_first(*log, EventType::point_selected);
   EXPECT_TRUE(contains(selected, "s ← t's worst sample")) << selected;

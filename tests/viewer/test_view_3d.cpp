@@ -12,7 +12,7 @@
 #include "meshstep/replay/replay.hpp"
 #include "meshstep/scene/build.hpp"
 #include "meshstep/scene/lift.hpp"
-#include "terrain_runs.hpp"
+#include "golden_runs.hpp"
 #include "view_3d.hpp"
 
 namespace meshstep::viewer {
@@ -50,7 +50,7 @@ TEST(View3dOrbit, ARunWithoutHeightsHasNoThirdDimension) {
   EXPECT_TRUE(view.heights().empty());
   EXPECT_FALSE(View3d(nullptr).available());
 
-  const replay::LogReader* terrain = testing::terrain_run(kLeppSurface);
+  const replay::LogReader* terrain = golden::terrain_run(kLeppSurface);
   ASSERT_TRUE(terrain);
   View3d lifted(terrain);
   EXPECT_TRUE(lifted.available());
@@ -61,7 +61,7 @@ TEST(View3dOrbit, ARunWithoutHeightsHasNoThirdDimension) {
 // The lifted scene is lift_scene's, made once per moment and orbit; its points are where
 // screen_points() says the vertices are.
 TEST(View3dScene, LiftsOncePerMomentAndOrbit) {
-  const replay::LogReader* log = testing::terrain_run(kLeppSurface);
+  const replay::LogReader* log = golden::terrain_run(kLeppSurface);
   ASSERT_TRUE(log);
   View3d view(log);
   const scene::Scene planar = moment(*log, 40);
@@ -102,7 +102,7 @@ TEST(View3dScene, LiftsOncePerMomentAndOrbit) {
 // Zoomed in, a turn keeps the pivot under the camera's centre: the point looked at stays in
 // the middle of the picture, seen from the new side.
 TEST(View3dCamera, TurnsAboutThePointLookedAt) {
-  const replay::LogReader* log = testing::terrain_run(kLeppSurface);
+  const replay::LogReader* log = golden::terrain_run(kLeppSurface);
   ASSERT_TRUE(log);
   View3d view(log);
   ASSERT_TRUE(view.set_on(true));
@@ -144,7 +144,7 @@ TEST(View3dCamera, TurnsAboutThePointLookedAt) {
 // the near one) picks the nearest: the last drawn, back to front. Every triangle's centroid
 // on screen picks itself unless a nearer triangle covers it.
 TEST(InspectorPick3d, PicksTheFrontTriangleOnThePicture) {
-  const replay::LogReader* log = testing::terrain_run(kLeppSurface);
+  const replay::LogReader* log = golden::terrain_run(kLeppSurface);
   ASSERT_TRUE(log);
   View3d view(log);
   ASSERT_TRUE(view.set_orbit({-60.0, 10.0, 4.0}));  // from low, heights stretched: slopes hide slopes
@@ -177,7 +177,7 @@ TEST(InspectorPick3d, PicksTheFrontTriangleOnThePicture) {
 // is the path the run recorded (its lepp_path event): the same triangles to the same
 // terminal edge. In the plane it is not, at some step.
 TEST(InspectorLepp3d, IsThePathLeppSurfaceFollowed) {
-  const replay::LogReader* log = testing::terrain_run(kLeppSurface);
+  const replay::LogReader* log = golden::terrain_run(kLeppSurface);
   ASSERT_TRUE(log);
   View3d view(log);
   std::size_t checked = 0, planar_differs = 0;

@@ -51,33 +51,15 @@ class ViewerProgram : public ::testing::TestWithParam<std::string> {
     fs::remove_all(dir_, ec);
   }
 
-  // Runs the viewer on the lesson's log with this script, in the mode of the parameter:
-  // "egl" and "osmesa" off screen, "window" under xvfb-run. Skips when the mode is not
-  // available here, saying why.
+  // Runs the viewer on the lesson's log with this script, in the mode of the parameter
+  // (testing::view_log).
   Result view(const std::string& script, const std::string& extra = "") {
-    const fs::path file = dir_ / "script.txt";
-    std::ofstream(file) << script;
-    std::string command = std::string(MESHSTEP_VIEW_BINARY) + " " + log_->path() + " --size 1024x640 -q --script " +
-                          file.string() + " " + extra;
-    if (GetParam() == "window") {
-      if (run("command -v xvfb-run").status != 0) return {77, "xvfb-run is not installed (Debian package xvfb)"};
-      command = "xvfb-run -a -s '-screen 0 1280x800x24' " + command;
-    } else {
-      command += " --offscreen --gl " + GetParam();
-    }
-    Result r = run(command);
-    if (r.status != 0 && has(r.output, "cannot open a window or draw")) return {77, r.output};
-    return r;
+    return testing::view_log(MESHSTEP_VIEW_BINARY, log_->path(), dir_, GetParam(), "1024x640", script, extra);
   }
 
   fs::path dir_;
   const replay::LogReader* log_ = nullptr;
 };
-
-#define VIEW_OR_SKIP(result, script, ...)                     \
-  const Result result = view(script, ##__VA_ARGS__);          \
-  if (result.status == 77) GTEST_SKIP() << result.output;     \
-  ASSERT_EQ(result.status, 0) << result.output
 
 TEST_P(ViewerProgram, KeysMoveTheCursorAndChangeWhatIsShown) {
   const std::string a = (dir_ / "a.json").string(), b = (dir_ / "b.json").string();

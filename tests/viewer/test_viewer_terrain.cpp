@@ -23,7 +23,6 @@
 #include "meshstep/scene/camera.hpp"
 #include "meshstep/scene/image.hpp"
 #include "program_support.hpp"
-#include "terrain_runs.hpp"
 #include "view_3d.hpp"
 
 namespace meshstep::viewer {
@@ -77,7 +76,7 @@ class ViewerTerrain : public ::testing::TestWithParam<std::string> {
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("viewer_terrain_" + std::to_string(::getpid()) + "_" + GetParam());
     fs::create_directories(dir_);
-    log_ = testing::terrain_run(kLeppSurface);
+    log_ = golden::terrain_run(kLeppSurface);
     ASSERT_NE(log_, nullptr);
   }
   void TearDown() override {
@@ -87,31 +86,14 @@ class ViewerTerrain : public ::testing::TestWithParam<std::string> {
 
   // Runs the viewer on the terrain's log with this script, in the mode of the parameter.
   Result view(const std::string& script, const std::string& extra = "") {
-    const fs::path file = dir_ / "script.txt";
-    std::ofstream(file) << script;
-    std::string command = std::string(MESHSTEP_VIEW_BINARY) + " " + log_->path() + " --size " +
-                          std::to_string(kWidth) + "x" + std::to_string(kHeight) + " -q --script " + file.string() +
-                          " " + extra;
-    if (GetParam() == "window") {
-      if (run("command -v xvfb-run").status != 0) return {77, "xvfb-run is not installed (Debian package xvfb)"};
-      command = "xvfb-run -a -s '-screen 0 1280x800x24' " + command;
-    } else {
-      command += " --offscreen --gl " + GetParam();
-    }
-    Result r = run(command);
-    if (r.status != 0 && has(r.output, "cannot open a window or draw")) return {77, r.output};
-    return r;
+    const std::string size = std::to_string(kWidth) + "x" + std::to_string(kHeight);
+    return testing::view_log(MESHSTEP_VIEW_BINARY, log_->path(), dir_, GetParam(), size, script, extra);
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
   fs::path dir_;
   const replay::LogReader* log_ = nullptr;
 };
-
-#define VIEW_OR_SKIP(result, script, ...)                 \
-  const Result result = view(script, ##__VA_ARGS__);      \
-  if (result.status == 77) GTEST_SKIP() << result.output; \
-  ASSERT_EQ(result.status, 0) << result.output
 
 // V switches to 3D; the keys, the script's `orbit` and `z-scale`, and a drag on the canvas
 // turn it; the window shows a surface coloured by height, which the 2D window does not.
