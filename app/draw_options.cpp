@@ -94,7 +94,8 @@ void add_draw_options(CLI::App* cmd, DrawArgs& args) {
                   "window is centred and widened in one direction to the picture's aspect)");
   cmd->add_option("--color-by", args.color_by,
                   "Fill the triangles by: none, angle (smallest angle), quality (smallest angle against\n"
-                  "the run's bound), area, region (attribute) or age (the step that made it)")
+                  "the run's bound), area, region (attribute), age (the step that made it) or\n"
+                  "height (a terrain's or a surface's run: the mean height of the corners)")
       ->default_str("none");
   cmd->add_option("--layers", args.layers,
                   "Layers to draw: a list of fill, edges, highlight, overlay, segments, vertices,\n"
@@ -120,7 +121,7 @@ DrawSettings parse_draw_args(const DrawArgs& args) {
   if (!args.view.empty()) s.view = parse_view(args.view);
   const std::optional<scene::ColorBy> color_by = scene::parse_color_by(args.color_by);
   if (!color_by)
-    throw UsageError("--color-by " + args.color_by + ": expected none, angle, quality, area, region or age");
+    throw UsageError("--color-by " + args.color_by + ": expected none, angle, quality, area, region, age or height");
   s.scene.color_by = *color_by;
   s.scene.layers = parse_layers(args.layers);
   if (args.theme == "light") s.scene.theme = scene::Theme::light;

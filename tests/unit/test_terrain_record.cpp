@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 
+#include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/replay/log_reader.hpp"
 #include "meshstep/replay/log_writer.hpp"
 #include "meshstep/replay/replay.hpp"
@@ -337,6 +338,65 @@ TEST(TerrainRecord, OlderFormatsCannotHoldHeights) {
   }
   EXPECT_TRUE(refused);
   EXPECT_FALSE(std::filesystem::exists(dir.file("old.mslog")));
+}
+
+}  // namespace
+}  // namespace meshstep::terrain
+
+namespace meshstep::terrain {
+namespace {
+
+// --color-by height on a terrain's log: each triangle's value is the mean height of its
+// corners, its colour viridis from the lowest corner to the highest; a planar run's log has
+// no heights, and says so in its legend.
+TEST(TerrainRecord, TrianglesColouredByHeightInThePlane) {
+  const HeightGrid g = rolling_hills(30, 25);
+  TerrainOptions options;
+  options.max_error = 0.5;
+  testing::TempDir dir;
+  record(g, options, dir.file("r.mslog"));
+  const replay::LogReader log(dir.file("r.mslog"));
+  replay::Replay cursor(log);
+  cursor.seek_step(40);
+  scene::SceneOptions by_height;
+  by_height.color_by = scene::ColorBy::height;
+  const scene::Scene s = scene::build_scene(cursor, by_height);
+  ASSERT_TRUE(s.legend);
+  EXPECT_EQ(s.legend->title, "height");
+  ASSERT_EQ(s.mesh.values.size(), s.mesh.triangles.size());
+  double lo = INFINITY, hi = -INFINITY;
+  std::size_t lowest = 0, highest = 0;
+  for (std::size_t t = 0; t < s.mesh.triangles.size(); ++t) {
+    const auto& v = s.mesh.triangles[t];
+    const double mean = (log.vertices()[v[0]].z + log.vertices()[v[1]].z + log.vertices()[v[2]].z) / 3.0;
+    EXPECT_DOUBLE_EQ(s.mesh.values[t], mean);
+    if (mean < lo) lo = mean, lowest = t;
+    if (mean > hi) hi = mean, highest = t;
+  }
+  EXPECT_NE(s.mesh.fill[lowest], s.mesh.fill[highest]);
+  // Darker at the bottom of viridis, lighter at the top.
+  const auto light = [](scene::Rgba c) { return c.r + c.g + c.b; };
+  EXPECT_LT(light(s.mesh.fill[lowest]), light(s.mesh.fill[highest]));
+
+  // A run without heights: every triangle the neutral fill, the legend saying why.
+  testing::TempDir other;
+  {
+    replay::LogHeader header;
+    replay::LogWriter writer(other.file("flat.mslog"), header);
+    TriangulateOptions t;
+    t.record = &writer;
+    Pslg square;
+    square.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.3, 0.6}};
+    triangulate(square, t);
+    writer.finish();
+  }
+  const replay::LogReader flat_log(other.file("flat.mslog"));
+  replay::Replay flat(flat_log);
+  flat.seek_event(flat_log.event_count());
+  const scene::Scene none = scene::build_scene(flat, by_height);
+  ASSERT_TRUE(none.legend);
+  EXPECT_EQ(none.legend->ticks.front().text, "no heights (a planar run)");
+  for (const scene::Rgba& c : none.mesh.fill) EXPECT_EQ(c, none.mesh.fill.front());
 }
 
 }  // namespace

@@ -112,6 +112,12 @@ Scene build_scene(const replay::Replay& cursor, const SceneOptions& options, con
     in.ages = triangle_ages;
     in.current_step = story.in_step ? story.step : 0;
   }
+  std::vector<double> heights;  // by vertex id, as the points are
+  if (options.color_by == ColorBy::height && log.has_elevation()) {
+    heights.reserve(scene.mesh.points.size());
+    for (const replay::VertexInfo& v : log.vertices()) heights.push_back(v.z);
+    in.heights = heights;
+  }
   const std::vector<Region>& regions = log.header().regions;
   if (!regions.empty()) {
     scene.mesh.region = replay::detail::region_attributes(scene.mesh.points, scene.mesh.triangles, mesh.constrained_bits, regions);

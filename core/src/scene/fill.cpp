@@ -209,6 +209,67 @@ std::optional<Legend> fill_by_age(const FillInput& in, Theme theme, MeshLayer& o
 
 }  // namespace
 
+// The height scale of 2D and 3D pictures alike: viridis, its ends labelled to one decimal more
+// than the round ticks between them.
+Legend height_legend(double lo, double hi) {
+  Legend legend;
+  legend.title = "height";
+  legend.colors = viridis().samples(kLegendStops);
+  if (!(hi > lo)) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", lo);
+    legend.ticks.push_back({0.5, buf});
+    return legend;
+  }
+  const double step = tick_step(lo, hi, 7);
+  const auto at = [&](double v) { return (v - lo) / (hi - lo); };
+  // The ends, to one decimal more than the round ticks between (trailing zeros dropped:
+  // "0.01" and "2", not "0.009656" and "2.00"), and the round ticks not crowding them.
+  const auto end_label = [step](double v) {
+    std::string text = tick_label(v, step / 10.0);
+    if (text.find('.') != std::string::npos && text.find('e') == std::string::npos) {
+      text.erase(text.find_last_not_of('0') + 1);
+      if (text.back() == '.') text.pop_back();
+      if (text == "-0") text = "0";
+    }
+    return text;
+  };
+  legend.ticks.push_back({0.0, end_label(lo)});
+  for (const double v : linear_ticks(lo, hi, 7))
+    if (at(v) > 0.08 && at(v) < 0.92) legend.ticks.push_back({at(v), tick_label(v, step)});
+  legend.ticks.push_back({1.0, end_label(hi)});
+  return legend;
+}
+
+namespace {
+
+// The mean height of each triangle's corners, viridis from the lowest to the highest of the
+// triangles' corners (the colours a 3D view gives the same run, unshaded).
+std::optional<Legend> fill_by_height(const FillInput& in, Theme theme, MeshLayer& out) {
+  Legend legend;
+  legend.title = "height";
+  legend.colors = viridis().samples(kLegendStops);
+  if (in.heights.size() != in.points.size()) {
+    legend.colors = {base_style(theme).neutral_fill};
+    legend.categorical = true;
+    legend.ticks = {{0.5, "no heights (a planar run)"}};
+    return fill_neutral(theme, out, legend);
+  }
+  double lo = INFINITY, hi = -INFINITY;
+  for (std::size_t t = 0; t < in.triangles.size(); ++t) {
+    const auto& v = in.triangles[t];
+    out.values[t] = (in.heights[v[0]] + in.heights[v[1]] + in.heights[v[2]]) / 3.0;
+    for (const std::uint32_t k : v) lo = std::min(lo, in.heights[k]), hi = std::max(hi, in.heights[k]);
+  }
+  const auto position = [&](double z) { return hi > lo ? std::clamp((z - lo) / (hi - lo), 0.0, 1.0) : 0.5; };
+  const ColorTable& colors = table_of(viridis());
+  for (std::size_t t = 0; t < in.triangles.size(); ++t) out.fill[t] = colors(position(out.values[t]));
+  if (!(hi >= lo)) return legend;
+  return height_legend(lo, hi);
+}
+
+}  // namespace
+
 double quality_position(double angle_deg, double bound_deg) {
   bound_deg = std::clamp(bound_deg, 1.0, kLargestSmallestAngle - 1.0);
   if (!(angle_deg > 0.0)) return 0.0;
@@ -229,6 +290,7 @@ std::optional<Legend> fill_triangles(ColorBy by, Theme theme, const FillInput& i
     case ColorBy::area: return fill_by_area(in, out);
     case ColorBy::region: return fill_by_region(in, theme, out);
     case ColorBy::age: return fill_by_age(in, theme, out);
+    case ColorBy::height: return fill_by_height(in, theme, out);
     default: return fill_neutral(theme, out);
   }
 }

@@ -9,7 +9,7 @@ namespace {
 constexpr std::array<const char*, kLayerCount> kLayerNames = {
     "fill", "edges", "highlight", "overlay", "segments", "vertices", "holes", "labels", "caption", "legend"};
 constexpr std::array<const char*, static_cast<std::size_t>(ColorBy::count_)> kColorByNames = {
-    "none", "angle", "quality", "area", "region", "age"};
+    "none", "angle", "quality", "area", "region", "age", "height"};
 
 }  // namespace
 

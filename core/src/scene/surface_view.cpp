@@ -9,15 +9,14 @@
 #include <numeric>
 
 #include "meshstep/scene/colormap.hpp"
+#include "fill.hpp"
 #include "parts.hpp"
 #include "style.hpp"
-#include "ticks.hpp"
 
 namespace meshstep::scene {
 
 namespace {
 
-constexpr std::size_t kLegendStops = 128;
 // The wireframe: dark and thin, translucent so that it reads as a texture over the shading.
 constexpr Rgba kWireLight{0, 0, 0, 90};
 constexpr Rgba kWireDark{0, 0, 0, 130};
@@ -49,35 +48,6 @@ std::string count_text(std::size_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-Legend height_legend(double lo, double hi) {
-  Legend legend;
-  legend.title = "height";
-  legend.colors = viridis().samples(kLegendStops);
-  if (!(hi > lo)) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", lo);
-    legend.ticks.push_back({0.5, buf});
-    return legend;
-  }
-  const double step = detail::tick_step(lo, hi, 7);
-  const auto at = [&](double v) { return (v - lo) / (hi - lo); };
-  // The ends, to one decimal more than the round ticks between (trailing zeros dropped:
-  // "0.01" and "2", not "0.009656" and "2.00"), and the round ticks not crowding them.
-  const auto end_label = [step](double v) {
-    std::string text = detail::tick_label(v, step / 10.0);
-    if (text.find('.') != std::string::npos && text.find('e') == std::string::npos) {
-      text.erase(text.find_last_not_of('0') + 1);
-      if (text.back() == '.') text.pop_back();
-      if (text == "-0") text = "0";
-    }
-    return text;
-  };
-  legend.ticks.push_back({0.0, end_label(lo)});
-  for (const double v : detail::linear_ticks(lo, hi, 7))
-    if (at(v) > 0.08 && at(v) < 0.92) legend.ticks.push_back({at(v), detail::tick_label(v, step)});
-  legend.ticks.push_back({1.0, end_label(hi)});
-  return legend;
-}
 
 }  // namespace
 
@@ -161,7 +131,7 @@ Scene surface_scene(const io::Surface& surface, const SurfaceView& view, Theme t
     scene.mesh.triangles.push_back(t);
   }
 
-  if (!triangles.empty()) scene.legend = height_legend(lo, hi);
+  if (!triangles.empty()) scene.legend = detail::height_legend(lo, hi);
   std::string caption;
   if (!name.empty()) caption = std::string(name) + " \u00B7 ";
   caption += count_text(n, "vertex", "vertices") + ", " + count_text(triangles.size(), "triangle", "triangles") +

@@ -66,7 +66,9 @@ class LayerSet {
 };
 
 // What fills the triangles.
-enum class ColorBy : std::uint8_t { none, angle, quality, area, region, age, count_ };
+// height: the mean height of a triangle's corners (a terrain's or a surface's log, whose
+// vertices have heights; others have none to show).
+enum class ColorBy : std::uint8_t { none, angle, quality, area, region, age, height, count_ };
 const char* name(ColorBy c);
 std::optional<ColorBy> parse_color_by(std::string_view text);
 
