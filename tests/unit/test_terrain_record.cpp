@@ -99,6 +99,14 @@ Recorded record(const HeightGrid& g, TerrainOptions options, const std::string& 
   return r;
 }
 
+// A small Lepp-surface run on g (bound 0.5), recorded into DIR/r.mslog; returns the path.
+std::string record_small_run(const HeightGrid& g, const testing::TempDir& dir) {
+  TerrainOptions options;
+  options.max_error = 0.5;
+  record(g, options, dir.file("r.mslog"));
+  return dir.file("r.mslog");
+}
+
 struct Case {
   TerrainAlgorithm algorithm;
   DataStructure ds;
@@ -270,11 +278,8 @@ TEST(TerrainRecord, RecordingDoesNotChangeTheTin) {
 // The picture of a terrain's moment in 3D: the planar scene's overlays go onto the surface.
 TEST(TerrainRecord, LiftedSceneProjectsTheStepOntoTheSurface) {
   const HeightGrid g = rolling_hills(30, 25);
-  TerrainOptions options;
-  options.max_error = 0.5;
   testing::TempDir dir;
-  record(g, options, dir.file("r.mslog"));
-  const replay::LogReader log(dir.file("r.mslog"));
+  const replay::LogReader log(record_small_run(g, dir));
   replay::Replay cursor(log);
   cursor.seek_step(12);
   const scene::Scene planar = scene::build_scene(cursor, scene::SceneOptions{});
@@ -340,22 +345,13 @@ TEST(TerrainRecord, OlderFormatsCannotHoldHeights) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("old.mslog")));
 }
 
-}  // namespace
-}  // namespace meshstep::terrain
-
-namespace meshstep::terrain {
-namespace {
-
 // --color-by height on a terrain's log: each triangle's value is the mean height of its
 // corners, its colour viridis from the lowest corner to the highest; a planar run's log has
 // no heights, and says so in its legend.
 TEST(TerrainRecord, TrianglesColouredByHeightInThePlane) {
   const HeightGrid g = rolling_hills(30, 25);
-  TerrainOptions options;
-  options.max_error = 0.5;
   testing::TempDir dir;
-  record(g, options, dir.file("r.mslog"));
-  const replay::LogReader log(dir.file("r.mslog"));
+  const replay::LogReader log(record_small_run(g, dir));
   replay::Replay cursor(log);
   cursor.seek_step(40);
   scene::SceneOptions by_height;

@@ -3,7 +3,9 @@
 // file whole, and reading the state file's fields.
 #pragma once
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +13,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "meshstep/replay/log_reader.hpp"
 
 namespace meshstep::viewer::testing {
 
@@ -58,6 +62,33 @@ inline Result view_log(const std::string& viewer, const std::string& log, const 
   const Result result = view(script, ##__VA_ARGS__);      \
   if (result.status == 77) GTEST_SKIP() << result.output; \
   ASSERT_EQ(result.status, 0) << result.output
+
+// A test of the viewer program on one recorded run, per mode (the parameter: "egl",
+// "osmesa", "window"): a folder of its own for scripts and outputs, and view(). A fixture
+// derives, names its folder and size, and sets log_ in SetUp (after this SetUp).
+class ScriptedViewer : public ::testing::TestWithParam<std::string> {
+ protected:
+  ScriptedViewer(std::string folder, std::string size) : folder_(std::move(folder)), size_(std::move(size)) {}
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() / (folder_ + "_" + std::to_string(::getpid()) + "_" + GetParam());
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    std::filesystem::remove_all(dir_, ec);
+  }
+  // Runs the viewer on log_ with this script, in the mode of the parameter (view_log).
+  Result view(const std::string& script, const std::string& extra = "") {
+    return view_log(MESHSTEP_VIEW_BINARY, log_->path(), dir_, GetParam(), size_, script, extra);
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::filesystem::path dir_;
+  const replay::LogReader* log_ = nullptr;
+
+ private:
+  std::string folder_, size_;
+};
 
 inline std::string read_text(const std::filesystem::path& p) {
   std::ifstream in(p);

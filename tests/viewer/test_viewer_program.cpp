@@ -38,27 +38,14 @@ constexpr const char* kOffcenter = "--algorithm offcenter --min-angle 30";
 
 
 
-class ViewerProgram : public ::testing::TestWithParam<std::string> {
+class ViewerProgram : public testing::ScriptedViewer {
  protected:
+  ViewerProgram() : ScriptedViewer("viewer_program", "1024x640") {}
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("viewer_program_" + std::to_string(::getpid()) + "_" + GetParam());
-    fs::create_directories(dir_);
+    ScriptedViewer::SetUp();
     log_ = golden::lesson_run(kOffcenter);
     ASSERT_NE(log_, nullptr);
   }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-
-  // Runs the viewer on the lesson's log with this script, in the mode of the parameter
-  // (testing::view_log).
-  Result view(const std::string& script, const std::string& extra = "") {
-    return testing::view_log(MESHSTEP_VIEW_BINARY, log_->path(), dir_, GetParam(), "1024x640", script, extra);
-  }
-
-  fs::path dir_;
-  const replay::LogReader* log_ = nullptr;
 };
 
 TEST_P(ViewerProgram, KeysMoveTheCursorAndChangeWhatIsShown) {

@@ -71,28 +71,14 @@ std::size_t canvas_pixels_near(const scene::Image& window, scene::Rgba colour, i
 // The ends of the height colour map (viridis), as the legend's bar shows them unshaded.
 constexpr scene::Rgba kLowest{68, 1, 84, 255}, kHighest{253, 231, 37, 255};
 
-class ViewerTerrain : public ::testing::TestWithParam<std::string> {
+class ViewerTerrain : public testing::ScriptedViewer {
  protected:
+  ViewerTerrain() : ScriptedViewer("viewer_terrain", std::to_string(kWidth) + "x" + std::to_string(kHeight)) {}
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("viewer_terrain_" + std::to_string(::getpid()) + "_" + GetParam());
-    fs::create_directories(dir_);
+    ScriptedViewer::SetUp();
     log_ = golden::terrain_run(kLeppSurface);
     ASSERT_NE(log_, nullptr);
   }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-
-  // Runs the viewer on the terrain's log with this script, in the mode of the parameter.
-  Result view(const std::string& script, const std::string& extra = "") {
-    const std::string size = std::to_string(kWidth) + "x" + std::to_string(kHeight);
-    return testing::view_log(MESHSTEP_VIEW_BINARY, log_->path(), dir_, GetParam(), size, script, extra);
-  }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  fs::path dir_;
-  const replay::LogReader* log_ = nullptr;
 };
 
 // V switches to 3D; the keys, the script's `orbit` and `z-scale`, and a drag on the canvas
