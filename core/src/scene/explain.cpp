@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "meshstep/refine/quality.hpp"
 #include "meshstep/refine/refine.hpp"
 #include "parts.hpp"
+#include "surface/surface_geometry.hpp"
 
 namespace meshstep::scene {
 
@@ -293,27 +293,21 @@ class Explainer {
     return std::array<double, 2>{q->min_angle_deg(), q->max_angle_deg()};
   }
   // A terrain triangle's smallest and largest angle in 3D (its corners at their heights),
-  // in degrees, as the run's statistics measure them.
+  // in degrees, measured as the surface code measures them.
   std::optional<std::array<double, 2>> angles_3d(const Triple& t) const {
     const auto& vertices = cursor_.log().vertices();
-    std::array<std::array<double, 3>, 3> p{};
+    std::array<Point3, 3> p{};
     for (int k = 0; k < 3; ++k) {
       if (t[k] >= vertices.size()) return std::nullopt;
       const replay::VertexInfo& v = vertices[t[k]];
       p[k] = {v.point.x, v.point.y, v.z};
     }
-    double smallest = 180.0, largest = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      const auto &o = p[k], &u = p[(k + 1) % 3], &w = p[(k + 2) % 3];
-      const double x[3] = {u[0] - o[0], u[1] - o[1], u[2] - o[2]}, y[3] = {w[0] - o[0], w[1] - o[1], w[2] - o[2]};
-      const double norms = std::sqrt((x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) * (y[0] * y[0] + y[1] * y[1] + y[2] * y[2]));
-      if (!(norms > 0.0)) return std::nullopt;
-      const double cosine = std::clamp((x[0] * y[0] + x[1] * y[1] + x[2] * y[2]) / norms, -1.0, 1.0);
-      const double angle = std::acos(cosine) * 180.0 / std::numbers::pi;
-      smallest = std::min(smallest, angle);
-      largest = std::max(largest, angle);
-    }
-    return std::array<double, 2>{smallest, largest};
+    if (!(surface::detail::area(p[0], p[1], p[2]) > 0.0)) return std::nullopt;
+    const std::array<double, 3> angles = {surface::detail::angle_deg(p[0], p[1], p[2]),
+                                          surface::detail::angle_deg(p[1], p[2], p[0]),
+                                          surface::detail::angle_deg(p[2], p[0], p[1])};
+    return std::array<double, 2>{*std::min_element(angles.begin(), angles.end()),
+                                 *std::max_element(angles.begin(), angles.end())};
   }
 
   const StepStory& story_;
