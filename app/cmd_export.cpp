@@ -12,6 +12,7 @@
 #include "command.hpp"
 #include "console.hpp"
 #include "draw_options.hpp"
+#include "file_roles.hpp"
 #include "frame_moments.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/scene/layout.hpp"
@@ -75,8 +76,27 @@ void check_args(const ExportArgs& args) {
     throw UsageError("--spin turns the 3D camera: give --orbit AZ,EL (or --z-scale) too");
 }
 
+// The frames already in DIR that a run would write over (frame_NNNNNN.png): only a file
+// that exists can be the log.
+std::vector<std::string> existing_frames(const std::string& dir) {
+  std::vector<std::string> frames;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.starts_with("frame_") && name.ends_with(".png")) frames.push_back(it->path().string());
+  }
+  return frames;
+}
+
 int run_export(const ExportArgs& args) {
   const Verbosity verbosity = args.quiet ? Verbosity::quiet : Verbosity::normal;
+  if (const int refused = refuse_overwrites(FileRoles()
+                                                .reads(args.log)
+                                                .writes("--video", args.video, "video")
+                                                .writes("--frames", args.frames, "frames folder")
+                                                .writes_existing("--frames", args.frames, existing_frames(args.frames),
+                                                                 "frames folder")))
+    return refused;
   return with_picture_errors("", [&] {
     check_args(args);
     const DrawSettings draw = parse_draw_args(args.draw);

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cmd_log.hpp"
+#include "file_roles.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/replay/replay.hpp"
 #include "output_prefix.hpp"
@@ -18,6 +19,11 @@ struct MeshArgs {
 };
 
 int run_mesh(const MeshArgs& args) {
+  const std::string label = args.step < 0 ? "end" : "step" + std::to_string(args.step);
+  const std::string prefix = args.prefix.empty() ? strip_extension(args.log) + "." + label : args.prefix;
+  if (const int refused =
+          refuse_overwrites(FileRoles().reads(args.log).writes_mesh(args.prefix.empty() ? "" : "-o", prefix)))
+    return refused;
   return with_log_errors([&] {
     const replay::LogReader log(args.log);
     if (!log.complete()) print_warning(Verbosity::normal, args.log + ": " + log.incomplete_reason());
@@ -31,8 +37,6 @@ int run_mesh(const MeshArgs& args) {
     if (args.step < 0) replay.seek_event(log.event_count());
     else replay.seek_step(static_cast<std::uint64_t>(args.step));
     const TriMesh mesh = replay.output_mesh();
-    const std::string label = args.step < 0 ? "end" : "step" + std::to_string(args.step);
-    const std::string prefix = args.prefix.empty() ? strip_extension(args.log) + "." + label : args.prefix;
     io::write_mesh(prefix, mesh);
     std::printf("%s: mesh after %llu of %llu steps (event %llu): %zu vertices, %zu triangles, written to %s.*\n",
                 args.log.c_str(), static_cast<unsigned long long>(replay.completed_steps()),

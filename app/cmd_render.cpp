@@ -10,6 +10,7 @@
 #include "command.hpp"
 #include "console.hpp"
 #include "draw_options.hpp"
+#include "file_roles.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/atomic_file.hpp"
 #include "meshstep/io/surface_io.hpp"
@@ -44,12 +45,22 @@ Format format_of(const std::string& path) {
   throw UsageError("-o " + path + ": the picture's name must end in .png or .svg");
 }
 
-std::string default_output(const SceneSource& source) {
-  return (source.kind == SourceKind::mesh ? source.path : strip_extension(source.path)) + ".png";
-}
-
 // A surface in 3D: the input's extension is that of a surface format (.obj .off .ply .stl).
 bool is_surface(const std::string& path) { return io::surface_format_for(path).has_value(); }
+
+// The mesh PREFIX that INPUT names when it is neither a log, an input, nor a surface (as
+// open_scene_source reads it): INPUT, or INPUT without its .ele.
+std::string mesh_prefix_of(const std::string& input) {
+  return input.ends_with(".ele") ? strip_extension(input) : input;
+}
+
+// INPUT without its extension, plus .png; a mesh prefix keeps its whole name (box.1 ->
+// box.1.png).
+std::string default_output(const std::string& input) {
+  const bool named_by_extension = is_surface(input) || input.ends_with(".poly") || input.ends_with(".node") ||
+                                  (std::filesystem::is_regular_file(input) && is_replay_log(input));
+  return (named_by_extension ? strip_extension(input) : mesh_prefix_of(input)) + ".png";
+}
 
 // The replay position the options ask for, checked against the run.
 std::uint64_t position_of(const RenderArgs& args, const replay::LogReader& log) {
@@ -94,7 +105,7 @@ int render_surface(const RenderArgs& args, Verbosity verbosity) {
   const DrawSettings draw = parse_draw_args(draw_args);
   if (args.step != -2 || args.event != -2) throw UsageError("--step and --event need a replay log; " + args.input + " is a surface");
   const scene::SurfaceView view = surface_view_of(args.orbit);
-  const std::string output = args.output.empty() ? strip_extension(args.input) + ".png" : args.output;
+  const std::string output = args.output.empty() ? default_output(args.input) : args.output;
   format_of(output);
 
   const io::Surface surface = io::read_surface(args.input);
@@ -110,6 +121,13 @@ int render_surface(const RenderArgs& args, Verbosity verbosity) {
 
 int run_render(const RenderArgs& args) {
   const Verbosity verbosity = args.quiet ? Verbosity::quiet : Verbosity::normal;
+  const int refused = refuse_overwrites(FileRoles()
+                                            .reads_pslg(args.input)
+                                            .reads_mesh(mesh_prefix_of(args.input))
+                                            .writes(args.output.empty() ? "" : "-o",
+                                                    args.output.empty() ? default_output(args.input) : args.output,
+                                                    "picture"));
+  if (refused) return refused;
   return with_picture_errors(" (an .svg picture needs no OpenGL)", [&] {
     const bool surface = is_surface(args.input);
     if (surface) return render_surface(args, verbosity);
@@ -126,7 +144,7 @@ int run_render(const RenderArgs& args) {
     if (source.kind != SourceKind::log && (args.step != -2 || args.event != -2))
       throw UsageError("--step and --event need a replay log; " + args.input + " is " +
                        (source.kind == SourceKind::mesh ? "a mesh" : "an input"));
-    const std::string output = args.output.empty() ? default_output(source) : args.output;
+    const std::string output = args.output.empty() ? default_output(args.input) : args.output;
     const Format format = format_of(output);
 
     scene::Scene picture;

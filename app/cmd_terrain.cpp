@@ -7,6 +7,7 @@
 
 #include "command.hpp"
 #include "console.hpp"
+#include "file_roles.hpp"
 #include "json_line.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/shortest_text.hpp"
@@ -202,7 +203,14 @@ int run_terrain(const TerrainArgs& args) {
       .png_cell = args.png_cell,
       .png_z_scale = args.z_scale,
       .geographic = args.geographic == "auto" ? std::nullopt : std::optional<bool>(args.geographic == "yes")};
-  if (args.tile != -1 || !args.tile_index.empty()) return run_terrain_in_tiles(args, *algorithm, format, grid_options);
+  const bool in_tiles = args.tile != -1 || !args.tile_index.empty();
+  FileRoles files;
+  files.reads(args.grid).writes_log("--record", args.record);
+  if (in_tiles && !args.output.empty()) files.writes_existing("-o", args.output, existing_tile_files(args.output), "output");
+  else if (format) files.writes("-o", args.output, "output");
+  else if (!args.output.empty()) files.writes_mesh("-o", args.output.substr(0, args.output.rfind('.')), args.output);
+  if (const int refused = refuse_overwrites(files)) return refused;
+  if (in_tiles) return run_terrain_in_tiles(args, *algorithm, format, grid_options);
 
   Stopwatch clock;
   try {

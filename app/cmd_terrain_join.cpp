@@ -7,6 +7,7 @@
 
 #include "command.hpp"
 #include "console.hpp"
+#include "file_roles.hpp"
 #include "json_line.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/surface_io.hpp"
@@ -44,6 +45,9 @@ void print_join_stats(const TerrainJoinArgs& args, const io::Surface& joined, st
 int run_terrain_join(const TerrainJoinArgs& args) {
   const Verbosity verbosity =
       args.quiet ? Verbosity::quiet : args.verbose ? Verbosity::verbose : Verbosity::normal;
+  FileRoles files;
+  for (const std::string& tile : args.tiles) files.reads(tile);
+  if (const int refused = refuse_overwrites(files.writes("-o", args.output, "output"))) return refused;
   std::optional<io::SurfaceFormat> format;
   if (!args.output.empty()) {
     format = io::surface_format_for(args.output);

@@ -4,6 +4,7 @@
 
 #include "command.hpp"
 #include "console.hpp"
+#include "file_roles.hpp"
 #include "json_line.hpp"
 #include "meshstep/check/quality.hpp"
 #include "meshstep/delaunay/triangulate.hpp"
@@ -44,6 +45,11 @@ int run_triangulate(const TriangulateArgs& args) {
   const bool prints_angles = verbosity == Verbosity::verbose || args.stats == "json";
   options.keep_mesh = !args.no_output || prints_angles;
   const std::string prefix = args.prefix.empty() ? default_output_prefix(args.input) : args.prefix;
+  if (const int refused = refuse_overwrites(FileRoles()
+                                                .reads_pslg(args.input)
+                                                .writes_mesh(args.prefix.empty() ? "" : "-o", args.no_output ? "" : prefix)
+                                                .writes_log("--record", args.record)))
+    return refused;
 
   Stopwatch clock;
   std::vector<std::string> warnings;

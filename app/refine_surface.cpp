@@ -5,6 +5,7 @@
 
 #include "command.hpp"
 #include "console.hpp"
+#include "file_roles.hpp"
 #include "json_line.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/surface_io.hpp"
@@ -39,6 +40,12 @@ int run_refine_surface(const SurfaceRefineArgs& args) {
     return kExitUsage;
   }
   const std::string output = args.output.empty() ? default_output(args.input) : args.output;
+  if (const int refused = refuse_overwrites(FileRoles()
+                                                .reads(args.input)
+                                                .writes(args.output.empty() ? "" : "-o", args.no_output ? "" : output,
+                                                        "output surface")
+                                                .writes_log("--record", args.record)))
+    return refused;
   const auto format = io::surface_format_for(output);
   if (!args.no_output && !format) {
     print_error(output + ": not a surface file name (.off, .obj, .ply, .stl)");

@@ -110,6 +110,32 @@ std::string tile_output_path(const std::string& output, terrain::TileIndex index
          output.substr(dot);
 }
 
+std::vector<std::string> existing_tile_files(const std::string& output) {
+  const std::string pattern = tile_output_path(output, {0, 0});  // OUT.r0-c0.EXT
+  const std::size_t r = pattern.rfind(".r0-c0");
+  const std::string head = pattern.substr(0, r) + ".r", tail = pattern.substr(r + 6);
+  // Digits, '-c', digits between head and tail.
+  const auto is_tile = [&](const std::string& path) {
+    if (path.size() <= head.size() + tail.size() || !path.starts_with(head) || !path.ends_with(tail)) return false;
+    const std::string middle = path.substr(head.size(), path.size() - head.size() - tail.size());
+    const std::size_t dash = middle.find("-c");
+    const auto digits = [](const std::string& t) {
+      return !t.empty() && std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
+    };
+    return dash != std::string::npos && digits(middle.substr(0, dash)) && digits(middle.substr(dash + 2));
+  };
+  std::vector<std::string> tiles;
+  const std::filesystem::path folder = std::filesystem::path(output).parent_path();
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(folder.empty() ? "." : folder, ec), end; !ec && it != end;
+       it.increment(ec)) {
+    // The entry's name under OUT's own spelling of the folder, to compare with head and tail.
+    const std::string name = (folder / it->path().filename()).string();
+    if (is_tile(name)) tiles.push_back(name);
+  }
+  return tiles;
+}
+
 void check_tile_folder(const std::string& output) {
   const std::filesystem::path folder = std::filesystem::path(output).parent_path();
   std::error_code ec;

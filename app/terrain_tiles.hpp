@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "console.hpp"
 #include "meshstep/io/surface_io.hpp"
@@ -34,6 +35,10 @@ std::optional<terrain::TileIndex> parse_tile_index(const std::string& text);
 // The file tile `index` of output OUT.EXT goes to: OUT.rR-cC.EXT (OUT.r0-c0.obj for tile
 // 0,0 of out.obj), in the folder of OUT.
 std::string tile_output_path(const std::string& output, terrain::TileIndex index);
+
+// The tile files of OUT.EXT already in OUT's folder (OUT.rR-cC.EXT), for the check that
+// none of them is the grid: a tile still to be written cannot be.
+std::vector<std::string> existing_tile_files(const std::string& output);
 
 // Throws InputError when OUT's folder does not exist: said before the grid is read, not
 // after its first band of rows (or a whole pass for its height range).

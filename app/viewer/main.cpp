@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "../file_roles.hpp"
 #include "meshstep/error.hpp"
 #include "render/gl_context.hpp"
 #include "open_input.hpp"
@@ -88,6 +89,16 @@ int main(int argc, char** argv) {
   options.started = started;
   if (!parse_size(a.size, options.width, options.height)) {
     std::fprintf(stderr, "meshstep view: --size %s: expected WxH, from 320x240 to 8192x8192\n", a.size.c_str());
+    return kExitUsage;
+  }
+  // --frame-log is the one file the command line names for writing (issue 31).
+  if (const auto clash = app::FileRoles()
+                             .reads_pslg(a.input)
+                             .reads_mesh(a.input)
+                             .reads(a.script)
+                             .writes("--frame-log", a.frame_log, "frame log")
+                             .clash()) {
+    std::fprintf(stderr, "meshstep view: %s\n", clash->c_str());
     return kExitUsage;
   }
   options.offscreen = a.offscreen;

@@ -94,6 +94,17 @@ int main(int argc, char** argv) {
   for (const auto& [name, text] : polys)
     for (const char choice : {'\0', '\7', '\x19'}) write(out / "pipeline" / (name + "_" + std::to_string(int(choice))), choice + text);
 
+  // Refinement under options: eight bytes of choices (fuzz_refine_options.cpp), then the
+  // .poly; every algorithm of the registry, with and without area and size bounds.
+  const std::size_t algorithm_count = algorithms().size();
+  for (const auto& [name, text] : polys)
+    for (std::size_t a = 0; a < algorithm_count; ++a) {
+      // algorithm, flags, order, min angle (about 25), max angle, bounds, Steiner cap, triangle cap
+      const std::string options = {char(a), char(a * 37), char(a), char(106), char(a % 2 ? 200 : 0),
+                                   char(a % 3 == 0 ? 0 : a % 3 == 1 ? 0x03 : 0x20), char(60), char(0)};
+      write(out / "refine_options" / (name + "_" + std::to_string(a)), options + text);
+    }
+
   // Replay logs: a triangulation and refinements, recorded.
   int n = 0;
   for (const auto& [name, text] : polys) {

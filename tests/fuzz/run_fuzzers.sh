@@ -11,7 +11,7 @@ build="$(cd "$1" && pwd)"
 seconds="$2"
 shift 2
 harnesses=("$@")
-((${#harnesses[@]})) || harnesses=(triangle_io esri_grid replay_log pipeline surface terrain)
+((${#harnesses[@]})) || harnesses=(triangle_io esri_grid replay_log pipeline surface terrain refine_options)
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 
 "$build/tests/fuzz/make_seeds" "$root/assets/examples" "$build/tests/fuzz/seeds" >/dev/null

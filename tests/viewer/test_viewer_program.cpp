@@ -215,6 +215,27 @@ TEST_P(ViewerProgram, WorkerCanvasShowsTheSameMomentAndWindow) {
 INSTANTIATE_TEST_SUITE_P(Modes, ViewerProgram, ::testing::Values("egl", "osmesa", "window"),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
+// Issue 31: --frame-log that is the log itself (here a hard link to it) is refused before
+// the viewer opens anything, and the log is left as it was.
+TEST(ViewerFrameLog, RefusesToWriteOverTheInput) {
+  const fs::path dir = fs::temp_directory_path() / ("viewer_frame_log_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const replay::LogReader* golden_log = golden::lesson_run(kOffcenter);
+  ASSERT_NE(golden_log, nullptr);
+  const fs::path log = dir / "run.mslog", link = dir / "frames.txt", script = dir / "quit.txt";
+  fs::copy_file(golden_log->path(), log);
+  fs::create_hard_link(log, link);
+  std::ofstream(script) << "quit\n";
+  const std::string before = read_text(log);
+  const Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + log.string() + " --offscreen -q --script " +
+                       script.string() + " --frame-log " + link.string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(has(r.output, "--frame-log " + link.string() + " would overwrite the input " + log.string())) << r.output;
+  EXPECT_EQ(read_text(log), before);
+  fs::remove_all(dir);
+}
+
 // "Check every step" in the viewer: an off-center run holds at every boundary; a
 // Lepp-bisection run (bisection makes no flips) breaks Delaunay at a bisection step.
 TEST(ViewerInvariants, ChecksEveryStepAndNamesTheOneThatBreaks) {
