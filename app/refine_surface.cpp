@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 #include "command.hpp"
 #include "console.hpp"
@@ -24,6 +25,17 @@ namespace {
 std::string default_output(const std::string& input) {
   const std::filesystem::path p(input);
   return (p.parent_path() / (p.stem().string() + ".1" + p.extension().string())).string();
+}
+
+// "bounds missed by N triangles (E over --size, A over --max-area)", as refine says it in
+// the plane.
+std::string bounds_missed_words(std::size_t over_bounds, const surface::BisectionReport& report) {
+  std::string words = "bounds missed by " + std::to_string(over_bounds) + " of " + std::to_string(report.triangles) +
+                      " triangles (";
+  if (report.over_max_edge > 0) words += std::to_string(report.over_max_edge) + " over --size";
+  if (report.over_max_edge > 0 && report.over_max_area > 0) words += ", ";
+  if (report.over_max_area > 0) words += std::to_string(report.over_max_area) + " over --max-area";
+  return words + ")";
 }
 
 }  // namespace
@@ -79,14 +91,20 @@ int run_refine_surface(const SurfaceRefineArgs& args) {
       log->finish();
       print_progress(verbosity, record_summary(*log));
     }
-    if (report.capped)
-      print_warning(verbosity, "stopped at --max-triangles " + std::to_string(args.max_triangles) +
-                                   " before every bound was met");
+    const bool has_bounds = args.max_edge > 0.0 || args.max_area > 0.0;
+    const std::size_t over_bounds = report.over_bounds;
+    const std::string cap_words = "stopped at --max-triangles " + std::to_string(args.max_triangles);
+    if (over_bounds > 0)
+      print_warning(verbosity, args.input + ": " + (report.capped ? cap_words + ": " : "") +
+                                   bounds_missed_words(over_bounds, report));
+    else if (report.capped)
+      print_warning(verbosity, cap_words + "; the flips met every bound all the same");
     if (verbosity != Verbosity::quiet)
-      std::printf("%s: %zu triangles -> %zu (%zu bisections%s); smallest angle %.2f -> %.2f degrees; area %.17g%s\n",
+      std::printf("%s: %zu triangles -> %zu (%zu bisections%s); smallest angle %.2f -> %.2f degrees; area %.17g%s%s\n",
                   args.input.c_str(), in.triangles.size(), report.triangles, report.bisections,
                   args.flip_dihedral < 0.0 ? "" : (", " + std::to_string(report.flips) + " flips").c_str(),
                   report.smallest_angle_before_deg, report.smallest_angle_after_deg, report.area_after,
+                  !has_bounds ? "" : over_bounds == 0 ? "; bounds met" : ("; " + bounds_missed_words(over_bounds, report)).c_str(),
                   args.no_output ? " (not written)" : (", written to " + output).c_str());
     if (args.stats == "json") {
       JsonLine stats;
@@ -102,6 +120,10 @@ int run_refine_surface(const SurfaceRefineArgs& args) {
           .field("area_before", report.area_before)
           .field("area", report.area_after)
           .field("capped", report.capped)
+          .field("bounds_met", over_bounds == 0)
+          .field("over_bounds", over_bounds)
+          .field("over_size", report.over_max_edge)
+          .field("over_max_area", report.over_max_area)
           .field("ms", refine_ms);
       std::printf("%s\n", stats.str().c_str());
     }

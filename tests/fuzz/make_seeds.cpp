@@ -75,14 +75,20 @@ int main(int argc, char** argv) {
   write(out / "esri_grid" / "nodata.asc",
         "ncols 2\nnrows 2\nxllcenter 10\nyllcenter -5\ncellsize 0.25\nNODATA_value -9999\n-9999 2\n3.5e2 4\n");
 
-  // Surfaces: the first byte picks the reader (0 .off, 1 .obj, 2 .ply, 3 .stl).
-  write(out / "surface" / "square.off", std::string(1, '\0') + "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 1\n3 0 1 2\n3 0 2 3\n");
-  write(out / "surface" / "tetra.obj", std::string(1, '\1') + "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
-  write(out / "surface" / "quad.ply", std::string(1, '\2') +
+  // Surfaces: the first byte picks the reader (0 .off, 1 .obj, 2 .ply, 3 .stl) and the
+  // dihedral bound, the next two the refinement's bounds (fuzz_surface.cpp).
+  const std::string area_bound("\0\x40", 2), edge_bound("\1\x60", 2), both_capped("\6\x20", 2);
+  write(out / "surface" / "square.off", std::string(1, '\0') + area_bound + "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 1\n3 0 1 2\n3 0 2 3\n");
+  write(out / "surface" / "tetra.obj", std::string(1, '\1') + edge_bound + "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
+  write(out / "surface" / "quad.ply", std::string(1, '\2') + both_capped +
         "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
         "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
-  write(out / "surface" / "one.stl", std::string(1, '\3') +
+  write(out / "surface" / "one.stl", std::string(1, '\3') + area_bound +
         "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid s\n");
+
+  write(out / "surface" / "flat_grid.off", std::string("\0\2\x30", 3) +
+        "OFF\n9 8 0\n0.09 0.17 0\n1.21 0.31 0\n2.17 0.3 0\n-0.33 0.98 0\n1.31 1.1 0\n2.28 0.73 0\n-0.02 1.82 0\n"
+        "1.03 2.05 0\n1.66 1.8 0\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 3 4 7\n3 3 7 6\n3 4 5 8\n3 4 8 7\n");
 
   // Terrains: small height grids, one with a hole of no data and a corner without any.
   write(out / "terrain" / "hill.asc",

@@ -3,7 +3,9 @@
 // closed tetrahedron, and a bumpy grid with the worse diagonal in every cell. Checked with
 // measures written again here: which pairs flip, that the surface stays clean with its area
 // (coplanar flips) or within the dihedral bound (others), that its smallest angle never
-// falls, and that the order of the triangle list does not matter.
+// falls, and that the order of the triangle list does not matter. After a bisection, the
+// flips keep its size bounds (issue 31): two flat quadrilaterals whose flips would make a
+// triangle over the area or the edge bound, and the bumpy grid with a dihedral bound.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,11 +13,13 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "meshstep/error.hpp"
 #include "meshstep/io/surface_io.hpp"
 #include "meshstep/surface/surface_flips.hpp"
+#include "meshstep/surface/surface_refine.hpp"
 
 namespace meshstep {
 namespace {
@@ -167,6 +171,109 @@ TEST(SurfaceFlips, RefusesABadBoundAndABrokenSurface) {
   Surface nan = rhombus();
   nan.vertices[2].z = std::nan("");
   EXPECT_THROW(flip_surface(nan, FlipOptions{1.0}), InputError);
+}
+
+// Bisection to size bounds, then flips in the same mesh (surface_refine.hpp).
+double triangle_area(const Surface& s, const Triangle& t) {
+  return 0.5 * length(cross(minus(s.vertices[t[1]], s.vertices[t[0]]), minus(s.vertices[t[2]], s.vertices[t[0]])));
+}
+double longest_edge(const Surface& s, const Triangle& t) {
+  double l = 0.0;
+  for (int k = 0; k < 3; ++k) l = std::max(l, length(minus(s.vertices[t[(k + 1) % 3]], s.vertices[t[k]])));
+  return l;
+}
+std::size_t over_area(const Surface& s, double max_area) {
+  return static_cast<std::size_t>(std::count_if(s.triangles.begin(), s.triangles.end(),
+                                                [&](const Triangle& t) { return triangle_area(s, t) > max_area; }));
+}
+std::size_t over_edge(const Surface& s, double max_edge) {
+  return static_cast<std::size_t>(std::count_if(s.triangles.begin(), s.triangles.end(),
+                                                [&](const Triangle& t) { return longest_edge(s, t) > max_edge; }));
+}
+
+// A flat quadrilateral in two triangles: bisected to an area of 0.3, its four triangles hold
+// a coplanar pair whose flip (for a larger smallest angle) moves area into one of them, to
+// 1.18 times the bound.
+Surface flat_quadrilateral() {
+  Surface s;
+  s.vertices = {{0.18, 0.19, 0}, {0.99, -0.14, 0}, {-0.3, 1.1, 0}, {0.98, 1.16, 0}};
+  s.triangles = {{0, 1, 3}, {0, 3, 2}};
+  return s;
+}
+
+// A flat 2 x 2 grid, its nodes moved: bisected to edges of 0.8, two of its coplanar pairs
+// would flip to a diagonal longer than that.
+Surface flat_jittered_grid() {
+  Surface s;
+  s.vertices = {{0.09, 0.17, 0}, {1.21, 0.31, 0}, {2.17, 0.3, 0},  {-0.33, 0.98, 0}, {1.31, 1.1, 0},
+                {2.28, 0.73, 0}, {-0.02, 1.82, 0}, {1.03, 2.05, 0}, {1.66, 1.8, 0}};
+  s.triangles = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {3, 4, 7}, {3, 7, 6}, {4, 5, 8}, {4, 8, 7}};
+  return s;
+}
+
+surface::BisectionOptions bounds_then_flips(double max_edge, double max_area, double dihedral, DataStructure ds) {
+  surface::BisectionOptions o;
+  o.max_edge = max_edge;
+  o.max_area = max_area;
+  o.flip_dihedral_deg = dihedral;
+  o.data_structure = ds;
+  return o;
+}
+
+TEST(SurfaceFlipsAfterBisection, KeepTheAreaBoundOnBothMeshStructures) {
+  struct Case {
+    const char* name;
+    Surface in;
+    double max_area, dihedral;
+    bool some_flip;  // whether a flip keeps the bound (the quadrilateral's only one does not)
+  };
+  const Case cases[] = {{"flat quadrilateral", flat_quadrilateral(), 0.3, 0.0, false},
+                        {"flat quadrilateral, finer", flat_quadrilateral(), 0.08, 0.0, true},
+                        {"bumpy grid", bumpy_grid(7), 0.011, 10.0, true}};
+  for (const Case& c : cases)
+    for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel}) {
+      SCOPED_TRACE(std::string(c.name) + (ds == DataStructure::tds ? " on the tds" : " on the dcel"));
+      surface::BisectionReport report;
+      const Surface out = surface::bisect_surface(c.in, bounds_then_flips(0.0, c.max_area, c.dihedral, ds), &report);
+      EXPECT_EQ(report.flips > 0, c.some_flip);
+      EXPECT_EQ(over_area(out, c.max_area), 0u);
+      EXPECT_EQ(report.over_bounds, 0u);
+      EXPECT_TRUE(io::report_surface(out).clean());
+    }
+}
+
+TEST(SurfaceFlipsAfterBisection, KeepTheEdgeBoundOnBothMeshStructures) {
+  for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel}) {
+    surface::BisectionReport report;
+    const Surface out = surface::bisect_surface(flat_jittered_grid(), bounds_then_flips(0.8, 0.0, 0.0, ds), &report);
+    EXPECT_GT(report.flips, 0u);
+    EXPECT_EQ(over_edge(out, 0.8), 0u);
+    EXPECT_EQ(report.over_bounds, 0u);
+    EXPECT_GE(smallest_angle(out), report.smallest_angle_before_deg / 2.0 - 1e-9);
+  }
+}
+
+// Stopped by a cap, the run ends with triangles over the bound: the report counts them, and
+// the flips made no more of them than the bisection left.
+TEST(SurfaceFlipsAfterBisection, UnderACapCountTheTrianglesOverTheBoundsAndAddNone) {
+  for (const std::size_t cap : {14u, 18u, 26u, 30u}) {
+    SCOPED_TRACE(cap);
+    surface::BisectionOptions flipped = bounds_then_flips(0.8, 0.1, 0.0, DataStructure::tds);
+    flipped.max_triangles = cap;
+    surface::BisectionOptions unflipped = flipped;
+    unflipped.flip_dihedral_deg = -1.0;
+    surface::BisectionReport with, without;
+    const Surface a = surface::bisect_surface(flat_jittered_grid(), flipped, &with);
+    const Surface b = surface::bisect_surface(flat_jittered_grid(), unflipped, &without);
+    EXPECT_TRUE(with.capped);
+    EXPECT_EQ(with.over_max_edge, over_edge(a, 0.8));
+    EXPECT_EQ(with.over_max_area, over_area(a, 0.1));
+    EXPECT_GT(with.over_bounds, 0u);
+    EXPECT_GE(with.over_bounds, std::max(with.over_max_edge, with.over_max_area));
+    EXPECT_LE(with.over_bounds, with.over_max_edge + with.over_max_area);
+    EXPECT_EQ(without.over_max_edge, over_edge(b, 0.8));
+    EXPECT_LE(with.over_bounds, without.over_bounds);
+  }
 }
 
 }  // namespace

@@ -119,6 +119,42 @@ TEST(SurfaceRefineCli, RecordsBisectionAndFlipsForReplayIn3D) {
   EXPECT_FALSE(std::filesystem::exists(failed + ".partial"));
 }
 
+// Issue 31: bisected to --max-area, then flipped, every triangle stays within the bound
+// (the flips that would break it are not taken), and the summary says the bounds were met.
+// Stopped by --max-triangles, the summary counts the triangles over the bounds instead, in
+// words and in --stats json.
+TEST(SurfaceRefineCli, FlipsKeepTheBoundsAndTheSummaryCountsTheTrianglesOverThem) {
+  TempDir dir;
+  const auto quad = dir.path() / "quad.off";
+  std::ofstream(quad) << "OFF\n4 2 0\n0.18 0.19 0\n0.99 -0.14 0\n-0.3 1.1 0\n0.98 1.16 0\n3 0 1 3\n3 0 3 2\n";
+  const auto out = dir.path() / "fine.off";
+  for (const char* ds : {"tds", "dcel"}) {
+    const auto r = run_meshstep("refine " + quad.string() + " -a lepp-bisection --max-area 0.3 --flip-dihedral 0 --ds " +
+                                    ds + " --stats json -o " + out.string(),
+                                dir.path());
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("; bounds met"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"bounds_met\":true,\"over_bounds\":0"), std::string::npos) << r.out;
+    const io::Surface s = io::read_surface(out.string());
+    ASSERT_EQ(s.triangles.size(), 4u);
+    for (const auto& t : s.triangles) {
+      io::Surface one{s.vertices, {t}};
+      EXPECT_LE(area(one), 0.3);
+    }
+  }
+  const auto capped = run_meshstep("refine " + quad.string() + " -a lepp-bisection --max-area 0.05 --size 0.3 "
+                                   "--max-triangles 10 --flip-dihedral 0 --stats json --no-output",
+                                   dir.path());
+  ASSERT_EQ(capped.status, 0) << capped.err;
+  EXPECT_NE(capped.err.find("stopped at --max-triangles 10: bounds missed by 10 of 10 triangles (10 over --size, "),
+            std::string::npos)
+      << capped.err;
+  EXPECT_NE(capped.out.find("; bounds missed by 10 of 10 triangles"), std::string::npos) << capped.out;
+  EXPECT_NE(capped.out.find("\"bounds_met\":false,\"over_bounds\":10,\"over_size\":10,\"over_max_area\":"),
+            std::string::npos)
+      << capped.out;
+}
+
 TEST(SurfaceRefineCli, TheDefaultOutputIsNumberedLikeTriangles) {
   TempDir dir;
   const auto cube = write_cube(dir.path());

@@ -15,6 +15,7 @@
 #include "meshstep/replay/recorder.hpp"
 #include "meshstep/surface/surface_refine.hpp"
 #include "seam_table.hpp"
+#include "size_bounds.hpp"
 #include "surface_bisector.hpp"
 #include "surface_flipper.hpp"
 #include "surface_geometry.hpp"
@@ -66,7 +67,9 @@ io::Surface bisect_with(const io::Surface& in, const BisectionOptions& options, 
     bisector.run();
     if (options.flip_dihedral_deg >= 0.0) {
       FlipReport flips;
-      detail::SurfaceFlipper<Mesh, Rec>(mesh, out.vertices, options.flip_dihedral_deg, rec).run(flips);
+      // The flips keep the bounds the bisection met (surface_flipper.hpp).
+      const detail::SizeBounds bounds(options.max_edge, options.max_area);
+      detail::SurfaceFlipper<Mesh, Rec>(mesh, out.vertices, options.flip_dihedral_deg, bounds, rec).run(flips);
       report.flips = flips.flips;
       report.largest_dihedral_flipped_deg = flips.largest_dihedral_flipped_deg;
     }
@@ -102,6 +105,15 @@ io::Surface bisect_surface(const io::Surface& in, const BisectionOptions& option
   }
   const detail::SurfaceMeasures after = detail::measure_surface(out.vertices, out.triangles);
   r.triangles = out.triangles.size();
+  const detail::SizeBounds bounds(options.max_edge, options.max_area);
+  if (bounds.any())
+    for (const Triangle& t : out.triangles) {  // each from its smallest id, as the bisection measured it
+      const Point3 &a = out.vertices[t[0]], &b = out.vertices[t[1]], &c = out.vertices[t[2]];
+      const bool edge_over = bounds.edge_over(a, b, c), area_over = bounds.area_over(a, b, c);
+      r.over_max_edge += edge_over;
+      r.over_max_area += area_over;
+      r.over_bounds += edge_over || area_over;
+    }
   r.smallest_angle_before_deg = before.smallest_angle_deg;
   r.smallest_angle_after_deg = after.smallest_angle_deg;
   r.area_before = before.area;

@@ -27,6 +27,7 @@
 #include "meshstep/replay/recorder.hpp"
 #include "meshstep/surface/surface_refine.hpp"
 #include "seam_table.hpp"
+#include "size_bounds.hpp"
 #include "surface_geometry.hpp"
 #include "target_queue.hpp"
 
@@ -41,7 +42,7 @@ class SurfaceBisector {
   SurfaceBisector(Mesh& mesh, SeamTable& seams, std::vector<Point3>& points, const BisectionOptions& options,
                   Rec& rec)
       : mesh_(mesh), seams_(seams), points_(points), options_(options), rec_(rec),
-        max_edge_squared_(options.max_edge * options.max_edge) {}
+        max_edge_squared_(options.max_edge * options.max_edge), bounds_(options.max_edge, options.max_area) {}
 
   void run() {
     if (options_.max_edge <= 0.0 && options_.max_area <= 0.0) return;
@@ -95,21 +96,11 @@ class SurfaceBisector {
     for (const Target& t : first) targets_.push(t);
   }
 
-  // Hands f to `queue` when it breaks a bound. The excess compares sizes: a squared length
-  // over the squared bound, and an area over its bound, are both squared ratios of lengths.
+  // Hands f to `queue` when it breaks a bound, with how far (size_bounds.hpp).
   template <class Queue>
   void consider(FaceId f, Queue queue) {
     const std::array<VertexId, 3> c = corners(f);
-    const Point3 &a = points_[c[0]], &b = points_[c[1]], &p = points_[c[2]];
-    double excess = 0.0;
-    if (options_.max_edge > 0.0) {
-      const double longest = std::max({squared_length(a, b), squared_length(b, p), squared_length(p, a)});
-      if (longest > max_edge_squared_) excess = longest / max_edge_squared_;
-    }
-    if (options_.max_area > 0.0) {
-      const double s = area(a, b, p);
-      if (s > options_.max_area) excess = std::max(excess, s / options_.max_area);
-    }
+    const double excess = bounds_.excess(points_[c[0]], points_[c[1]], points_[c[2]]);
     if (excess > 0.0) queue(Target{excess, f, c});
   }
 
@@ -247,6 +238,7 @@ class SurfaceBisector {
   const BisectionOptions& options_;
   Rec& rec_;
   double max_edge_squared_;
+  SizeBounds bounds_;  // the flips after the bisection keep to the same measure
   std::vector<VertexId> path_vertices_;  // recording: the Lepp path's triangles
   TargetQueue targets_;
   std::array<FaceId, 4> new_faces_{};

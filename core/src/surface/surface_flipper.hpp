@@ -9,6 +9,13 @@
 // (which a mutation may renumber). An edge joined only through a seam (its two sides are
 // borders of the mesh, seam_table.hpp) is not flipped: the mesh has no quadrilateral
 // there. Seams are few (one for a sphere, the cuts of a torus).
+//
+// After a bisection the flips keep its size bounds (size_bounds.hpp): a flip that would make
+// a triangle over a bound is not taken, unless the pair broke the bounds already (a run
+// stopped by its cap) and the flip makes neither more of its triangles over them nor its
+// worst one worse. Two triangles that met an area bound can trade their diagonal for a pair
+// of which one is over it (the area moves between them), and the new diagonal can be longer
+// than an edge bound. The rule only refuses flips, so the flips still end.
 #pragma once
 
 #include <algorithm>
@@ -25,6 +32,7 @@
 #include "meshstep/mesh/concept.hpp"
 #include "meshstep/replay/recorder.hpp"
 #include "meshstep/surface/surface_flips.hpp"
+#include "size_bounds.hpp"
 #include "surface_geometry.hpp"
 #include "surface_input.hpp"
 
@@ -33,8 +41,9 @@ namespace meshstep::surface::detail {
 template <TriangleMesh Mesh, class Rec = replay::NullRecorder>
 class SurfaceFlipper {
  public:
-  SurfaceFlipper(Mesh& mesh, const std::vector<Point3>& points, double max_dihedral_deg, Rec& rec)
-      : mesh_(mesh), points_(points), max_dihedral_deg_(max_dihedral_deg), rec_(rec) {
+  SurfaceFlipper(Mesh& mesh, const std::vector<Point3>& points, double max_dihedral_deg, const SizeBounds& bounds,
+                 Rec& rec)
+      : mesh_(mesh), points_(points), max_dihedral_deg_(max_dihedral_deg), bounds_(bounds), rec_(rec) {
     face_of_.reserve(3 * mesh_.face_count());
     for (FaceId f = 0; f < mesh_.face_capacity(); ++f)
       if (mesh_.is_live(f)) note(f);
@@ -95,6 +104,28 @@ class SurfaceFlipper {
     return {n[0] / length, n[1] / length, n[2] / length};
   }
 
+  // Whether the pair `after` keeps to the size bounds as well as the pair `before` did:
+  // every triangle within them, or no more triangles over them and the worst no worse.
+  bool keeps_bounds(const std::array<Triangle, 2>& before, const std::array<Triangle, 2>& after) const {
+    double worst_before = 0.0, worst_after = 0.0;
+    int over_before = 0, over_after = 0;
+    for (const Triangle& t : before) {
+      const double e = excess(t);
+      worst_before = std::max(worst_before, e);
+      over_before += e > 0.0;
+    }
+    for (const Triangle& t : after) {
+      const double e = excess(t);
+      worst_after = std::max(worst_after, e);
+      over_after += e > 0.0;
+    }
+    return over_after == 0 || (over_after <= over_before && worst_after <= worst_before);
+  }
+  double excess(const Triangle& t) const {
+    const Triangle s = from_smallest(t);
+    return bounds_.excess(p(s[0]), p(s[1]), p(s[2]));
+  }
+
   void note(FaceId f) {
     const HalfEdge h = mesh_.half_edge(f);
     for (const HalfEdge e : {h, mesh_.next(h), mesh_.prev(h)}) face_of_[directed(mesh_.origin(e), mesh_.dest(e))] = f;
@@ -134,6 +165,7 @@ class SurfaceFlipper {
     const double before = std::min(smallest_angle(old_t), smallest_angle(old_s));
     const double after = std::min(smallest_angle(new_t), smallest_angle(new_s));
     if (!(after > before)) return;
+    if (bounds_.any() && !keeps_bounds({old_t, old_s}, {new_t, new_s})) return;
     if (!phase_open) {
       rec_.phase_begin(replay::Phase::improve);
       phase_open = true;
@@ -152,6 +184,7 @@ class SurfaceFlipper {
   Mesh& mesh_;
   const std::vector<Point3>& points_;
   const double max_dihedral_deg_;
+  const SizeBounds bounds_;
   Rec& rec_;
   std::unordered_map<std::uint64_t, FaceId> face_of_;  // directed edge (vertex ids) -> its face
   std::deque<std::uint64_t> queue_;                    // undirected edges to try

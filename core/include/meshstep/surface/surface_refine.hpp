@@ -29,7 +29,7 @@ struct BisectionOptions {
   double max_area = 0.0;          // every triangle's area at most this (0: no bound)
   std::size_t max_triangles = 0;  // never more triangles than this (0: no cap)
   // Then flip edges up to this dihedral angle, in the same mesh (surface_flips.hpp; < 0:
-  // no flips).
+  // no flips). A flip that would make a triangle over max_edge or max_area is not taken.
   double flip_dihedral_deg = -1.0;
   DataStructure data_structure = DataStructure::tds;
   // Record the run into this replay log (replay/log_writer.hpp): every vertex with its
@@ -46,6 +46,9 @@ struct BisectionReport {
   double area_before = 0.0;
   double area_after = 0.0;
   bool capped = false;  // max_triangles stopped the run before every bound was met
+  // Triangles of the output over a bound (either), over max_edge, over max_area: none
+  // unless the cap stopped the run or an edge was too short to cut. Flips never add to them.
+  std::size_t over_bounds = 0, over_max_edge = 0, over_max_area = 0;
   std::size_t flips = 0;                      // with flip_dihedral_deg >= 0
   double largest_dihedral_flipped_deg = 0.0;  // of the pairs flipped
 };
