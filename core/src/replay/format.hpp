@@ -44,10 +44,13 @@ inline constexpr char kFileMagic[8] = {'M', 'S', 'T', 'E', 'P', 'L', 'O', 'G'};
 // 2: split_face events packed like flips; keyframes in a layout of their own.
 // 3: locate events carry the faces of their walk (a list).
 // 4: terrains: elevation events, the vertical_error criterion, point_selected's sample choices.
-inline constexpr std::uint32_t kFormatVersion = 4;
+// 5: an event's type and code in one byte; flips and split_faces in a compact form (their
+//    slots named by their relation to slots just written, rotations in a byte).
+inline constexpr std::uint32_t kFormatVersion = 5;
 // The oldest version read: a version-2 log reads as one whose locate events have no list.
 inline constexpr std::uint32_t kOldestReadableVersion = 2;
 inline constexpr std::uint32_t kLocateWalkVersion = 3;  // the first whose locate events have one
+inline constexpr std::uint32_t kCompactVersion = 5;     // the first with compact event heads
 // The event types a file of format `version` can hold (its end block counts each): every
 // type before `elevation` until version 3.
 inline constexpr std::size_t event_type_count(std::uint32_t version) {
