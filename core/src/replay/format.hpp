@@ -76,6 +76,21 @@ struct BlockHeader {
 // 64-bit checksum of a byte range; changing any single 8-byte word always changes it.
 std::uint64_t checksum(std::span<const std::uint8_t> bytes, std::uint64_t seed = 0);
 
+// The same checksum of `size` bytes taken in pieces (a file read a buffer at a time, rather
+// than into memory whole): every piece but the last a multiple of 8 bytes.
+class ChecksumStream {
+ public:
+  explicit ChecksumStream(std::uint64_t size, std::uint64_t seed = 0);
+  // Throws std::logic_error for a piece after one that was not a multiple of 8 bytes.
+  void add(std::span<const std::uint8_t> piece);
+  std::uint64_t value() const;  // once all `size` bytes were added
+
+ private:
+  std::uint64_t h_;
+  std::uint64_t tail_ = 0;
+  bool ended_ = false;  // a piece of a length not a multiple of 8 came: it was the last
+};
+
 void serialize(const BlockHeader& h, std::uint8_t out[kBlockHeaderSize]);
 BlockHeader parse_block_header(const std::uint8_t in[kBlockHeaderSize]);
 // Whether the header's own 32-bit check (over its first 44 bytes) holds.
