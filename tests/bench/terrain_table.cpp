@@ -25,10 +25,6 @@
 //
 // Exit status: 0 ok, 1 a run failed or a meshstep output missed its bound by our measure,
 // 2 usage error or unreadable input.
-#include <fcntl.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -52,6 +48,7 @@
 #include <vector>
 
 #include "bench_args.hpp"
+#include "whole_process.hpp"
 #include "meshstep/io/surface_io.hpp"
 #include "meshstep/terrain/height_grid.hpp"
 
@@ -99,48 +96,10 @@ std::string read_text(const fs::path& path) {
 // ---------------------------------------------------------------------------------------
 // Whole processes.
 
-struct Process {
-  int exit_status = -1;  // -1: killed by a signal, or could not start
-  double ms = 0.0;
-  double peak_mb = 0.0;
-};
-
-// Runs args[0] with stdout and stderr into files; wall clock from fork to wait4. The child's
-// ru_maxrss is its own: checked on this machine (Linux 6.18), a parent holding 500 MB
-// forks children whose ru_maxrss stays at 1 MB.
-Process run_process(const std::vector<std::string>& args, const fs::path& out, const fs::path& err) {
-  std::vector<char*> argv;
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  std::fflush(nullptr);
-  Process p;
-  const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = ::fork();
-  if (pid < 0) return p;
-  if (pid == 0) {
-    const int o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (o < 0 || e < 0 || ::dup2(o, 1) < 0 || ::dup2(e, 2) < 0) ::_exit(126);
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
-  }
-  int status = 0;
-  rusage usage{};
-  if (::wait4(pid, &status, 0, &usage) != pid) return p;
-  p.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  p.peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux: kilobytes
-  if (WIFEXITED(status)) p.exit_status = WEXITSTATUS(status);
-  return p;
-}
-
-// The machine is shared: how busy it was, for the reader of the times.
-std::string load_average() {
-  std::string one, five, fifteen;
-  std::ifstream("/proc/loadavg") >> one >> five >> fifteen;
-  return one + " " + five + " " + fifteen;
-}
-
-fs::path program_dir() { return fs::read_symlink("/proc/self/exe").parent_path(); }
+using meshstep::bench::load_average;
+using meshstep::bench::Process;
+using meshstep::bench::program_dir;
+using meshstep::bench::run_process;
 
 std::optional<fs::path> find_meshstep(const std::string& given) {
   if (!given.empty()) return fs::exists(given) ? std::optional<fs::path>(given) : std::nullopt;

@@ -1,6 +1,7 @@
 // Schema-driven event encoding (see event_codec.hpp).
 #include "event_codec.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <stdexcept>
@@ -17,7 +18,11 @@ using format::zigzag;
 
 // Vertex codes: 0 none, 1 the vertex at infinity, 2 + slot for a hit in the recent-vertex
 // cache, kFullVertex + zigzag(difference from the last vertex written in full) otherwise.
-constexpr std::uint64_t kFullVertex = 2 + CoderState::kCache;
+// Format 5 puts kFreshVertex (CoderState::vertex_top) before the full codes.
+constexpr std::uint64_t kFreshVertex = 2 + CoderState::kCache;
+constexpr std::uint64_t full_vertex_base(std::uint32_t version) {
+  return version >= format::kCompactVersion ? kFreshVertex + 1 : kFreshVertex;
+}
 // Record headers: constraint bits 0..7 then three vertex codes; kDead; or kTableRecord |
 // three 2-bit table positions, plus kTableFlags when a byte of constraint bits follows.
 constexpr std::uint8_t kDead = 0x08;
@@ -26,6 +31,20 @@ constexpr std::uint8_t kTableFlags = 0x40;
 // A walk's step codes (Encoder::walk): 3 * edge + rotation for a face across an edge of the
 // one before, kWholeFace for one stored whole.
 constexpr std::uint8_t kWholeFace = 0xF;
+
+// Format 5's first byte of an event. Below kPackedHead: the type in the low 5 bits and the
+// code in the next two (kCodeFollows: the code is the next byte). Above, the two packed
+// events, whose code and layout the byte carries:
+//   10rrrcmm  a flip: reason r; c: a varint of constraint bits follows the rotations; mm: its
+//             slots after, 0: the same as before, 1: swapped, 2: written out
+//   1100000g  a split_face; g: its bits follow whole (a varint) instead of a rotation byte
+constexpr std::uint8_t kPackedHead = 0x80;
+constexpr std::uint8_t kSplitFaceHead = 0xC0;
+constexpr std::uint8_t kCodeFollows = 3;
+static_assert(kEventTypeCount <= 32, "format 5 keeps an event's type in 5 bits");
+// A split_face's spoke slots in format 5, two bits each in a byte: the slot split, a fresh
+// slot (CoderState::slot_top), or written out.
+enum SpokeSlot : std::uint8_t { kSplitSlot = 0, kFreshSlot = 1, kWrittenSlot = 2 };
 
 std::uint8_t* put_varint(std::uint8_t* out, std::uint64_t v) {
   while (v >= 0x80) {
@@ -115,9 +134,14 @@ std::uint8_t* Encoder::vertex(std::uint32_t v, std::uint8_t* out) {
     *out++ = static_cast<std::uint8_t>(2 + slot);
     return out;
   }
-  out = put_varint(out, kFullVertex + zigzag(std::int64_t{v} - std::int64_t{state_.last_vertex}));
+  if (version_ >= format::kCompactVersion && v == state_.vertex_top) {
+    *out++ = static_cast<std::uint8_t>(kFreshVertex);
+  } else {
+    out = put_varint(out, full_vertex_base(version_) + zigzag(std::int64_t{v} - std::int64_t{state_.last_vertex}));
+  }
   state_.last_vertex = v;
   state_.cache[slot] = v;
+  state_.vertex_top = std::max(state_.vertex_top, v + 1);
   return out;
 }
 
@@ -138,6 +162,7 @@ std::uint8_t* Encoder::id(IdKind kind, std::uint32_t value, std::uint8_t* out) {
       }
       out = put_varint(out, 1 + zigzag(std::int64_t{value} - std::int64_t{ref}));
       ref = value;
+      if (kind == IdKind::slot) state_.slot_top = std::max(state_.slot_top, value + 1);
       return out;
     }
   }
@@ -226,8 +251,7 @@ std::uint8_t* Encoder::walk(std::span<const std::uint32_t> list, std::uint8_t* o
 // line otherwise.
 [[gnu::flatten]] std::uint8_t* Encoder::event(const Event& e, std::uint8_t* out) {
   const EventSchema& s = schema(e.type);
-  *out++ = static_cast<std::uint8_t>(e.type);
-  *out++ = e.code;
+  out = head(e.type, e.code, out);
   state_.table_size = 0;
   for (int i = 0; i < s.id_count; ++i) out = id(s.id_kinds[i], e.ids[i], out);
   if (s.has_point) {
@@ -259,10 +283,48 @@ std::uint8_t* Encoder::walk(std::span<const std::uint32_t> list, std::uint8_t* o
   return out;
 }
 
+std::uint8_t* Encoder::head(EventType type, std::uint8_t code, std::uint8_t* out) {
+  if (version_ < format::kCompactVersion) {
+    *out++ = static_cast<std::uint8_t>(type);
+    *out++ = code;
+    return out;
+  }
+  const std::uint8_t inline_code = code < kCodeFollows ? code : kCodeFollows;
+  *out++ = static_cast<std::uint8_t>(static_cast<std::uint8_t>(type) | inline_code << 5);
+  if (inline_code == kCodeFollows) *out++ = code;
+  return out;
+}
+
+// Format 5's flip: the data structures reuse both slots (the faces after are the faces
+// before, in the same or the swapped order), and rotations fill a byte (a Delaunay run has
+// no constraint bits).
+std::uint8_t* Encoder::compact_flip(std::uint8_t code, const std::array<std::uint32_t, 4>& abcd,
+                                    const std::array<FaceId, 4>& slots, std::uint32_t packed, std::uint8_t* out) {
+  std::uint32_t rotations = 0, constraints = 0;
+  for (int i = 0; i < 4; ++i) {
+    rotations |= ((packed >> (5 * i)) & 3u) << (2 * i);
+    constraints |= ((packed >> (5 * i + 2)) & 7u) << (3 * i);
+  }
+  const std::uint8_t mode = slots[2] == slots[0] && slots[3] == slots[1]   ? 0
+                            : slots[2] == slots[1] && slots[3] == slots[0] ? 1
+                                                                           : 2;
+  *out++ = static_cast<std::uint8_t>(kPackedHead | code << 3 | (constraints ? 4 : 0) | mode);
+  for (const std::uint32_t v : abcd) out = vertex(v, out);
+  out = id(IdKind::slot, slots[0], out);
+  out = id(IdKind::slot, slots[1], out);
+  if (mode == 2) {
+    out = id(IdKind::slot, slots[2], out);
+    out = id(IdKind::slot, slots[3], out);
+  }
+  *out++ = static_cast<std::uint8_t>(rotations);
+  if (constraints) out = put_varint(out, constraints);
+  return out;
+}
+
 [[gnu::flatten]] std::uint8_t* Encoder::flip(std::uint8_t code, const std::array<std::uint32_t, 4>& abcd,
                             const std::array<FaceId, 4>& slots, std::uint32_t packed, std::uint8_t* out) {
-  *out++ = static_cast<std::uint8_t>(EventType::flip);
-  *out++ = code;
+  if (version_ >= format::kCompactVersion && code < 8) return compact_flip(code, abcd, slots, packed, out);
+  out = head(EventType::flip, code, out);
   for (const std::uint32_t v : abcd) out = vertex(v, out);
   for (const FaceId f : slots) out = id(IdKind::slot, f, out);
   return put_varint(out, packed);
@@ -271,12 +333,52 @@ std::uint8_t* Encoder::walk(std::span<const std::uint32_t> list, std::uint8_t* o
 [[gnu::flatten]] std::uint8_t* Encoder::split_face(VertexId v, const std::array<std::uint32_t, 3>& abc, FaceId slot,
                                   const std::array<FaceId, 3>& spokes, std::uint32_t packed,
                                   std::uint8_t* out) {
+  if (version_ >= format::kCompactVersion) return compact_split_face(v, abc, slot, spokes, packed, out);
   *out++ = static_cast<std::uint8_t>(EventType::split_face);
   *out++ = 0;
   out = vertex(v, out);
   for (const std::uint32_t x : abc) out = vertex(x, out);
   out = id(IdKind::slot, slot, out);
   for (const FaceId f : spokes) out = id(IdKind::slot, f, out);
+  return put_varint(out, packed);
+}
+
+// Format 5's split_face: of the three faces around the new vertex, one usually takes the
+// split face's slot and the others fresh slots; each spoke i usually stands on the old
+// face's edge i, without constraint bits, so three rotations fill a byte.
+std::uint8_t* Encoder::compact_split_face(VertexId v, const std::array<std::uint32_t, 3>& abc, FaceId slot,
+                                          const std::array<FaceId, 3>& spokes, std::uint32_t packed,
+                                          std::uint8_t* out) {
+  std::uint32_t rotations = 0;
+  bool plain = (packed & 7u) == 0;
+  for (std::uint32_t i = 0; i < 3; ++i) {
+    const std::uint32_t bits = packed >> (3 + 7 * i);
+    plain = plain && (bits & 3u) == i && ((bits >> 4) & 7u) == 0;
+    rotations |= ((bits >> 2) & 3u) << (2 * i);
+  }
+  *out++ = static_cast<std::uint8_t>(kSplitFaceHead | (plain ? 0 : 1));
+  out = vertex(v, out);
+  for (const std::uint32_t x : abc) out = vertex(x, out);
+  out = id(IdKind::slot, slot, out);
+  std::uint8_t* modes = out++;
+  *modes = 0;
+  for (int i = 0; i < 3; ++i) {
+    SpokeSlot mode = kWrittenSlot;
+    if (spokes[i] == slot) {
+      mode = kSplitSlot;
+    } else if (spokes[i] == state_.slot_top) {
+      mode = kFreshSlot;
+      state_.slot_ref = spokes[i];
+      state_.slot_top = spokes[i] + 1;
+    } else {
+      out = id(IdKind::slot, spokes[i], out);
+    }
+    *modes = static_cast<std::uint8_t>(*modes | mode << (2 * i));
+  }
+  if (plain) {
+    *out++ = static_cast<std::uint8_t>(rotations);
+    return out;
+  }
   return put_varint(out, packed);
 }
 
@@ -317,13 +419,20 @@ std::uint32_t Decoder::vertex() {
   const std::uint64_t code = varint();
   if (code == 0) return kNone;
   if (code == 1) return kInfiniteVertex;
-  if (code < kFullVertex) {
+  if (code < kFreshVertex) {
     const std::uint32_t v = state_.cache[code - 2];
     if (v == kNone) throw FormatError("vertex refers to an empty cache slot");
     return v;
   }
-  state_.last_vertex = offset_id(state_.last_vertex, code - kFullVertex, kInfiniteVertex, "vertex id out of range");
+  const std::uint64_t full = full_vertex_base(version_);
+  if (code < full) {  // kFreshVertex, format 5
+    if (state_.vertex_top >= kInfiniteVertex) throw FormatError("vertex id out of range");
+    state_.last_vertex = state_.vertex_top;
+  } else {
+    state_.last_vertex = offset_id(state_.last_vertex, code - full, kInfiniteVertex, "vertex id out of range");
+  }
   state_.cache[state_.last_vertex % CoderState::kCache] = state_.last_vertex;
+  state_.vertex_top = std::max(state_.vertex_top, state_.last_vertex + 1);
   return state_.last_vertex;
 }
 
@@ -346,6 +455,7 @@ std::uint32_t Decoder::id(IdKind kind) {
       const std::uint64_t code = varint();
       if (code == 0) return kNone;
       ref = offset_id(ref, code - 1, kNone, kind == IdKind::slot ? "face slot out of range" : "input index out of range");
+      if (kind == IdKind::slot) state_.slot_top = std::max(state_.slot_top, ref + 1);
       return ref;
     }
   }
@@ -395,13 +505,24 @@ FaceRecord Decoder::table_record() {
 }
 
 void Decoder::event(DecodedEvents& out) {
-  if (end_ - p_ < 2) throw FormatError("event data ends in the middle of an event");
-  const std::uint8_t type = *p_++;
+  std::uint8_t type, code;
+  if (version_ >= format::kCompactVersion) {
+    const std::uint8_t first = byte("an event");
+    if (first >= kSplitFaceHead) return compact_split_face(first, out);
+    if (first >= kPackedHead) return compact_flip(first, out);
+    type = first & 0x1F;
+    code = static_cast<std::uint8_t>(first >> 5);
+    if (code == kCodeFollows) code = byte("an event");
+  } else {
+    if (end_ - p_ < 2) throw FormatError("event data ends in the middle of an event");
+    type = *p_++;
+    code = *p_++;
+  }
   if (type >= format::event_type_count(version_))
     throw FormatError("unknown event type " + std::to_string(type) + " (written by a newer meshstep?)");
   EventHead h{};
   h.type = static_cast<EventType>(type);
-  h.code = *p_++;
+  h.code = code;
   h.ids = {kNone, kNone, kNone, kNone};
   if (h.type == EventType::flip) return flip(h, out);
   if (h.type == EventType::split_face) return split_face(h, out);
@@ -519,6 +640,92 @@ void Decoder::split_face(EventHead& h, DecodedEvents& out) {
     throw FormatError("a split_face names no face slot");
   const std::uint64_t packed = varint();
   if (packed >= (1u << 24)) throw FormatError("bad split_face bits");
+  for (int i = 0; i < 3; ++i) {
+    const std::uint64_t bits = packed >> (3 + 7 * i);
+    if ((bits & 3u) == 3u || ((bits >> 2) & 3u) == 3u) throw FormatError("bad split_face edge or rotation");
+  }
+  SlotWrite writes[4];
+  const std::size_t n = split_face_writes(v, abc, slot, spokes, static_cast<std::uint32_t>(packed), writes);
+  out.writes.insert(out.writes.end(), writes, writes + n);
+  h.ids[0] = v;
+  push(h, out);
+}
+
+void Decoder::compact_flip(std::uint8_t first, DecodedEvents& out) {
+  EventHead h{};
+  h.type = EventType::flip;
+  h.code = static_cast<std::uint8_t>((first >> 3) & 7u);
+  const std::uint32_t mode = first & 3u;
+  if (mode == 3) throw FormatError("bad flip slots");
+  std::array<std::uint32_t, 4> abcd;
+  for (std::uint32_t& v : abcd) {
+    v = vertex();
+    if (v == kNone) throw FormatError("a flip names no vertex");
+  }
+  std::array<FaceId, 4> slots;
+  const int written = mode == 2 ? 4 : 2;
+  for (int i = 0; i < written; ++i) {
+    slots[i] = id(IdKind::slot);
+    if (slots[i] == kNone) throw FormatError("a flip names no face slot");
+  }
+  if (mode == 0) slots[2] = slots[0], slots[3] = slots[1];
+  if (mode == 1) slots[2] = slots[1], slots[3] = slots[0];
+  const std::uint8_t rotations = byte("a flip");
+  const std::uint64_t constraints = (first & 4u) ? varint() : 0;
+  if (constraints >= (1u << 12)) throw FormatError("bad flip bits");
+  std::uint32_t packed = 0;
+  for (int i = 0; i < 4; ++i) {
+    const std::uint32_t rotation = (rotations >> (2 * i)) & 3u;
+    if (rotation == 3u) throw FormatError("bad flip rotation");
+    packed |= (rotation | static_cast<std::uint32_t>((constraints >> (3 * i)) & 7u) << 2) << (5 * i);
+  }
+  SlotWrite writes[4];
+  const std::size_t n = flip_writes(abcd, slots, packed, writes);
+  out.writes.insert(out.writes.end(), writes, writes + n);
+  h.ids = {abcd[0], abcd[1], abcd[2], abcd[3]};
+  push(h, out);
+}
+
+// The slot after the largest written (Encoder::compact_split_face).
+FaceId Decoder::fresh_slot() {
+  if (state_.slot_top >= kNone) throw FormatError("face slot out of range");
+  state_.slot_ref = state_.slot_top++;
+  return state_.slot_ref;
+}
+
+void Decoder::compact_split_face(std::uint8_t first, DecodedEvents& out) {
+  if (first > (kSplitFaceHead | 1)) throw FormatError("unknown event head " + std::to_string(first));
+  EventHead h{};
+  h.type = EventType::split_face;
+  h.ids = {kNone, kNone, kNone, kNone};
+  const VertexId v = vertex();
+  std::array<std::uint32_t, 3> abc;
+  for (std::uint32_t& x : abc) x = vertex();
+  if (v == kNone || abc[0] == kNone || abc[1] == kNone || abc[2] == kNone)
+    throw FormatError("a split_face names no vertex");
+  const FaceId slot = id(IdKind::slot);
+  if (slot == kNone) throw FormatError("a split_face names no face slot");
+  const std::uint8_t modes = byte("a split_face");
+  std::array<FaceId, 3> spokes;
+  for (int i = 0; i < 3; ++i) {
+    switch ((modes >> (2 * i)) & 3u) {
+      case kSplitSlot: spokes[i] = slot; break;
+      case kFreshSlot: spokes[i] = fresh_slot(); break;
+      case kWrittenSlot:
+        spokes[i] = id(IdKind::slot);
+        if (spokes[i] == kNone) throw FormatError("a split_face names no face slot");
+        break;
+      default: throw FormatError("bad split_face slots");
+    }
+  }
+  std::uint64_t packed = 0;
+  if (first & 1u) {
+    packed = varint();
+    if (packed >= (1u << 24)) throw FormatError("bad split_face bits");
+  } else {
+    const std::uint8_t rotations = byte("a split_face");
+    for (std::uint32_t i = 0; i < 3; ++i) packed |= std::uint64_t{i | ((rotations >> (2 * i)) & 3u) << 2} << (3 + 7 * i);
+  }
   for (int i = 0; i < 3; ++i) {
     const std::uint64_t bits = packed >> (3 + 7 * i);
     if ((bits & 3u) == 3u || ((bits >> 2) & 3u) == 3u) throw FormatError("bad split_face edge or rotation");

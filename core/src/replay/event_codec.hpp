@@ -36,6 +36,9 @@ struct CoderState {
   static constexpr std::size_t kCache = 64;
   std::array<std::uint32_t, kCache> cache;
   std::uint32_t last_vertex = 0, slot_ref = 0, input_ref = 0;
+  // Format 5: one past the largest vertex and slot written since the block began, which is
+  // what a run names next when it makes a vertex or a face (a fresh vertex, a fresh slot).
+  std::uint32_t vertex_top = 0, slot_top = 0;
   std::array<std::uint32_t, 4> table;  // the current event's first vertices
   std::size_t table_size = 0;
   CoderState() { cache.fill(kNone); }
@@ -90,6 +93,11 @@ class Encoder {
   std::uint8_t* record(const FaceRecord& r, std::uint8_t* out);  // without the table
 
  private:
+  std::uint8_t* head(EventType type, std::uint8_t code, std::uint8_t* out);
+  std::uint8_t* compact_flip(std::uint8_t code, const std::array<std::uint32_t, 4>& abcd,
+                             const std::array<FaceId, 4>& slots, std::uint32_t packed, std::uint8_t* out);
+  std::uint8_t* compact_split_face(VertexId v, const std::array<std::uint32_t, 3>& abc, FaceId slot,
+                                   const std::array<FaceId, 3>& spokes, std::uint32_t packed, std::uint8_t* out);
   std::uint8_t* vertex(std::uint32_t v, std::uint8_t* out);
   std::uint8_t* table_record(const FaceRecord& r, std::uint8_t* out);
   std::uint8_t* walk(std::span<const std::uint32_t> list, std::uint8_t* out);
@@ -114,6 +122,9 @@ class Decoder {
   void walk(DecodedEvents& out);
   void flip(EventHead& h, DecodedEvents& out);
   void split_face(EventHead& h, DecodedEvents& out);
+  void compact_flip(std::uint8_t first, DecodedEvents& out);
+  void compact_split_face(std::uint8_t first, DecodedEvents& out);
+  FaceId fresh_slot();
   void push(EventHead& h, DecodedEvents& out);
   std::uint64_t varint();
   std::uint32_t u32(const char* what);

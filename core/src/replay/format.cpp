@@ -4,6 +4,7 @@
 #include <zstd.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <new>
 #include <stdexcept>
@@ -17,20 +18,35 @@ constexpr std::uint64_t kMul2 = 0xC2B2AE3D27D4EB4Full;
 }  // namespace
 
 std::uint64_t checksum(std::span<const std::uint8_t> bytes, std::uint64_t seed) {
+  ChecksumStream stream(bytes.size(), seed);
+  stream.add(bytes);
+  return stream.value();
+}
+
+ChecksumStream::ChecksumStream(std::uint64_t size, std::uint64_t seed) : h_(seed ^ (size * kMul1)) {}
+
+void ChecksumStream::add(std::span<const std::uint8_t> piece) {
   // Each step h -> rotl(h ^ w * kMul1, 31) * kMul2 is a bijection of h for a fixed word and
   // of the word for a fixed h (odd multipliers), so a change confined to one word always
   // changes the result.
-  std::uint64_t h = seed ^ (bytes.size() * kMul1);
+  if (ended_) throw std::logic_error("checksum: a piece after the last");
+  std::uint64_t h = h_;
   std::size_t i = 0;
-  for (; i + 8 <= bytes.size(); i += 8) {
+  for (; i + 8 <= piece.size(); i += 8) {
     std::uint64_t w;
-    std::memcpy(&w, bytes.data() + i, 8);
+    std::memcpy(&w, piece.data() + i, 8);
     h = std::rotl(h ^ (w * kMul1), 31) * kMul2;
   }
-  std::uint64_t tail = 0;
+  h_ = h;
   // An empty span may have no data pointer at all, which memcpy must not be given.
-  if (i < bytes.size()) std::memcpy(&tail, bytes.data() + i, bytes.size() - i);
-  h = std::rotl(h ^ (tail * kMul1), 31) * kMul2;
+  if (i < piece.size()) {
+    std::memcpy(&tail_, piece.data() + i, piece.size() - i);
+    ended_ = true;
+  }
+}
+
+std::uint64_t ChecksumStream::value() const {
+  std::uint64_t h = std::rotl(h_ ^ (tail_ * kMul1), 31) * kMul2;
   h ^= h >> 33;
   h *= kMul1;
   h ^= h >> 29;

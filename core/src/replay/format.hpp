@@ -44,10 +44,13 @@ inline constexpr char kFileMagic[8] = {'M', 'S', 'T', 'E', 'P', 'L', 'O', 'G'};
 // 2: split_face events packed like flips; keyframes in a layout of their own.
 // 3: locate events carry the faces of their walk (a list).
 // 4: terrains: elevation events, the vertical_error criterion, point_selected's sample choices.
-inline constexpr std::uint32_t kFormatVersion = 4;
+// 5: an event's type and code in one byte; flips and split_faces in a compact form (their
+//    slots named by their relation to slots just written, rotations in a byte).
+inline constexpr std::uint32_t kFormatVersion = 5;
 // The oldest version read: a version-2 log reads as one whose locate events have no list.
 inline constexpr std::uint32_t kOldestReadableVersion = 2;
 inline constexpr std::uint32_t kLocateWalkVersion = 3;  // the first whose locate events have one
+inline constexpr std::uint32_t kCompactVersion = 5;     // the first with compact event heads
 // The event types a file of format `version` can hold (its end block counts each): every
 // type before `elevation` until version 3.
 inline constexpr std::size_t event_type_count(std::uint32_t version) {
@@ -72,6 +75,21 @@ struct BlockHeader {
 
 // 64-bit checksum of a byte range; changing any single 8-byte word always changes it.
 std::uint64_t checksum(std::span<const std::uint8_t> bytes, std::uint64_t seed = 0);
+
+// The same checksum of `size` bytes taken in pieces (a file read a buffer at a time, rather
+// than into memory whole): every piece but the last a multiple of 8 bytes.
+class ChecksumStream {
+ public:
+  explicit ChecksumStream(std::uint64_t size, std::uint64_t seed = 0);
+  // Throws std::logic_error for a piece after one that was not a multiple of 8 bytes.
+  void add(std::span<const std::uint8_t> piece);
+  std::uint64_t value() const;  // once all `size` bytes were added
+
+ private:
+  std::uint64_t h_;
+  std::uint64_t tail_ = 0;
+  bool ended_ = false;  // a piece of a length not a multiple of 8 came: it was the last
+};
 
 void serialize(const BlockHeader& h, std::uint8_t out[kBlockHeaderSize]);
 BlockHeader parse_block_header(const std::uint8_t in[kBlockHeaderSize]);

@@ -135,7 +135,7 @@ void LogEncoder::count_event(EventType type) {
 
 void LogEncoder::emit(format::BlockHeader header, std::span<const std::uint8_t> raw, Compression compression) {
   std::span<const std::uint8_t> payload = raw;
-  if (compression == Compression::zstd) {
+  if (compression == Compression::zstd && (options_.compress || version_ < format::kCompactVersion)) {
     compressor_.compress(raw, stored_);
     if (stored_.size() < raw.size()) payload = stored_;
   }

@@ -64,10 +64,13 @@ std::pair<std::size_t, std::vector<double>> parse_vertex_attributes_field(const 
                                                                           std::size_t vertex_limit);
 
 struct LogWriterOptions {
-  // zstd's fast negative levels: the encoded events are varints already, so a stronger
-  // level buys little (level 1: 13.4 bytes per event at 1e6 points, -20: 17.1) and would make
-  // the writer thread the bottleneck of a recorded run (1.9x its time).
-  int zstd_level = -20;
+  // Whether event blocks go through zstd. Format 5's events leave its fast levels nothing
+  // to find (at -20, a 1e6-point triangulation's events came out 0.02% smaller, for 12% of
+  // the writer thread's instructions), so they are stored as they are; a stronger level
+  // would shrink them (level 1: about 10%) but cost as much time as the triangulation.
+  // Logs of an older format (format_version below) are compressed, as they always were.
+  bool compress = false;
+  int zstd_level = -20;  // when compressing
   std::size_t block_bytes = 256 * 1024;  // encoded events per block, before compression
   KeyframePolicy keyframes;
   // The file format version to write; 0: the current one. 2 writes what meshstep wrote
