@@ -152,8 +152,8 @@ int run_terrain_in_tiles(const TerrainArgs& args, const terrain::TerrainAlgorith
     if (args.max_error.back() == '%') {
       // Every tile needs the same bound, so the whole grid's range comes first.
       print_progress(verbosity, "reading " + args.grid + " once for its height range");
-      const auto [low, high] = streamed_height_range(args.grid, grid_options);
-      range = high - low;  // in float, as the whole-grid run takes it: the same bound
+      // The same span, in double, as the whole-grid run takes: the same bound.
+      range = terrain::height_span(streamed_height_range(args.grid, grid_options));
     }
     const double bound = *parse_error_bound(args.max_error, range);
     run.grid = args.grid;
@@ -218,10 +218,10 @@ int run_terrain(const TerrainArgs& args) {
     const terrain::HeightGrid grid = terrain::read_height_grid(args.grid, grid_options);
     const double read_ms = clock.lap_ms();
     if (grid.geographic) print_progress(verbosity, grid.units_note);
-    const auto [low, high] = grid.height_range();
+    const double range = terrain::height_span(grid.height_range());
     double bound = std::numeric_limits<double>::infinity();
     if (!args.max_error.empty()) {
-      const auto parsed = parse_error_bound(args.max_error, high - low);
+      const auto parsed = parse_error_bound(args.max_error, range);
       if (!parsed) {
         print_error("--max-error: '" + args.max_error + "' is not a number >= 0 (or a percentage like 0.5%)");
         return kExitUsage;

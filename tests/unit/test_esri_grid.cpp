@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <span>
 #include <string>
+#include <utility>
 
 #include "meshstep/error.hpp"
 #include "meshstep/io/esri_grid.hpp"
@@ -47,6 +49,36 @@ TEST(EsriGrid, MalformedFilesNameTheLine) {
             std::string::npos);
   EXPECT_NE(message("ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3\n").find("more values"),
             std::string::npos);
+}
+
+// Issue 31, fault 1: ncols x nrows was multiplied in 64 bits and wrapped: 2^32 x 2^32 read
+// as a grid of 0 values and (2^62 + 1) x 4 as one of 4, "filled" by the file, and a lookup
+// then read far past them. The product is checked without wrapping, and against what the
+// file's bytes can hold, at the later count's line, by both ways of reading a grid.
+TEST(EsriGrid, CountsWhoseProductWrapsOrPassesTheFileAreRefusedAtTheirLine) {
+  testing::TempDir dir("meshstep_esri_");
+  const std::string corner = "xllcorner 0\nyllcorner 0\ncellsize 1\n";
+  const std::pair<std::string, std::string> cases[] = {
+      {"ncols 4294967296\nnrows 4294967296\n" + corner, "bad.asc:2: 4294967296 x 4294967296 samples is too large a grid"},
+      {"nrows 4\nncols 4611686018427387905\n" + corner + "1 2 3 4\n",
+       "bad.asc:2: 4611686018427387905 x 4 samples is too large a grid"},
+      {"ncols 1000\nnrows 1000\n" + corner + "1 2 3\n4 5 6\n",
+       "bad.asc:2: 1000 x 1000 = 1000000 values, but the file can hold at most 6"}};
+  for (const auto& [text, expected] : cases) {
+    const std::string path = dir.write("bad.asc", text);
+    for (const bool by_rows : {false, true}) {
+      std::string message = "no error";
+      try {
+        if (by_rows)
+          io::read_esri_grid_rows(path, [](const io::EsriGrid&, std::size_t, std::span<const double>, std::size_t) {});
+        else
+          io::read_esri_grid(path);
+      } catch (const InputError& e) {
+        message = e.what();
+      }
+      EXPECT_NE(message.find(expected), std::string::npos) << message;
+    }
+  }
 }
 
 TEST(EsriGrid, SharedTerrainGridsReadWhole) {

@@ -291,8 +291,11 @@ TEST(HeightGrid, MalformedEsriGridsNameFileAndLine) {
       {header + "1 2 3\n4 nan 6\n", "bad.asc:7: grid value should be a finite number, found 'nan'"},
       {header + "1 -inf 3\n4 5 6\n", "bad.asc:6: grid value should be a finite number, found '-inf'"},
       {header + "1 2 3\n4 5 6\n7\n", "bad.asc:8: more values than ncols x nrows = 6"},
-      {header + "1 2 3\n4 5\n", "bad.asc:7: the grid has 5 values; ncols x nrows = 6"},
-      {header, "bad.asc:5: the grid has 0 values; ncols x nrows = 6"},
+      // Fewer values than the file's bytes can hold: refused at the counts, before any is read.
+      {header + "1 2 3\n4 5\n", "bad.asc:2: 3 x 2 = 6 values, but the file can hold at most 5"},
+      {header, "bad.asc:2: 3 x 2 = 6 values, but the file can hold at most 0"},
+      // Bytes enough (long numbers), values too few: found at the end.
+      {header + "1000 2000 3000\n4000 5000\n", "bad.asc:7: the grid has 5 values; ncols x nrows = 6"},
       {"ncols 3\nnrows 2\nxllcor", "bad.asc:3: the header has no xllcorner or xllcenter"},
       {header + "NODATA_value -9999\n-9999 -9999 -9999\n-9999 -9999 -9999\n",
        "bad.asc:6: every value is NODATA_value (-9999): the grid has no data"},

@@ -337,7 +337,7 @@ TEST_F(RefineCli, SizeGridBoundsEdgesCellByCell) {
   const CommandResult short_grid = meshstep("refine " + input + " --size " +
                                             write("short.asc", "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3\n"));
   EXPECT_EQ(short_grid.status, 1);
-  EXPECT_TRUE(contains(short_grid.err, "3 values; ncols x nrows = 4")) << short_grid.err;
+  EXPECT_TRUE(contains(short_grid.err, "short.asc:2: 2 x 2 = 4 values, but the file can hold at most 3")) << short_grid.err;
   const CommandResult missing = meshstep("refine " + input + " --size " + dir_.file("absent.asc"));
   EXPECT_EQ(missing.status, 1);
   EXPECT_TRUE(contains(missing.err, "absent.asc")) << missing.err;

@@ -10,11 +10,13 @@
 #include <map>
 #include <random>
 #include <set>
+#include <stdexcept>
 
 #include "../../core/src/terrain/triangle_scan.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/terrain/height_grid.hpp"
 #include "meshstep/terrain/tin.hpp"
+#include "meshstep/terrain/tiles.hpp"
 #include "meshstep/terrain/tin_surface.hpp"
 
 namespace meshstep::terrain {
@@ -213,6 +215,39 @@ TEST(Terrain, SmallestGridsWork) {
   EXPECT_LE(check_independently(strip, strip_tin).max_error, 0.01 * (1 + 1e-9));
   const HeightGrid line = make_grid(1, 30, 1, 1, [](std::size_t, std::size_t j) { return j; });
   EXPECT_THROW(approximate(line, {.max_error = 1}), InputError);
+}
+
+// Issue 31, fault 4: under a bound of 0, a vertex measured a rounding-level error
+// (5.55e-17) off its own triangle's plane, was chosen again and again, and the run never
+// ended. Now a vertex has no error, every run ends, and every sample with data is exact.
+// The progress callback stands in for a timeout: it is called every 2^16 insertions, far
+// past this grid's 20 samples, and throws, so that the test fails rather than hangs.
+TEST(Terrain, ABoundOfZeroEndsWithEverySampleExactOnGridsWithoutData) {
+  // A grid found by a search of small grids with NODATA (rows southernmost first).
+  const float rows[5][4] = {{-6.0f, 2.906f, NAN, 7.66f},
+                            {2.8f, NAN, -0.4f, -3.261f},
+                            {NAN, NAN, -6.448f, 2.9767918f},
+                            {NAN, -7.2f, NAN, -4.4617134f},
+                            {-0.9338064f, -6.5696479f, NAN, -2.0f}};
+  const HeightGrid g = make_grid(4, 5, 0.3, 0.3, [&](std::size_t i, std::size_t j) { return rows[j][i]; });
+  for (const auto algorithm : {TerrainAlgorithm::greedy, TerrainAlgorithm::lepp_surface})
+    for (const auto ds : {DataStructure::tds, DataStructure::dcel})
+      for (const double bound : {0.0, 1e-17}) {
+        TerrainReport report;
+        TerrainOptions options{.algorithm = algorithm, .max_error = bound, .data_structure = ds};
+        options.progress = [](std::size_t, double) { throw std::runtime_error("the run does not end"); };
+        Tin tin;
+        ASSERT_NO_THROW(tin = approximate(g, options, &report));
+        EXPECT_LE(report.insertions, g.nx * g.ny) << "a sample inserted twice";
+        expect_valid_tin(g, tin);
+        EXPECT_EQ(measure_error(g, tin).max, 0.0);
+        // The tiles' path: each tile's border and inside, within the same bound of 0.
+        cut_tiles(g, 3, std::nullopt, [&](const Tile& tile) {
+          Tin t;
+          ASSERT_NO_THROW(t = approximate_tile(tile, options));
+          EXPECT_EQ(measure_error(tile.grid, t).max, 0.0);
+        });
+      }
 }
 
 TEST(Terrain, TheTriangleCapStopsTheRun) {

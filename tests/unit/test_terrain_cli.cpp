@@ -111,6 +111,50 @@ TEST(TerrainCli, BadInputIsRefusedWithWhereAndWhy) {
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "x.dxf"));
 }
 
+// Issue 31, fault 1: ncols x nrows wrapped 64 bits (2^32 x 2^32 = 0, (2^62 + 1) x 4 = 4),
+// so the file's few values "filled" the grid: `refine --size` then read past them (a
+// segfault), and `terrain` said every value was NODATA. Every reader of the header now
+// refuses it at the later count's line: the size grid, the terrain, its tiles.
+TEST(TerrainCli, GridCountsWhoseProductWrapsAreRefusedAtTheirLineByEveryReader) {
+  TempDir dir;
+  const auto square = dir.path() / "square.poly";
+  std::ofstream(square) << "4 2 0 0\n1 0 0\n2 10 0\n3 10 10\n4 0 10\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n";
+  const auto tail = "xllcorner 0\nyllcorner 0\ncellsize 1\nNODATA_value 0\n";
+  const std::string headers[] = {std::string("ncols 4294967296\nnrows 4294967296\n") + tail,
+                                 std::string("ncols 4611686018427387905\nnrows 4\n") + tail + "1 2 3 4\n"};
+  for (const std::string& text : headers) {
+    const auto grid = dir.path() / "wraps.asc";
+    std::ofstream(grid) << text;
+    for (const std::string& command : {"terrain " + grid.string() + " --max-error 1",
+                                      "terrain " + grid.string() + " --max-error 1 --tile 4",
+                                      "refine " + square.string() + " --size " + grid.string()}) {
+      const auto r = run_meshstep(command, dir.path());
+      EXPECT_EQ(r.status, 1) << command << "\n" << r.err;
+      EXPECT_NE(r.err.find(grid.string() + ":2: "), std::string::npos) << command << "\n" << r.err;
+      EXPECT_NE(r.err.find("too large a grid"), std::string::npos) << command << "\n" << r.err;
+    }
+  }
+}
+
+// Issue 31, fault 3: the height range was taken in float, and -3e38 .. 3e38 spans 6e38:
+// an infinite range, an infinite bound (JSON null), two triangles and an error of 6e38
+// passed as within it. Now the range is a double, in the whole-grid run and the tiles'.
+TEST(TerrainCli, APercentBoundOverHeightsSpanningMoreThanAFloatIsMet) {
+  TempDir dir;
+  const auto grid = dir.path() / "extreme.asc";
+  std::ofstream(grid) << "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 1\n"
+                         "-3e38 0 3e38\n3e38 -3e38 0\n0 3e38 -3e38\n";
+  for (const std::string tiles : {"", " --tile 2"}) {
+    const auto r = run_meshstep("terrain " + grid.string() + " --max-error 50% --stats json -q" + tiles, dir.path());
+    ASSERT_EQ(r.status, 0) << tiles << "\n" << r.err;
+    const std::string json = stats_line(r.out);
+    ASSERT_NE(field(json, "bound"), "null") << json;
+    const double bound = std::stod(field(json, "bound"));
+    EXPECT_NEAR(bound, 3e38, 1e32) << json;  // half of 6e38
+    EXPECT_LE(std::stod(field(json, "max_error")), bound) << json;
+  }
+}
+
 TEST(TerrainCli, TheTriangleCapWarnsAndStops) {
   TempDir dir;
   const auto grid = write_hills(dir.path());

@@ -2,23 +2,35 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 #include "io/fields.hpp"
+#include "io/grid_cells.hpp"
 #include "io/record_reader.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/esri_grid.hpp"
 
 namespace meshstep::io {
+using detail::checked_grid_cells;
 namespace {
 
 std::string lower(std::string_view s) {
   std::string out(s);
   std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return out;
+}
+
+// The most values the file holds from the current record on: that record's fields, then
+// (each value a character and a separator, but the last) half the bytes after it.
+std::optional<std::uint64_t> room_for_values(const detail::RecordReader& r, bool have_record) {
+  if (!have_record) return 0;
+  const std::optional<std::uint64_t> rest = r.remaining_bytes();
+  if (!rest) return std::nullopt;  // a pipe: the values are counted as they arrive
+  return r.field_count() + (*rest + 1) / 2;
 }
 
 }  // namespace
@@ -79,8 +91,10 @@ EsriGrid read_esri_grid_rows(const std::string& path, const EsriRowVisitor& visi
     if (*key_lines[k] == 0) r.fail(std::string("the header has no ") + names[k]);
   if (x_center) g.x0 -= g.cellsize / 2.0;
   if (y_center) g.y0 -= g.cellsize / 2.0;
-  const std::uint64_t count = static_cast<std::uint64_t>(g.ncols) * g.nrows;
-  if (count > (std::uint64_t{1} << 32)) r.fail("ncols x nrows = " + std::to_string(count) + " is too large a grid");
+  // The header's size against what the file can hold, before any value is read or any
+  // room made for them, named at the later of the two counts' lines.
+  const std::uint64_t count =
+      checked_grid_cells(path, std::max(g.lines.ncols, g.lines.nrows), g.ncols, g.nrows, room_for_values(r, have_record));
   // One row at a time: it grows with the values that arrive (the file may be short).
   std::vector<double> row;
   std::size_t rows_done = 0;
@@ -104,7 +118,7 @@ EsriGrid read_esri_grid(const std::string& path) {
   std::vector<double> values;
   EsriGrid g = read_esri_grid_rows(path, [&](const EsriGrid& header, std::size_t row, std::span<const double> v,
                                              std::size_t) {
-    if (row == 0) values.reserve(std::min<std::size_t>(header.ncols * header.nrows, std::size_t{1} << 24));
+    if (row == 0) values.reserve(std::min<std::size_t>(header.cell_count(), std::size_t{1} << 24));
     values.insert(values.end(), v.begin(), v.end());
   });
   g.values = std::move(values);

@@ -16,9 +16,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "io/grid_cells.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/huge_pages.hpp"
 #include "meshstep/terrain/height_grid.hpp"
@@ -142,9 +144,12 @@ std::string number(double v) {
 HeightGrid layout_of(const GdalApi& api, const std::string& path, GDALDatasetH dataset,
                      const HeightGridOptions& options, bool& north_up) {
   HeightGrid grid;
-  grid.nx = static_cast<std::size_t>(api.GDALGetRasterXSize(dataset));
-  grid.ny = static_cast<std::size_t>(api.GDALGetRasterYSize(dataset));
+  const int columns = api.GDALGetRasterXSize(dataset), rows = api.GDALGetRasterYSize(dataset);
+  grid.nx = static_cast<std::size_t>(std::max(columns, 0));
+  grid.ny = static_cast<std::size_t>(std::max(rows, 0));
   if (grid.nx < 2 || grid.ny < 2) throw InputError(path, 0, too_few_samples(grid.nx, grid.ny));
+  // The file's bytes say nothing of a compressed raster's size: only the product is checked.
+  io::detail::checked_grid_cells(path, 0, grid.nx, grid.ny, std::nullopt);
 
   double t[6] = {0.0, 1.0, 0.0, 0.0, 0.0, -1.0};
   const bool georeferenced = api.GDALGetGeoTransform(dataset, t) == CE_None;

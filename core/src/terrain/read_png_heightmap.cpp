@@ -19,6 +19,7 @@
 
 #include "meshstep/error.hpp"
 #include "meshstep/huge_pages.hpp"
+#include "io/grid_cells.hpp"
 #include "terrain/height_grid_readers.hpp"
 
 namespace meshstep::terrain::detail {
@@ -92,6 +93,10 @@ HeightGrid read_png_heightmap(const std::string& path, const HeightGridOptions& 
 
   const bool sixteen = stbi_is_16_bit_from_memory(bytes.data(), size) != 0;
   int width = 0, height = 0, channels = 0;
+  // The header's size, checked as every grid reader checks it, before stb_image makes room.
+  if (stbi_info_from_memory(bytes.data(), size, &width, &height, &channels) && width > 0 && height > 0)
+    io::detail::checked_grid_cells(path, 0, static_cast<std::uint64_t>(width), static_cast<std::uint64_t>(height),
+                                   std::nullopt);
   struct Freer {
     void operator()(void* p) const { stbi_image_free(p); }
   };

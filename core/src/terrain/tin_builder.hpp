@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <limits>
 #include <queue>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -240,6 +242,12 @@ class TinBuilder {
   }
 
   HalfEdge insert(std::uint32_t sample, HalfEdge hint) {
+    // Each insertion takes a sample that is not yet a vertex, so a run ends after at most
+    // nx * ny of them. A sample chosen twice would not end it (it once did, on a vertex a
+    // rounding-level error off its own plane: triangle_scan.hpp), and would make the
+    // hull's count in triangle_count() wrap: it is a bug, stopped here.
+    if (used_[sample])
+      throw std::logic_error("terrain: sample " + std::to_string(sample) + " chosen again: it is a vertex already");
     const std::size_t i = sample % grid_.nx, j = sample / grid_.nx;
     used_[sample] = true;
     samples_.push_back(sample);

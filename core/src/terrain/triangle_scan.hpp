@@ -104,6 +104,33 @@ void scan_triangle(GridIndex a, GridIndex b, GridIndex c, Visit&& visit) {
   });
 }
 
+// The columns of row j where the triangle's own corners stand (ascending, at most 3) and
+// their heights. There the plane IS the corner's height, but its sums round: a vertex
+// found a rounding-level error (5.55e-17) off its own plane looked worth inserting again
+// under a bound of 0, and the run never ended. So the scans below measure a corner
+// sample against its corner's height, exactly (an error of 0, or NaN without data), and
+// pay for it only on the rows with a corner.
+struct RowCorners {
+  int count = 0;
+  std::array<std::int64_t, 3> i{};
+  std::array<double, 3> z{};
+};
+inline RowCorners corners_on_row(std::int64_t j, GridIndex a, GridIndex b, GridIndex c, double za, double zb,
+                                 double zc) {
+  RowCorners r;
+  for (const auto& [p, z] : {std::pair{a, za}, std::pair{b, zb}, std::pair{c, zc}})
+    if (p.j == j) {
+      int k = r.count++;
+      for (; k > 0 && r.i[k - 1] > p.i; --k) {
+        r.i[k] = r.i[k - 1];
+        r.z[k] = r.z[k - 1];
+      }
+      r.i[k] = p.i;
+      r.z[k] = z;
+    }
+  return r;
+}
+
 // Calls visit(sample, error) for every sample inside or on the triangle abc of a grid of
 // heights z (row-major, nx a row), its error measured against the
 // plane through the corners' heights za, zb, zc. The one measure of the algorithm and of
@@ -122,10 +149,22 @@ void scan_errors(const float* z, std::size_t nx, GridIndex a, GridIndex b, GridI
                          std::int64_t wc) {
     const double start = plane_height(wa, wb, wc, za, zb, zc, inverse_area2);
     const std::size_t row = static_cast<std::size_t>(j) * nx;
-    for (std::int64_t i = first; i <= last; ++i) {
-      const double height = z[row + static_cast<std::size_t>(i)];
-      visit(row + static_cast<std::size_t>(i), std::abs(height - (start + slope * static_cast<double>(i - first))));
+    const auto plane_errors = [&](std::int64_t from, std::int64_t to) {  // columns [from, to)
+      for (std::int64_t i = from; i < to; ++i) {
+        const double height = z[row + static_cast<std::size_t>(i)];
+        visit(row + static_cast<std::size_t>(i), std::abs(height - (start + slope * static_cast<double>(i - first))));
+      }
+    };
+    const RowCorners corners = corners_on_row(j, a, b, c, za, zb, zc);
+    std::int64_t from = first;
+    for (int k = 0; k < corners.count; ++k) {
+      const std::int64_t i = corners.i[k];
+      plane_errors(from, i);
+      const std::size_t s = row + static_cast<std::size_t>(i);
+      visit(s, std::abs(static_cast<double>(z[s]) - corners.z[k]));
+      from = i + 1;
     }
+    plane_errors(from, last + 1);
   }, rows);
 }
 
@@ -161,15 +200,29 @@ inline WorstSample worst_sample(const float* z, std::size_t nx, GridIndex a, Gri
     const double start = plane_height(wa, wb, wc, za, zb, zc, inverse_area2);
     const float* row = z + static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(first);
     const std::int64_t n = std::min(last, window.i_last) - first + 1;
+    const std::int64_t k_first = std::max<std::int64_t>(0, window.i_first - first);
     double best = worst.error;
     std::int64_t best_k = -1;
-    for (std::int64_t k = std::max<std::int64_t>(0, window.i_first - first); k < n; ++k) {
-      const double error = std::abs(static_cast<double>(row[k]) - (start + slope * static_cast<double>(k)));
+    const auto take = [&](std::int64_t k, double error) {
       if (error > best) {  // false for NaN: no data
         best = error;
         best_k = k;
       }
+    };
+    const auto plane_errors = [&](std::int64_t from, std::int64_t to) {  // offsets [from, to)
+      for (std::int64_t k = from; k < to; ++k)
+        take(k, std::abs(static_cast<double>(row[k]) - (start + slope * static_cast<double>(k))));
+    };
+    const RowCorners corners = corners_on_row(j, a, b, c, za, zb, zc);
+    std::int64_t from = k_first;
+    for (int m = 0; m < corners.count; ++m) {
+      const std::int64_t k = corners.i[m] - first;
+      if (k < from || k >= n) continue;  // outside the window
+      plane_errors(from, k);
+      take(k, std::abs(static_cast<double>(row[k]) - corners.z[m]));
+      from = k + 1;
     }
+    plane_errors(from, n);
     if (best_k >= 0) worst = {best, static_cast<std::size_t>(j) * nx + static_cast<std::size_t>(first + best_k)};
   }, RowRange{window.j_first, window.j_last});
   return worst;

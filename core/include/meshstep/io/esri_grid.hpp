@@ -30,6 +30,10 @@ struct EsriGrid {
     std::size_t ncols = 0, nrows = 0, x0 = 0, y0 = 0, cellsize = 0, nodata = 0;
   } lines;
 
+  // ncols x nrows: the reader has checked that it neither wraps nor passes 2^32, nor the
+  // values the file can hold (io/grid_cells.hpp).
+  std::size_t cell_count() const { return ncols * nrows; }
+
   // The value of the cell holding p (cells are closed at their lower-left edges; the
   // grid's upper and right edges belong to the last cells); `outside` beyond the grid or
   // on a no-data cell.
@@ -37,7 +41,9 @@ struct EsriGrid {
 };
 
 // Throws InputError("path:line: what is wrong") for a malformed file: a missing or repeated
-// header key, a count or cell size that is not positive (at its own line), a value that is
+// header key, a count or cell size that is not positive (at its own line), counts whose
+// product (never computed wrapped) is over 2^32 or over the values the file's bytes can
+// hold (at the later count's line), a value that is
 // not a finite number (NaN and infinities are refused: no-data cells are marked by
 // NODATA_value), too few values (at the last line) or too many (at the first extra one).
 EsriGrid read_esri_grid(const std::string& path);

@@ -74,6 +74,13 @@ struct HeightGrid {
   std::size_t data_count() const;  // samples with data
 };
 
+// high - low of a height range, in double: two floats' difference can pass a float's
+// range (heights from -3e38 to 3e38 span 6e38), and a percentage of an infinite span is
+// no bound at all.
+inline double height_span(std::pair<float, float> range) {
+  return static_cast<double>(range.second) - static_cast<double>(range.first);
+}
+
 // Reads a grid by its file name's extension (case-insensitive): .asc an ESRI ASCII grid
 // (NODATA_value cells become NaN), .png an 8- or 16-bit greyscale heightmap (every pixel
 // has data, except those an alpha channel makes fully transparent; a colour PNG is read
