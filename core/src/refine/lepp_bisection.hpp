@@ -111,9 +111,9 @@ class LeppBisector {
   void check(FaceId f) {
     const HalfEdge h = first_edge(f);
     const VertexId a = mesh_.origin(h), b = mesh_.dest(h), c = mesh_.apex(h);
-    if (!in_region(criteria_, point(a), point(b), point(c))) return;
     const quality::Shape s = quality::shape(point(a), point(b), point(c));
     if (!too_large(criteria_, s, point(a), point(b), point(c))) return;
+    if (!in_region(criteria_, point(a), point(b), point(c))) return;  // after the bound: cheaper first
     const Target t{s.area, f, a, b, c};
     if (options_.order == RefineOrder::fifo) fifo_.push_back(t);
     else largest_.push(t);

@@ -91,8 +91,7 @@ inline bool misses_size(const ScaledCriteria& criteria, const quality::Shape& s,
 [[gnu::always_inline]] inline bool in_region(const ScaledCriteria& criteria, const Point& a, const Point& b,
                                              const Point& c) {
   if (!criteria.region) return true;
-  const Point centroid{std::ldexp((a.x + b.x + c.x) / 3.0, -criteria.exponent),
-                       std::ldexp((a.y + b.y + c.y) / 3.0, -criteria.exponent)};
+  const Point centroid{(a.x + b.x + c.x) / 3.0 * criteria.unscale, (a.y + b.y + c.y) / 3.0 * criteria.unscale};
   return criteria.region->contains(centroid);
 }
 

@@ -42,7 +42,7 @@ detail::ScaledCriteria scaled(const RefineCriteria& c, int exponent, const Trian
                               const std::optional<RefineRegion>& region) {
   detail::ScaledCriteria s;
   s.region = region ? &*region : nullptr;
-  s.exponent = exponent;
+  s.unscale = std::ldexp(1.0, -exponent);
   const double sin_min = std::sin(quality::radians(c.min_angle_deg));
   s.sin2_min_angle = sin_min * sin_min;
   s.cos_max_angle = c.max_angle_deg >= 180.0 ? -1.0 : std::cos(quality::radians(c.max_angle_deg));

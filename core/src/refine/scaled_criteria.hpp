@@ -25,9 +25,10 @@ struct ScaledCriteria {
   double lens_cos2 = 0.25;
   std::size_t max_triangles = 0, max_steiner = 0;
   // The run's region (RefineOptions::region, in the caller's coordinates), or none; and the
-  // power of two the coordinates are scaled by, to take a centroid back to the caller's.
+  // power of two that takes a scaled centroid back to the caller's coordinates (a product by
+  // it is exact, as ldexp is, and much cheaper).
   const RefineRegion* region = nullptr;
-  int exponent = 0;
+  double unscale = 1.0;
 
   // An area or size bound, which decides where points go whatever their shapes.
   bool sized() const { return max_area > 0.0 || size || max_area_for; }
