@@ -26,6 +26,7 @@
 #include "memory_budget.hpp"
 #include "output_prefix.hpp"
 #include "record_option.hpp"
+#include "region_option.hpp"
 
 namespace meshstep::app {
 namespace {
@@ -52,6 +53,7 @@ struct RefineArgs {
   bool delete_free = false;  // always, even under an area or size bound
   bool keep_free = false;
   std::string record;
+  RegionArgs region;
   std::string stats;
   bool no_output = false;
   std::string max_memory;  // empty: default_memory_budget()
@@ -148,6 +150,10 @@ std::size_t midpoint_shape_cap(const RefineOptions& o, std::size_t input_vertice
 
 // A 3D surface goes to longest-edge bisection in 3D; only its own options apply.
 int refine_surface(const RefineArgs& args) {
+  if (args.region.given()) {
+    print_error("--region and --region-poly limit a planar refinement: they do not apply to a 3D surface");
+    return kExitUsage;
+  }
   for (const CLI::Option* bound : args.bounds)
     if (bound->count() > 0 && bound->get_name() != "--size" && bound->get_name() != "--max-area" &&
         bound->get_name() != "--max-triangles") {
@@ -219,6 +225,10 @@ int run_refine(const RefineArgs& args) {
                 " removes vertices from a Delaunay mesh: it does not go with bisection");
     return kExitUsage;
   }
+
+  int region_status = kExitOk;
+  options.region = region_of(args.region, region_status);
+  if (region_status != kExitOk) return region_status;
 
   RefineCriteria& criteria = options.criteria;
   criteria.min_angle_deg = args.min_angle;
@@ -322,6 +332,7 @@ int run_refine(const RefineArgs& args) {
   if (bounds_text.empty()) bounds_text = "no bounds";
   if (criteria.max_triangles) bound("at most " + std::to_string(criteria.max_triangles) + " triangles");
   if (criteria.max_steiner) bound("at most " + std::to_string(criteria.max_steiner) + " Steiner vertices");
+  if (options.region) bound("only in " + (args.region.box.empty() ? "the polygon of " + args.region.poly : "the box " + args.region.box));
 
   Stopwatch clock;
   std::vector<std::string> warnings;
@@ -393,7 +404,8 @@ int run_refine(const RefineArgs& args) {
                          " lens_angle=" + header_number(lens_angle_deg(criteria)) +
                          " input_vertices=" + std::to_string(input_vertices) +
                          " first_index=" + std::to_string(input.first_index) +
-                         " convex_hull=" + std::to_string(args.convex_hull),
+                         " convex_hull=" + std::to_string(args.convex_hull) +
+                         (options.region ? " region=" + options.region->text() : ""),
                      options.triangulate.data_structure, options.triangulate.insertion, &input);
       options.triangulate.record = log.get();
     }
@@ -432,6 +444,9 @@ int run_refine(const RefineArgs& args) {
                                                : "--max-steiner " + std::to_string(criteria.max_steiner)) +
                                  " cap before every triangle met the bounds");
   }
+  if (options.region && report.region_triangles == 0)
+    print_warning(verbosity, args.input + ": no triangle has its centroid in the region, so none was refined: the "
+                                           "region lies inside triangles larger than it (refine the whole more coarsely first)");
   if (report.unsplittable_segments)
     print_warning(verbosity, args.input + ": " + std::to_string(report.unsplittable_segments) +
                                  " segment splits refused (subsegments too short to split in floating point)");
@@ -615,6 +630,7 @@ Command add_refine_command(CLI::App& parent) {
   cmd->add_flag("--keep-free", args->keep_free,
                 "Never remove free Steiner vertices near a split segment (the rule before 2026-12-03)");
   add_record_option(*cmd, args->record);
+  add_region_options(*cmd, args->region);
   cmd->add_option("-o,--output", args->prefix,
                   "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly\n"
                   "(default: INPUT without extension plus .1, as Triangle does)");

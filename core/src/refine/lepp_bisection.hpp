@@ -113,6 +113,7 @@ class LeppBisector {
     const VertexId a = mesh_.origin(h), b = mesh_.dest(h), c = mesh_.apex(h);
     const quality::Shape s = quality::shape(point(a), point(b), point(c));
     if (!too_large(criteria_, s, point(a), point(b), point(c))) return;
+    if (!in_region(criteria_, point(a), point(b), point(c))) return;  // after the bound: cheaper first
     const Target t{s.area, f, a, b, c};
     if (options_.order == RefineOrder::fifo) fifo_.push_back(t);
     else largest_.push(t);
@@ -179,13 +180,16 @@ class LeppBisector {
   bool splits_cleanly(HalfEdge h, const Point& p) const { return detail::splits_cleanly(mesh_, tri_.points(), h, p); }
 
   void assess(RefineReport& report) const {
-    std::size_t bad = 0;
+    std::size_t bad = 0, in_region_count = 0;
     for (FaceId f = 0; f < mesh_.face_capacity(); ++f) {
       if (!mesh_.is_live(f)) continue;
       const HalfEdge h = first_edge(f);
       const Point &a = point(mesh_.origin(h)), &b = point(mesh_.dest(h)), &c = point(mesh_.apex(h));
+      if (!in_region(criteria_, a, b, c)) continue;  // the report speaks of the region
+      ++in_region_count;
       bad += too_large(criteria_, quality::shape(a, b, c), a, b, c);
     }
+    report.region_triangles = in_region_count;
     report.bad_triangles = bad;
     report.bounds_met = bad == 0;
   }

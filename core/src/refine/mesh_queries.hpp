@@ -85,6 +85,16 @@ inline bool misses_size(const ScaledCriteria& criteria, const quality::Shape& s,
   return l > 0.0 && s.longest2 > l * l;
 }
 
+// Is the triangle (a, b, c)'s centroid in the run's region (always, without one)? The
+// centroid is rounded in the scaled coordinates and scaled back by a power of two, exactly:
+// it is the same double as the centroid of the caller's own coordinates.
+[[gnu::always_inline]] inline bool in_region(const ScaledCriteria& criteria, const Point& a, const Point& b,
+                                             const Point& c) {
+  if (!criteria.region) return true;
+  const Point centroid{(a.x + b.x + c.x) / 3.0 * criteria.unscale, (a.y + b.y + c.y) / 3.0 * criteria.unscale};
+  return criteria.region->contains(centroid);
+}
+
 // Does the triangle (a, b, c) of shape s fail a size criterion: the area bound, its own area
 // bound (region, caller), or the size function (longest edge) at its centroid?
 inline bool too_large(const ScaledCriteria& criteria, const quality::Shape& s, const Point& a, const Point& b,

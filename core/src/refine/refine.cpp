@@ -38,8 +38,11 @@ void check(const RefineCriteria& c) {
 }
 
 // The criteria in the triangulation's scaled coordinates.
-detail::ScaledCriteria scaled(const RefineCriteria& c, int exponent, const TriangleField& regions) {
+detail::ScaledCriteria scaled(const RefineCriteria& c, int exponent, const TriangleField& regions,
+                              const std::optional<RefineRegion>& region) {
   detail::ScaledCriteria s;
+  s.region = region ? &*region : nullptr;
+  s.unscale = std::ldexp(1.0, -exponent);
   const double sin_min = std::sin(quality::radians(c.min_angle_deg));
   s.sin2_min_angle = sin_min * sin_min;
   s.cos_max_angle = c.max_angle_deg >= 180.0 ? -1.0 : std::cos(quality::radians(c.max_angle_deg));
@@ -95,7 +98,7 @@ TriMesh refine_with(Pslg& input, const RefineOptions& options, RefineReport& rep
     Algorithm algorithm(builder.triangulation(), builder.boundary_segments(), builder.input_count(), options);
     for (const RefinePhase& phase : phases) {
       const auto phase_start = std::chrono::steady_clock::now();
-      algorithm.set_criteria(scaled(phase.criteria, builder.exponent(), regions));
+      algorithm.set_criteria(scaled(phase.criteria, builder.exponent(), regions, options.region));
       algorithm.run(report);
       report.phase_ms.emplace_back(phase.name, ms_since(phase_start));
       if (report.stopped_by_cap) break;

@@ -73,7 +73,7 @@ class Refiner {
       faces.push_back(f);
       const HalfEdge first = mesh_.half_edge(f);
       for (const HalfEdge h : {first, mesh_.next(first), mesh_.prev(first)})
-        if (is_segment(h) && (mesh_.twin(h) == kNone || mesh_.origin(h) < mesh_.dest(h)))
+        if (is_segment(h) && (mesh_.twin(h) == kNone || mesh_.origin(h) < mesh_.dest(h)) && beside_region(h))
           segments_.push_back({mesh_.origin(h), mesh_.dest(h), h});
     }
     sort_suspects(segments_.begin(), segments_.end());
@@ -171,6 +171,18 @@ class Refiner {
   static std::uint64_t key(VertexId a, VertexId b) { return edge_tie_key(a, b); }
 
   bool is_segment(HalfEdge h) const { return mesh_.twin(h) == kNone || mesh_.is_constrained(h); }
+
+  bool face_in_region(HalfEdge h) const {
+    return in_region(criteria_, point(mesh_.origin(h)), point(mesh_.dest(h)), point(mesh_.apex(h)));
+  }
+  // Is a triangle on either side of h in the region? Only such segments are suspects at the
+  // start of a run: one encroached far away is the rest of the mesh's, which keeps what it
+  // had (a new vertex that encroaches on it gets it split all the same).
+  bool beside_region(HalfEdge h) const {
+    if (!criteria_.region || face_in_region(h)) return true;
+    const HalfEdge t = mesh_.twin(h);
+    return t != kNone && face_in_region(t);
+  }
   const Point& point(VertexId v) const { return tri_.point(v); }
 
   bool capped() const { return reached_cap(criteria_, tri_.points().size() - input_count_, mesh_); }
@@ -227,6 +239,8 @@ class Refiner {
     const bool angle_bad = this->angle_bad(s);
     const bool size_bad = too_large(criteria_, s, point(a), point(b), point(c));
     if (!angle_bad && !size_bad) return;
+    // After the bounds, which pass most triangles for less than a polygon's test costs.
+    if (!in_region(criteria_, point(a), point(b), point(c))) return;
     if (!size_bad && cannot_improve(h, s)) return;
     push_bad(priority(s), {f, a, b, c});
   }
@@ -270,7 +284,10 @@ class Refiner {
       worst_before = std::min(worst_before, quality::shape(point(t[0]), point(t[1]), point(t[2])).sin2_min_angle());
     for (const auto& t : after) {
       const quality::Shape s = quality::shape(point(t[0]), point(t[1]), point(t[2]));
-      if (s.sin2_min_angle() <= worst_before || angle_bad(s) || too_large(criteria_, s, point(t[0]), point(t[1]), point(t[2])))
+      if (s.sin2_min_angle() <= worst_before) return false;
+      // Outside the region a triangle is not held to the criteria.
+      if (in_region(criteria_, point(t[0]), point(t[1]), point(t[2])) &&
+          (angle_bad(s) || too_large(criteria_, s, point(t[0]), point(t[1]), point(t[2]))))
         return false;
     }
     return true;
@@ -754,11 +771,13 @@ class Refiner {
   }
 
   void assess(RefineReport& report) {
-    std::size_t below = 0, bad = 0, explained = 0, skipped = 0;
+    std::size_t below = 0, bad = 0, explained = 0, skipped = 0, in_region_count = 0;
     for (FaceId f = 0; f < mesh_.face_capacity(); ++f) {
       if (!mesh_.is_live(f)) continue;
       const HalfEdge h = first_edge(f);
       const VertexId a = mesh_.origin(h), b = mesh_.dest(h), c = mesh_.apex(h);
+      if (!in_region(criteria_, point(a), point(b), point(c))) continue;  // the report speaks of the region
+      ++in_region_count;
       const quality::Shape s = quality::shape(point(a), point(b), point(c));
       const bool below_angle = s.sin2_min_angle() < criteria_.sin2_min_angle;
       const bool fails = angle_bad(s) || too_large(criteria_, s, point(a), point(b), point(c));
@@ -768,6 +787,7 @@ class Refiner {
       if (near_small_angle(a) || near_small_angle(b) || near_small_angle(c)) ++explained;
       skipped += cannot_improve(h, s);
     }
+    report.region_triangles = in_region_count;
     report.skipped_small_angle = skipped;
     report.below_min_angle = below;
     report.bad_triangles = bad;

@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "meshstep/geometry/point.hpp"
+#include "meshstep/refine/region.hpp"
 
 namespace meshstep::detail {
 
@@ -23,6 +24,11 @@ struct ScaledCriteria {
   // of that angle's cosine: dot(a - p, b - p) < 0 and dot^2 >= lens_cos2 |a - p|^2 |b - p|^2.
   double lens_cos2 = 0.25;
   std::size_t max_triangles = 0, max_steiner = 0;
+  // The run's region (RefineOptions::region, in the caller's coordinates), or none; and the
+  // power of two that takes a scaled centroid back to the caller's coordinates (a product by
+  // it is exact, as ldexp is, and much cheaper).
+  const RefineRegion* region = nullptr;
+  double unscale = 1.0;
 
   // An area or size bound, which decides where points go whatever their shapes.
   bool sized() const { return max_area > 0.0 || size || max_area_for; }

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/mesh/tri_mesh.hpp"
 #include "meshstep/pslg/pslg.hpp"
+#include "meshstep/refine/region.hpp"
 
 namespace meshstep {
 
@@ -113,6 +115,12 @@ struct RefineOptions {
   // Refine each region of the input to its own maximum area (Region::max_area, from the
   // .poly's regional attributes), besides the global criteria.
   bool regional_max_area = true;
+  // When set, only triangles whose centroid lies in the region are tested against the
+  // criteria (all of them: angles, aspect, areas, sizes, in every phase); the rest are left
+  // as they are unless the algorithm's own rules reach them (a segment split, a Lepp path,
+  // a Delaunay flip). The centroid is the rounded ((a + b + c) / 3) of the triangle's
+  // coordinates, and its place in the region is decided exactly (region.hpp).
+  std::optional<RefineRegion> region;
   TriangulateOptions triangulate;  // data structure, insertion, convex hull, recording
   // Called about once a second during a long refinement (not at all for a short one).
   std::function<void(const RefineProgress&)> progress;
@@ -139,6 +147,10 @@ struct RefineReport {
   std::size_t bad_triangles = 0;
   std::size_t bad_near_small_input_angle = 0;
   bool bounds_met = false;
+  // Triangles with their centroid in RefineOptions::region after the run (all of them
+  // without a region): 0 says the region lies within triangles whose centroids are outside
+  // it, and nothing was refined.
+  std::size_t region_triangles = 0;
   double triangulate_ms = 0.0, refine_ms = 0.0;
   // Per phase (one, named "refine", for a run without phases): its name and milliseconds.
   std::vector<std::pair<std::string, double>> phase_ms;
