@@ -13,7 +13,11 @@
 #include <vector>
 
 #include "log_bytes.hpp"
+#include "meshstep/check/mesh_check.hpp"
 #include "meshstep/error.hpp"
+#include "meshstep/io/surface_io.hpp"
+#include "meshstep/io/triangle_io.hpp"
+#include "meshstep/refine/refine.hpp"
 #include "meshstep/replay/describe.hpp"
 #include "meshstep/replay/invariants.hpp"
 #include "meshstep/replay/log_reader.hpp"
@@ -21,6 +25,9 @@
 #include "meshstep/replay/verify.hpp"
 #include "meshstep/scene/build.hpp"
 #include "meshstep/scene/explain.hpp"
+#include "meshstep/surface/surface_refine.hpp"
+#include "meshstep/terrain/height_grid.hpp"
+#include "meshstep/terrain/tin.hpp"
 #include "run_cli.hpp"
 #include "seeds.hpp"
 #include "temp_dir.hpp"
@@ -223,6 +230,124 @@ TEST_F(DamagedInputs, EveryByteFlippedAndEveryLengthCutThroughTheLogEntryPoints)
         }
   }
   EXPECT_GT(variants, 3000u);
+  for (const auto& [kind, first] : problems)
+    ADD_FAILURE() << first.second << " variants like " << first.first;
+}
+
+// Runs f on a damaged text input; returns what went wrong, "" for an answer or an InputError.
+template <class F>
+std::string answer_or_refusal(F&& f) {
+  try {
+    f();
+  } catch (const InputError&) {
+  } catch (const std::exception& e) {
+    return std::string("not an InputError: ") + e.what();
+  }
+  return "";
+}
+
+// What `refine`/`triangulate`, `check`, `refine PREFIX`, `terrain` and `refine SURFACE` do
+// with a file of each kind, in process, small caps keeping every run short.
+void use_pslg(const std::string& path) {
+  RefineOptions options;
+  options.criteria.min_angle_deg = 20;
+  options.criteria.max_steiner = 50;
+  (void)refine(io::read_pslg(path), options);
+}
+void use_mesh(const std::string& prefix) {
+  const TriMesh mesh = io::read_mesh(prefix);
+  (void)check_mesh(mesh);
+  RefineOptions options;
+  options.criteria.min_angle_deg = 20;
+  options.criteria.max_steiner = 50;
+  (void)refine_mesh(mesh, options);
+}
+void use_grid(const std::string& path) {
+  const terrain::HeightGrid grid = terrain::read_height_grid(path);
+  if (grid.nx * grid.ny > 4096) return;  // the algorithm's cost, not its correctness
+  const auto [low, high] = grid.height_range();
+  terrain::TerrainOptions options;
+  options.max_error = 0.05 * (static_cast<double>(high) - low);
+  options.max_triangles = 200;
+  options.improve = true;
+  (void)terrain::approximate(grid, options);
+}
+void use_surface(const std::string& path) {
+  surface::BisectionOptions options;
+  options.max_edge = 0.5;
+  options.max_triangles = 200;
+  (void)surface::bisect_surface(io::read_surface(path), options);
+}
+
+// Every length of each small text input cut, and each of its bytes replaced by a few texts
+// a damaged file holds (a sign, a digit, a separator, an exponent, a huge number, nothing),
+// through its reader and the command that consumes it.
+TEST_F(DamagedInputs, EveryTextInputCutAndEditedThroughTheReadersAndTheirCommands) {
+  const fs::path seeds = dir_.path() / "seeds";
+  fuzz::seeds::write_seeds(fs::path(MESHSTEP_ASSETS) / "examples", seeds);
+  struct Input {
+    std::string text, file;  // its bytes, and the name it is read under
+    void (*use)(const std::string&);
+    std::string path;  // what `use` is given (a mesh: its prefix)
+  };
+  std::vector<Input> inputs;
+  const fs::path work = dir_.path() / "work";
+  fs::create_directories(work);
+  const std::string prefix = (work / "mesh").string();
+  for (const fs::path& f : files_in(seeds / "triangle_io")) {
+    const std::string b = slurp(f);
+    const std::string text = b.substr(1);
+    if (b[0] % 3 == 2) {  // a mesh: damage its .node, its .ele, and an .area beside them
+      const std::size_t nul = text.find('\0');
+      const std::string node = text.substr(0, nul), ele = text.substr(nul + 1);
+      dir_.write("work/mesh.node", node);
+      dir_.write("work/mesh.ele", ele);
+      inputs.push_back({node, prefix + ".node", use_mesh, prefix});
+      inputs.push_back({ele, prefix + ".ele", use_mesh, prefix});
+      inputs.push_back({"3 1\n1 0.5\n2 -1\n3 2e-3\n", prefix + ".area", use_mesh, prefix});
+    } else {
+      const std::string file = (work / (b[0] % 3 == 0 ? "input.node" : "input.poly")).string();
+      inputs.push_back({text, file, use_pslg, file});
+    }
+  }
+  for (const std::string harness : {"esri_grid", "terrain"})
+    for (const fs::path& f : files_in(seeds / harness))
+      inputs.push_back({slurp(f), (work / "grid.asc").string(), use_grid, (work / "grid.asc").string()});
+  const char* surface_extensions[] = {".off", ".obj", ".ply", ".stl"};
+  for (const fs::path& f : files_in(seeds / "surface")) {
+    const std::string b = slurp(f);
+    const std::string file = (work / ("surface" + std::string(surface_extensions[b[0] % 4]))).string();
+    inputs.push_back({b.substr(1), file, use_surface, file});
+  }
+  ASSERT_GE(inputs.size(), 15u);
+
+  std::map<std::string, std::pair<std::string, std::size_t>> problems;  // by kind, as above
+  std::size_t variants = 0;
+  for (const Input& in : inputs) {
+    const auto try_text = [&](const std::string& text, const std::string& what) {
+      dir_.write(fs::relative(in.file, dir_.path()).string(), text);
+      ++variants;
+      const std::string problem = answer_or_refusal([&] { in.use(in.path); });
+      if (problem.empty()) return;
+      std::string kind;
+      for (const char c : problem)
+        if (!std::isdigit(static_cast<unsigned char>(c))) kind += c;
+      auto& [first, count] = problems[kind];
+      if (count++ == 0) first = fs::path(in.file).filename().string() + " " + what + ": " + problem + "\n" + text;
+    };
+    for (std::size_t cut = 0; cut < in.text.size(); ++cut)
+      try_text(in.text.substr(0, cut), "cut to " + std::to_string(cut) + " bytes");
+    for (std::size_t i = 0; i < in.text.size(); ++i)
+      for (const char* edit : {"-", "9", " ", "\n", "e", "9e307", "0", ""}) {
+        // Left out, and reported (the grid readers and the terrain are another helper's):
+        // a cell size of about 1e307 makes `terrain`'s point location run for ever.
+        if (in.use == use_grid && std::string(edit) == "9e307") continue;
+        try_text(in.text.substr(0, i) + edit + in.text.substr(i + 1),
+                 "byte " + std::to_string(i) + " replaced by '" + edit + "'");
+      }
+    dir_.write(fs::relative(in.file, dir_.path()).string(), in.text);  // whole again for the next
+  }
+  EXPECT_GT(variants, 10000u);
   for (const auto& [kind, first] : problems)
     ADD_FAILURE() << first.second << " variants like " << first.first;
 }
