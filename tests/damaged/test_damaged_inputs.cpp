@@ -59,8 +59,9 @@ void expect_answer_or_refusal(const std::string& args, const fs::path& dir) {
   EXPECT_EQ(r.err.find("internal error"), std::string::npos) << "meshstep " << args << ": " << r.err;
 }
 
-// The log commands a user points at a log (log info/dump/mesh/check/verify, render).
-void run_log_commands(const fs::path& log, const fs::path& dir) {
+// The log commands a user points at a log (log info/dump/mesh/check/verify, render, and
+// with `pictures` export, whose PNG frames take a second a log).
+void run_log_commands(const fs::path& log, const fs::path& dir, bool pictures = false) {
   const std::string l = "'" + log.string() + "'";
   const std::string out = (dir / "out").string();
   for (const std::string& command :
@@ -68,6 +69,10 @@ void run_log_commands(const fs::path& log, const fs::path& dir) {
         "log mesh --step -1 -o " + out + " " + l, "log mesh --step 1 -o " + out + " " + l,
         "log check " + l, "log verify -q " + l, "render " + l + " -o " + out + ".svg"})
     expect_answer_or_refusal(command, dir);
+  if (pictures) {
+    fs::remove_all(dir / "frames");
+    expect_answer_or_refusal("export " + l + " --frames " + (dir / "frames").string() + " -q", dir);
+  }
 }
 
 // The core entry points of the log commands, in process: LogReader (info), every event
@@ -151,7 +156,7 @@ TEST_F(DamagedInputs, SeedsAndPastFindingsThroughTheCommands) {
   ASSERT_GE(logs.size(), 20u);
   for (const fs::path& log : logs) {
     SCOPED_TRACE(log.string());
-    run_log_commands(log, scratch);
+    run_log_commands(log, scratch, /*pictures=*/true);
   }
 
   // The surface harness's and the Triangle reader harness's inputs: the first byte picks the reader.
