@@ -1,151 +1,15 @@
-// make_seeds DIR: writes the seed corpora of the harnesses into DIR/<harness>/, made here
-// from the project's examples and small inputs of its own (the hardening campaign's
-// reproducers among them): every file a valid input, so that the fuzzers start from the
-// readers' and the pipeline's deep paths.
-#include <unistd.h>
-
-#include <filesystem>
-#include <fstream>
+// make_seeds ASSETS_EXAMPLES OUT_DIR: writes the seed corpora of the harnesses into
+// OUT_DIR/<harness>/ (seeds.hpp says what they are).
 #include <iostream>
-#include <sstream>
-#include <string>
-#include <vector>
 
-#include "log_bytes.hpp"
-#include "meshstep/delaunay/triangulate.hpp"
-#include "meshstep/io/triangle_io.hpp"
-#include "meshstep/refine/refine.hpp"
-#include "meshstep/refine/registry.hpp"
-#include "meshstep/replay/log_writer.hpp"
-
-namespace fs = std::filesystem;
-using namespace meshstep;
-
-namespace {
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write(const fs::path& p, const std::string& bytes) {
-  fs::create_directories(p.parent_path());
-  std::ofstream(p, std::ios::binary) << bytes;
-}
-
-const std::vector<std::pair<std::string, std::string>> kSmallPolys = {
-    {"square_hole.poly", "8 2 0 1\n1 0 0 1\n2 4 0 1\n3 4 4 1\n4 0 4 1\n5 1 1 2\n6 3 1 2\n7 3 3 2\n8 1 3 2\n"
-                         "8 1\n1 1 2 1\n2 2 3 1\n3 3 4 1\n4 4 1 1\n5 5 6 2\n6 6 7 2\n7 7 8 2\n8 8 5 2\n1\n1 2 2\n"},
-    {"regions.poly", "6 2 0 0\n1 0 0\n2 2 0\n3 4 0\n4 4 4\n5 2 4\n6 0 4\n7 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 6\n"
-                     "6 6 1\n7 2 5\n0\n2\n1 1 2 1 0.5\n2 3 2 2 -1\n"},
-    {"crossing_next_to_vertex.poly", "6 2 0 0\n0 0 0\n1 1 5\n2 1 0\n3 0 1\n4 0.15 0.75\n5 1 0\n3 0\n0 0 1\n1 2 3\n2 4 5\n0\n"},
-    {"magnitudes_apart.poly", "5 2 0 0\n0 1.0 0.0\n1 0.0 1.0\n2 0.1 0.7\n3 0.0 9233720368545808.0\n4 2.0 0.0\n2 0\n0 1 4\n"
-                              "1 3 2\n0\n"},
-    {"collinear.poly", "5 2 0 0\n1 0 0\n2 1 0\n3 2 0\n4 3 0\n5 1.5 1e-30\n2 0\n1 1 4\n2 2 5\n0\n"},
-    {"duplicates.poly", "5 2 0 0\n1 0 0\n2 1 0\n3 1 0\n4 0 1\n5 0 0\n3 0\n1 1 2\n2 3 4\n3 4 5\n0\n"},
-};
-
-}  // namespace
+#include "seeds.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 3) {
     std::cerr << "usage: make_seeds ASSETS_EXAMPLES OUT_DIR\n";
     return 2;
   }
-  const fs::path assets = argv[1], out = argv[2];
-  std::vector<std::pair<std::string, std::string>> polys = kSmallPolys;
-  for (const char* name : {"plate.poly", "lesson.poly"}) polys.emplace_back(name, read(assets / name));
-  const std::string node = read(assets / "cocircular.node");
-
-  // Triangle's formats: the first byte picks the reader.
-  write(out / "triangle_io" / "cocircular.node", std::string(1, '\0') + node);
-  for (const auto& [name, text] : polys) write(out / "triangle_io" / name, std::string(1, '\1') + text);
-  {
-    const fs::path tmp = fs::temp_directory_path() / ("make_seeds_" + std::to_string(::getpid()));
-    fs::create_directories(tmp);
-    io::write_mesh((tmp / "plate").string(), triangulate(io::read_poly((assets / "plate.poly").string())));
-    write(out / "triangle_io" / "plate_mesh", std::string(1, '\2') + read(tmp / "plate.node") + '\0' + read(tmp / "plate.ele"));
-    fs::remove_all(tmp);
-  }
-
-  // ESRI grids.
-  write(out / "esri_grid" / "small.asc", "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1.5\n1 2 3\n4 5 6\n");
-  write(out / "esri_grid" / "nodata.asc",
-        "ncols 2\nnrows 2\nxllcenter 10\nyllcenter -5\ncellsize 0.25\nNODATA_value -9999\n-9999 2\n3.5e2 4\n");
-
-  // Surfaces: the first byte picks the reader (0 .off, 1 .obj, 2 .ply, 3 .stl) and the
-  // dihedral bound, the next two the refinement's bounds (fuzz_surface.cpp).
-  const std::string area_bound("\0\x40", 2), edge_bound("\1\x60", 2), both_capped("\6\x20", 2);
-  write(out / "surface" / "square.off", std::string(1, '\0') + area_bound + "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 1\n3 0 1 2\n3 0 2 3\n");
-  write(out / "surface" / "tetra.obj", std::string(1, '\1') + edge_bound + "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
-  write(out / "surface" / "quad.ply", std::string(1, '\2') + both_capped +
-        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
-        "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
-  write(out / "surface" / "one.stl", std::string(1, '\3') + area_bound +
-        "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid s\n");
-
-  write(out / "surface" / "flat_grid.off", std::string("\0\2\x30", 3) +
-        "OFF\n9 8 0\n0.09 0.17 0\n1.21 0.31 0\n2.17 0.3 0\n-0.33 0.98 0\n1.31 1.1 0\n2.28 0.73 0\n-0.02 1.82 0\n"
-        "1.03 2.05 0\n1.66 1.8 0\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 3 4 7\n3 3 7 6\n3 4 5 8\n3 4 8 7\n");
-
-  // Terrains: small height grids, one with a hole of no data and a corner without any.
-  write(out / "terrain" / "hill.asc",
-        "ncols 5\nnrows 4\nxllcorner 0\nyllcorner 0\ncellsize 10\n1 2 3 2 1\n2 4 6 4 2\n2 5 9 5 2\n1 2 3 2 1\n");
-  write(out / "terrain" / "holes.asc",
-        "ncols 4\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 1\nNODATA_value -1\n-1 2 3 4\n5 -1 7 8\n9 10 11 -1\n");
-
-  // The pipeline: a byte of choices, then the .poly.
-  for (const auto& [name, text] : polys)
-    for (const char choice : {'\0', '\7', '\x19'}) write(out / "pipeline" / (name + "_" + std::to_string(int(choice))), choice + text);
-
-  // Refinement under options: eight bytes of choices (fuzz_refine_options.cpp), then the
-  // .poly; every algorithm of the registry, with and without area and size bounds.
-  const std::size_t algorithm_count = algorithms().size();
-  for (const auto& [name, text] : polys)
-    for (std::size_t a = 0; a < algorithm_count; ++a) {
-      // algorithm, flags, order, min angle (about 25), max angle, bounds, Steiner cap, triangle cap
-      const std::string options = {char(a), char(a * 37), char(a), char(106), char(a % 2 ? 200 : 0),
-                                   char(a % 3 == 0 ? 0 : a % 3 == 1 ? 0x03 : 0x20), char(60), char(0)};
-      write(out / "refine_options" / (name + "_" + std::to_string(a)), options + text);
-    }
-
-  // Replay logs: a triangulation and refinements, recorded.
-  int n = 0;
-  for (const auto& [name, text] : polys) {
-    if (name == "plate.poly" || name == "magnitudes_apart.poly") continue;
-    const fs::path poly = fs::temp_directory_path() / ("make_seeds_" + std::to_string(::getpid()) + ".poly");
-    write(poly, text);
-    const Pslg in = io::read_poly(poly.string());
-    for (const char* algorithm : {"triangulate", "offcenter", "lepp-centroid"}) {
-      const fs::path log = out / "replay_log" / (name + "_" + algorithm + ".mslog");
-      fs::create_directories(log.parent_path());
-      replay::LogHeader header;
-      header.algorithm = algorithm;
-      header.parameters = "input_vertices=" + std::to_string(in.points.size()) + " min_angle=25";
-      replay::describe_input(header, in);
-      replay::LogWriter writer(log.string(), header);
-      if (std::string(algorithm) == "triangulate") {
-        TriangulateOptions o;
-        o.record = &writer;
-        triangulate(in, o);
-      } else {
-        RefineOptions o = options_for(*find_algorithm(algorithm));
-        o.criteria.min_angle_deg = 25;
-        o.criteria.max_steiner = 100;
-        o.triangulate.record = &writer;
-        refine(in, o);
-      }
-      writer.finish();
-      // Stored raw, so that the fuzzer's mutations land in the events themselves.
-      const std::string bytes = read(log);
-      const std::vector<std::uint8_t> raw = fuzz::with_raw_payloads({bytes.begin(), bytes.end()});
-      write(log, std::string(raw.begin(), raw.end()));
-      ++n;
-    }
-    fs::remove(poly);
-  }
-  std::cout << "seeds written to " << out.string() << " (" << n << " logs)\n";
+  const int logs = meshstep::fuzz::seeds::write_seeds(argv[1], argv[2]);
+  std::cout << "seeds written to " << argv[2] << " (" << logs << " logs)\n";
   return 0;
 }

@@ -1,8 +1,7 @@
 // Forward, backward, forward: every hash the writer stored must come out of the replay.
 #include "meshstep/replay/verify.hpp"
 
-#include <stdexcept>
-
+#include "meshstep/error.hpp"
 #include "meshstep/replay/mesh_hash.hpp"
 #include "meshstep/replay/replay.hpp"
 
@@ -14,6 +13,8 @@ class Verifier {
   Verifier(const LogReader& log, const std::function<void(int, double)>& progress)
       : log_(log), replay_(log, /*track_hash=*/true), progress_(progress) {}
 
+  // A problem found (fail) or met on the way (an InputError from the reader or the replay:
+  // a damaged or inconsistent file) ends the run as a report, never as an exception.
   VerifyReport run() {
     try {
       check_boundary(0);
@@ -23,8 +24,11 @@ class Verifier {
       if (log_.complete() && replay_.hash() != log_.final_hash())
         fail("the mesh at the end differs from the algorithm's final mesh");
       if (!log_.complete()) fail("the log is incomplete: " + log_.incomplete_reason());
-    } catch (const std::exception& e) {
-      if (report_.ok) fail(e.what());
+    } catch (const Stop&) {
+    } catch (const InputError& e) {
+      // The log is the file being verified: its path is said once, by the caller.
+      report_.ok = false;
+      report_.problem = e.file() == log_.path() ? e.message() : e.what();
     }
     report_.events = log_.event_count();
     report_.steps = log_.step_count();
@@ -32,11 +36,13 @@ class Verifier {
   }
 
  private:
-  void fail(const std::string& m) {
-    if (!report_.ok) return;
+  // Unwinds from wherever the first problem is found to run(), which catches it alone.
+  struct Stop {};
+
+  [[noreturn]] void fail(const std::string& m) {
     report_.ok = false;
     report_.problem = m;
-    throw std::runtime_error(m);
+    throw Stop{};
   }
 
   // At `events`: the keyframes taken there (copies of the algorithm's own mesh) must equal
