@@ -18,9 +18,11 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "meshstep/scene/scene.hpp"
+#include "helper_thread.hpp"
 #include "view_uniforms.hpp"
 #include "world_frame.hpp"
 
@@ -31,7 +33,7 @@ class MeshRaster {
   // Triangles spanning more pixel columns or rows than this go to the GL pass.
   static constexpr int kMaxSpan = 16;
 
-  // Draws the small triangles of `mesh` (opaque fill colours) into `pixels`, a view.width x
+  // Draws, on the calling thread and one helper, the small triangles of `mesh` (opaque fill colours) into `pixels`, a view.width x
   // view.height picture (rows top to bottom, premultiplied RGBA, already holding the
   // background), with the edges when `edges_on`; the indices of the others (too large, or
   // too far outside the picture to snap) go to `large`. Allocates nothing once the buffers
@@ -46,8 +48,22 @@ class MeshRaster {
   struct Snapped {
     std::int32_t x, y;  // 1/256 pixel, pixel centres at multiples of 256
   };
+  // What one part of the work needs (the two halves run on two threads).
+  struct Job {
+    const scene::MeshLayer* mesh;
+    const WorldFrame* frame;
+    const View* view;
+    bool edges_on;
+    std::uint32_t* pixels;
+  };
+  void snap_points(const Job& job, std::size_t begin, std::size_t end);
+  // Returns how many triangles it drew; the large ones go to `large`.
+  std::size_t draw_triangles(const Job& job, std::size_t begin, std::size_t end, std::vector<std::uint32_t>& large) const;
+
   std::vector<Snapped> snapped_;      // per point
   std::vector<std::uint8_t> usable_;  // per point: inside the band where snapping is exact
+  std::vector<std::uint32_t> helper_large_;
+  std::unique_ptr<HelperThread> helper_;  // started at the first big draw
   std::size_t drawn_ = 0;
 };
 
