@@ -124,15 +124,11 @@ Renderer::Renderer() {
 
 Renderer::~Renderer() = default;
 
-void Renderer::render(const scene::Scene& scene, const scene::Camera& camera, int samples, Detail detail) {
+void Renderer::render(const scene::Scene& scene, const scene::Camera& camera, int samples, Detail detail,
+                      std::string_view note) {
   State& s = *state_;
   s.target.resize(camera.width(), camera.height(), samples);
-  // The level of detail draws what the exact pass would only where it can: one sample per
-  // pixel (the raster finds one triangle per pixel), the fill on (it covers what it draws),
-  // triangles in any order (not a 3D view's painter's order).
-  const bool approximate = detail == Detail::approximate && s.target.samples() == 1 &&
-                           scene.visible.has(scene::Layer::fill) && !scene.mesh.painter_order &&
-                           !scene.mesh.triangles.empty();
+  const bool approximate = detail == Detail::approximate && can_approximate(scene, s.target.samples());
   const WorldFrame frame = s.upload(scene, camera, !approximate);
   const View view{camera.width(), camera.height(), local_to_pixels(frame, camera)};
 
@@ -144,6 +140,7 @@ void Renderer::render(const scene::Scene& scene, const scene::Camera& camera, in
   if (scene.visible.has(scene::Layer::labels)) add_labels(scene, camera, s.fonts, s.text);
   add_caption(scene, layout, s.fonts, s.text);
   add_legend(scene, layout, s.fonts, s.text);
+  add_note(scene, camera.height(), note, s.fonts, s.text);
   s.ui.upload(s.text);
 
   s.target.bind_for_drawing();
@@ -170,6 +167,7 @@ void Renderer::render(const scene::Scene& scene, const scene::Camera& camera, in
     s.draw_shapes(view, layer);
     s.ui.draw(view, s.text, layer);
   }
+  if (!note.empty()) s.ui.draw(view, s.text, kNoteLayer);
   s.target.resolve();
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -177,6 +175,11 @@ void Renderer::render(const scene::Scene& scene, const scene::Camera& camera, in
 
   if (const GLenum error = glGetError(); error != GL_NO_ERROR)
     throw std::runtime_error("OpenGL error " + std::to_string(error) + " while rendering");
+}
+
+bool Renderer::can_approximate(const scene::Scene& scene, int samples) {
+  return samples == 1 && scene.visible.has(scene::Layer::fill) && !scene.mesh.painter_order &&
+         !scene.mesh.triangles.empty();
 }
 
 scene::Image Renderer::read_pixels() const {

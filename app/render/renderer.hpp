@@ -24,6 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string_view>
 
 #include "meshstep/scene/camera.hpp"
 #include "meshstep/scene/image.hpp"
@@ -57,7 +58,15 @@ class Renderer {
   // Draws the scene as the camera sees it, at the camera's size, with `samples` samples per
   // pixel (1: none; clamped to what GL allows). Throws std::invalid_argument for a size GL
   // cannot have, std::runtime_error for a GL error.
-  void render(const scene::Scene& scene, const scene::Camera& camera, int samples = 1, Detail detail = Detail::exact);
+  // `note`, when not empty, is written at the picture's bottom left over everything (the
+  // viewer says so when a picture is approximate).
+  void render(const scene::Scene& scene, const scene::Camera& camera, int samples = 1, Detail detail = Detail::exact,
+              std::string_view note = {});
+
+  // Whether Detail::approximate changes anything for this scene: one sample per pixel (the
+  // raster finds one triangle per pixel), the fill on (it covers what it draws), triangles
+  // in any order (not a 3D view's painter's order). Else the picture is exact anyway.
+  static bool can_approximate(const scene::Scene& scene, int samples);
 
   // The last picture drawn, rows top to bottom.
   scene::Image read_pixels() const;
