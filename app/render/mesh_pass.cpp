@@ -34,8 +34,13 @@ MeshPass::MeshPass()
       fill_on_(program_.uniform("u_fill_on")),
       edge_(program_.uniform("u_edge")),
       edge_half_width_(program_.uniform("u_edge_half_width")) {
-  vao_.bind();
-  buffer_.bind();
+  set_up(whole_);
+  set_up(subset_);
+}
+
+void MeshPass::set_up(Buffers& b) {
+  b.vao.bind();
+  b.buffer.bind();
   float_attribute(0, 2, sizeof(MeshVertex), offsetof(MeshVertex, position), false);
   color_attribute(1, sizeof(MeshVertex), offsetof(MeshVertex, color), false);
   float_attribute(2, 1, sizeof(MeshVertex), offsetof(MeshVertex, height), false);
@@ -43,29 +48,54 @@ MeshPass::MeshPass()
   glBindVertexArray(0);
 }
 
+void MeshPass::fill_staging(const scene::MeshLayer& mesh, std::size_t t, Buffers& b) {
+  constexpr scene::Rgba kNoColor{160, 160, 160, 255};
+  const std::size_t n = mesh.points.size();
+  const auto& v = mesh.triangles[t];
+  if (v[0] >= n || v[1] >= n || v[2] >= n) return;
+  const scene::Rgba color = t < mesh.fill.size() ? mesh.fill[t] : kNoColor;
+  b.opaque = b.opaque && color.a == 255;
+  add_corners(local_points_[v[0]], local_points_[v[1]], local_points_[v[2]], color, staging_);
+}
+
 void MeshPass::upload(const scene::MeshLayer& mesh, const WorldFrame& frame) {
   // Each point is converted once, then copied to the corners that share it.
   local_points_.resize(mesh.points.size());
   for (std::size_t i = 0; i < mesh.points.size(); ++i) local_points_[i] = frame.to_local(mesh.points[i]);
-
-  constexpr scene::Rgba kNoColor{160, 160, 160, 255};
-  const std::size_t n = mesh.points.size();
   staging_.clear();
   staging_.reserve(3 * mesh.triangles.size());
-  opaque_ = true;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto& v = mesh.triangles[t];
-    if (v[0] >= n || v[1] >= n || v[2] >= n) continue;
-    const scene::Rgba color = t < mesh.fill.size() ? mesh.fill[t] : kNoColor;
-    opaque_ = opaque_ && color.a == 255;
-    add_corners(local_points_[v[0]], local_points_[v[1]], local_points_[v[2]], color, staging_);
-  }
-  buffer_.upload(staging_);
-  triangles_ = staging_.size() / 3;
+  whole_.opaque = true;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) fill_staging(mesh, t, whole_);
+  whole_.buffer.upload(staging_);
+  whole_.triangles = staging_.size() / 3;
+}
+
+void MeshPass::upload_subset(const scene::MeshLayer& mesh, const WorldFrame& frame,
+                             const std::vector<std::uint32_t>& subset) {
+  // Only the points the subset uses are converted (it is mostly empty).
+  local_points_.resize(mesh.points.size());
+  const std::size_t n = mesh.points.size();
+  for (const std::uint32_t t : subset)
+    for (const std::uint32_t v : mesh.triangles[t])
+      if (v < n) local_points_[v] = frame.to_local(mesh.points[v]);
+  staging_.clear();
+  subset_.opaque = true;
+  for (const std::uint32_t t : subset) fill_staging(mesh, t, subset_);
+  subset_.buffer.upload(staging_);
+  subset_.triangles = staging_.size() / 3;
 }
 
 void MeshPass::draw(const View& view, const scene::MeshLayer& style, bool fill_on, bool edges_on) const {
-  if (triangles_ == 0 || (!fill_on && !edges_on)) return;
+  draw(whole_, view, style, fill_on, edges_on);
+}
+
+void MeshPass::draw_subset(const View& view, const scene::MeshLayer& style, bool edges_on) const {
+  draw(subset_, view, style, true, edges_on);
+}
+
+void MeshPass::draw(const Buffers& b, const View& view, const scene::MeshLayer& style, bool fill_on,
+                    bool edges_on) const {
+  if (b.triangles == 0 || (!fill_on && !edges_on)) return;
   program_.use();
   view_uniforms_.set(view);
   glUniform1f(fill_on_, fill_on ? 1.0f : 0.0f);
@@ -74,10 +104,10 @@ void MeshPass::draw(const View& view, const scene::MeshLayer& style, bool fill_o
   const float alpha = edges_on ? e.a / 255.0f : 0.0f;
   glUniform4f(edge_, e.r / 255.0f * alpha, e.g / 255.0f * alpha, e.b / 255.0f * alpha, alpha);
   glUniform1f(edge_half_width_, 0.5f * style.edge_width_px);
-  const bool blend = !(fill_on && opaque_);
+  const bool blend = !(fill_on && b.opaque);
   if (!blend) glDisable(GL_BLEND);
-  vao_.bind();
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangles_));
+  b.vao.bind();
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * b.triangles));
   if (!blend) glEnable(GL_BLEND);
 }
 

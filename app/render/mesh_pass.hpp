@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "gl_objects.hpp"
@@ -32,16 +33,28 @@ class MeshPass {
   // the first thing drawn (over the cleared background): when it covers what it draws
   // opaquely, blending is switched off for it, which llvmpipe pays for at every pixel.
   void draw(const View& view, const scene::MeshLayer& style, bool fill_on, bool edges_on) const;
-  std::size_t triangles() const { return triangles_; }
+  std::size_t triangles() const { return whole_.triangles; }
+
+  // The level of detail (mesh_raster.hpp): only the listed triangles, into buffers of their
+  // own (the whole mesh's stay as they are), drawn with the fill on over the raster's image.
+  void upload_subset(const scene::MeshLayer& mesh, const WorldFrame& frame, const std::vector<std::uint32_t>& subset);
+  void draw_subset(const View& view, const scene::MeshLayer& style, bool edges_on) const;
 
  private:
+  struct Buffers {
+    VertexArray vao;
+    ArrayBuffer buffer;
+    std::size_t triangles = 0;
+    bool opaque = true;  // every fill colour opaque: with the fill on, no blending needed
+  };
+  void set_up(Buffers& b);
+  void fill_staging(const scene::MeshLayer& mesh, std::size_t t, Buffers& b);
+  void draw(const Buffers& b, const View& view, const scene::MeshLayer& style, bool fill_on, bool edges_on) const;
+
   ShaderProgram program_;
   ViewUniforms view_uniforms_;
   GLint fill_on_, edge_, edge_half_width_;
-  VertexArray vao_;
-  ArrayBuffer buffer_;
-  std::size_t triangles_ = 0;
-  bool opaque_ = true;  // every fill colour opaque: with the fill on, no blending needed
+  Buffers whole_, subset_;
   // Kept between uploads so that a new mesh of a similar size allocates nothing.
   std::vector<std::array<float, 2>> local_points_;
   std::vector<MeshVertex> staging_;

@@ -109,4 +109,16 @@ void add_labels(const scene::Scene& s, const scene::Camera& camera, FontCache& f
   }
 }
 
+void add_note(const scene::Scene& s, int height, std::string_view note, FontCache& fonts, UiBatch& batch) {
+  if (note.empty()) return;
+  constexpr float kSize = 13.0f, kMargin = 6.0f, kPad = 4.0f;
+  const FontAtlas& font = fonts.at(kSize);
+  batch.begin(kNoteLayer, font);
+  const float base = std::round(static_cast<float>(height) - kMargin - kPad - std::ceil(font.descent()));
+  const float left = kMargin + kPad, right = left + text_width(font, note);
+  batch.rectangle(kMargin, base - std::ceil(font.ascent()) - kPad, right + kPad, base + std::ceil(font.descent()) + kPad,
+                  panel_color(s, 215));
+  batch.text(note, left, base, text_color(s));
+}
+
 }  // namespace meshstep::render

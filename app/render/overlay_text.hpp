@@ -4,6 +4,8 @@
 // SVG writer uses too, so that both pictures agree.
 #pragma once
 
+#include <string_view>
+
 #include "font_atlas.hpp"
 #include "meshstep/scene/camera.hpp"
 #include "meshstep/scene/layout.hpp"
@@ -15,5 +17,10 @@ namespace meshstep::render {
 void add_caption(const scene::Scene& scene, const scene::Layout& layout, FontCache& fonts, UiBatch& batch);
 void add_legend(const scene::Scene& scene, const scene::Layout& layout, FontCache& fonts, UiBatch& batch);
 void add_labels(const scene::Scene& scene, const scene::Camera& camera, FontCache& fonts, UiBatch& batch);
+
+// A note on the picture itself, at its bottom left, whatever layers are on ("approximate
+// while scrubbing"): its items go to kNoteLayer, which no scene layer is, drawn last.
+inline constexpr scene::Layer kNoteLayer = scene::Layer::count_;
+void add_note(const scene::Scene& scene, int height, std::string_view note, FontCache& fonts, UiBatch& batch);
 
 }  // namespace meshstep::render

@@ -22,7 +22,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <string_view>
 
 #include "meshstep/scene/camera.hpp"
 #include "meshstep/scene/image.hpp"
@@ -37,6 +39,13 @@ namespace meshstep::render {
 // doubles that of a million triangles on llvmpipe.
 inline constexpr int kDefaultSamples = 1;
 
+// How the mesh is drawn. exact: every triangle by GL. approximate: the level of detail of
+// mesh_raster.hpp, for a picture that must come fast (the viewer while the cursor moves): the
+// triangles spanning a few pixels are found at the pixel centres on the CPU, the others drawn
+// by GL. It is used only where it applies (one sample per pixel, the fill on and opaque, no
+// painter's order), else the picture is exact anyway.
+enum class Detail : std::uint8_t { exact, approximate };
+
 class Renderer {
  public:
   // Compiles the shaders; throws std::runtime_error if they do not compile, std::logic_error
@@ -49,7 +58,15 @@ class Renderer {
   // Draws the scene as the camera sees it, at the camera's size, with `samples` samples per
   // pixel (1: none; clamped to what GL allows). Throws std::invalid_argument for a size GL
   // cannot have, std::runtime_error for a GL error.
-  void render(const scene::Scene& scene, const scene::Camera& camera, int samples = 1);
+  // `note`, when not empty, is written at the picture's bottom left over everything (the
+  // viewer says so when a picture is approximate).
+  void render(const scene::Scene& scene, const scene::Camera& camera, int samples = 1, Detail detail = Detail::exact,
+              std::string_view note = {});
+
+  // Whether Detail::approximate changes anything for this scene: one sample per pixel (the
+  // raster finds one triangle per pixel), the fill on (it covers what it draws), triangles
+  // in any order (not a 3D view's painter's order). Else the picture is exact anyway.
+  static bool can_approximate(const scene::Scene& scene, int samples);
 
   // The last picture drawn, rows top to bottom.
   scene::Image read_pixels() const;
@@ -71,6 +88,8 @@ class Renderer {
     std::size_t frames = 0;
     std::size_t mesh_uploads = 0;     // mesh buffers filled
     std::size_t overlay_uploads = 0;  // shape buffers filled
+    std::size_t approximate_frames = 0;  // drawn with the level of detail
+    std::size_t raster_triangles = 0;    // of the last such frame, drawn on the CPU
   };
   const Counters& counters() const;
   // The last picture's size and samples per pixel.

@@ -16,8 +16,12 @@ namespace {
 constexpr int kPreviewNice = 5;
 }  // namespace
 
-CanvasWorker::CanvasWorker(std::string log_path, std::string backend, Follow follow)
-    : log_path_(std::move(log_path)), backend_(std::move(backend)), follow_(follow), thread_([this] { run(); }) {}
+CanvasWorker::CanvasWorker(std::string log_path, std::string backend, Follow follow, std::size_t approximate_from)
+    : log_path_(std::move(log_path)),
+      backend_(std::move(backend)),
+      follow_(follow),
+      approximate_from_(approximate_from),
+      thread_([this] { run(); }) {}
 
 CanvasWorker::~CanvasWorker() {
   {
@@ -57,13 +61,18 @@ void CanvasWorker::wait_until_drawn() {
   drawn_.wait(lock, [&] { return finished_ == asked_ || !error_.empty(); });
 }
 
+std::size_t CanvasWorker::approximate_pictures() const {
+  const std::lock_guard lock(mutex_);
+  return approximate_pictures_;
+}
+
 std::string CanvasWorker::error() const {
   const std::lock_guard lock(mutex_);
   return error_;
 }
 
 void CanvasWorker::draw(const CanvasRequest& wanted, Session& session, View3d& view, render::Renderer& renderer,
-                        CanvasPicture& out) {
+                        bool may_approximate, CanvasPicture& out) {
   session.seek(wanted.position);
   session.set_color_by(wanted.color_by);
   session.set_theme(wanted.theme);
@@ -90,7 +99,12 @@ void CanvasWorker::draw(const CanvasRequest& wanted, Session& session, View3d& v
       wanted.fit ? scene::Camera::fit(drawn.bounds, wanted.width, wanted.height,
                                       scene::layout(drawn, wanted.width, wanted.height).margins)
                  : wanted.camera();
-  renderer.render(drawn, camera);
+  out.approximate = may_approximate && drawn.mesh.triangles.size() >= approximate_from_ &&
+                    render::Renderer::can_approximate(drawn, render::kDefaultSamples);
+  if (out.approximate)
+    renderer.render(drawn, camera, render::kDefaultSamples, render::Detail::approximate, kApproximateNote);
+  else
+    renderer.render(drawn, camera, render::kDefaultSamples);
   renderer.read_pixels(out.image);
 }
 
@@ -126,6 +140,7 @@ void CanvasWorker::run() {
   }
 
   CanvasPicture out;
+  std::uint64_t drawn_approximately = 0;  // the request number last drawn with the level of detail
   for (;;) {
     CanvasRequest wanted;
     std::uint64_t number = 0;
@@ -148,18 +163,29 @@ void CanvasWorker::run() {
           drawn = false;
         }
       }
-      if (drawn) draw(wanted, *session, *view, *renderer, out);
+      // A request already drawn approximately is drawn exactly now; a new one may be
+      // approximate (a live run's preview stays exact: it is drawn a few times a second).
+      const bool may_approximate = number != drawn_approximately && follow_ == Follow::fixed_log;
+      if (drawn) draw(wanted, *session, *view, *renderer, may_approximate, out);
     } catch (const std::exception& e) {
       fail("the canvas could not be drawn: ", e);
       break;
     }
     {
       const std::lock_guard lock(mutex_);
+      const bool approximate = drawn && out.approximate;
       if (drawn) {
         std::swap(out, ready_);
         ready_fresh_ = true;
       }
-      finished_ = number;
+      // An approximate picture leaves the request pending: the loop takes it again (drawn
+      // exactly) unless a newer one came meanwhile.
+      if (approximate) {
+        drawn_approximately = number;
+        ++approximate_pictures_;
+      } else {
+        finished_ = number;
+      }
     }
     drawn_.notify_all();
   }

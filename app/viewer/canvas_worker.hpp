@@ -5,8 +5,13 @@
 // frame; the worker draws the latest one asked for, skipping those that were overtaken, with
 // its own reader of the log, its own replay cursor and its own off-screen GL context, and
 // hands back the picture with the exact scene and words of that position. Meanwhile the
-// canvas keeps showing the last picture finished: an exact mesh of the run, labelled with
-// its own step, never an approximation of the one asked for.
+// canvas keeps showing the last picture finished, labelled with its own step.
+//
+// A new request for a big mesh (the cursor dragged along the timeline, a pan) is drawn first
+// with the renderer's level of detail (render::Detail::approximate: the small triangles found
+// on the CPU), marked "approximate while scrubbing" on the picture; if no newer request came
+// meanwhile, the same request is drawn again exactly at once. So the picture at rest is
+// always exact, and a request counts as drawn (wait_until_drawn, drawing) only then.
 #pragma once
 
 #include <condition_variable>
@@ -52,7 +57,12 @@ struct CanvasPicture {
   scene::Scene lifted;     // request.in_3d: the scene drawn, moment.scene lifted (else stale)
   Stats stats;             // of the moment's mesh
   scene::Image image;      // rows top to bottom, request.width x request.height
+  bool approximate = false;  // the mesh drawn with the level of detail (said so on the image)
 };
+
+// Meshes from this many triangles up get an approximate picture first.
+inline constexpr std::size_t kApproximateFrom = 100000;
+inline constexpr const char* kApproximateNote = "approximate while scrubbing";
 
 class CanvasWorker {
  public:
@@ -63,7 +73,9 @@ class CanvasWorker {
 
   // Starts the thread; it opens LOG_PATH and an off-screen context of `backend` ("egl" or
   // "osmesa": the GL library the UI's context uses, whose functions are loaded already).
-  CanvasWorker(std::string log_path, std::string backend, Follow follow = Follow::fixed_log);
+  // `approximate_from`: the meshes that get an approximate picture first, by their triangles.
+  CanvasWorker(std::string log_path, std::string backend, Follow follow = Follow::fixed_log,
+               std::size_t approximate_from = kApproximateFrom);
   ~CanvasWorker();
   CanvasWorker(const CanvasWorker&) = delete;
   CanvasWorker& operator=(const CanvasWorker&) = delete;
@@ -77,16 +89,20 @@ class CanvasWorker {
   bool drawing() const;
   // Waits until the last request is drawn (scripts, before they look).
   void wait_until_drawn();
+  // Pictures drawn with the level of detail so far (each followed by an exact one at rest).
+  std::size_t approximate_pictures() const;
   // Why the worker stopped ("" while it works): the log or the context failed.
   std::string error() const;
 
  private:
   void run();
+  // `may_approximate`: a new request, which a big mesh draws with the level of detail first.
   void draw(const CanvasRequest& wanted, Session& session, View3d& view, render::Renderer& renderer,
-            CanvasPicture& out);
+            bool may_approximate, CanvasPicture& out);
 
   const std::string log_path_, backend_;
   const Follow follow_;
+  const std::size_t approximate_from_;
   mutable std::mutex mutex_;
   std::condition_variable wake_, drawn_;
   CanvasRequest wanted_;
@@ -96,6 +112,7 @@ class CanvasWorker {
   bool ready_fresh_ = false;  // not taken yet
   bool stop_ = false;
   std::string error_;
+  std::size_t approximate_pictures_ = 0;
   Stats stats_;  // the worker's own: of the moment it drew last
   std::size_t stats_serial_ = SIZE_MAX;
   std::thread thread_;  // last: starts once everything above exists

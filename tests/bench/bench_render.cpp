@@ -26,11 +26,13 @@
 #include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/io/atomic_file.hpp"
 #include "meshstep/scene/build.hpp"
+#include "meshstep/scene/image.hpp"
 #include "meshstep/scene/layout.hpp"
 #include "meshstep/scene/svg.hpp"
 #include "plain_frame.hpp"
 #include "random_points.hpp"
 #include "render/gl_context.hpp"
+#include "render/mesh_raster.hpp"
 #include "render/renderer.hpp"
 
 namespace {
@@ -98,7 +100,8 @@ void bench_frames(const TriMesh& mesh, int repeat) {
       // (tens of percent within minutes) falls on both alike.
       bench::PlainFrame plain(mesh, 1920, 1080);
       plain.draw_and_read();
-      std::vector<double> ours, floor;
+      std::vector<double> ours, floor, approximate;
+      scene::Image approximate_image;
       for (int i = 0; i < repeat; ++i) {
         auto t0 = Clock::now();
         renderer.render(picture, camera, samples);
@@ -107,6 +110,10 @@ void bench_frames(const TriMesh& mesh, int repeat) {
         t0 = Clock::now();
         plain.draw_and_read();
         floor.push_back(ms_since(t0));
+        t0 = Clock::now();
+        renderer.render(picture, camera, samples, render::Detail::approximate);
+        renderer.read_pixels(approximate_image);
+        approximate.push_back(ms_since(t0));
       }
       const Stats ours_stats = stats_of(ours), floor_stats = stats_of(floor);
       row(std::string(backend) + ": 1920x1080 frame, render + read-back (samples " + std::to_string(samples) + ")",
@@ -114,6 +121,24 @@ void bench_frames(const TriMesh& mesh, int repeat) {
       row(std::string(backend) + ": floor: same triangles, flat colour only, no edges", floor_stats, "ms");
       std::printf("| %-58s | %9.2f | %9.2f | %9s | %s |\n", (std::string(backend) + ": frame over floor").c_str(),
                   ours_stats.min / floor_stats.min, ours_stats.median / floor_stats.median, "", "ratio");
+      const Stats approximate_stats = stats_of(approximate);
+      row(std::string(backend) + ": the same frame, level of detail (mesh_raster.hpp)", approximate_stats, "ms");
+      std::printf("| %-58s | %9.2f | %9.2f | %9s | %s |\n", (std::string(backend) + ": level of detail over frame").c_str(),
+                  approximate_stats.min / ours_stats.min, approximate_stats.median / ours_stats.median, "", "ratio");
+      std::printf("|   (%zu of the triangles drawn on the CPU)\n", renderer.counters().raster_triangles);
+      {
+        // The CPU's part of the level of detail alone: the points snapped, the triangles found.
+        render::MeshRaster raster;
+        const render::WorldFrame frame = render::choose_frame(picture.bounds, camera, nullptr);
+        const render::View view{1920, 1080, render::local_to_pixels(frame, camera)};
+        std::vector<std::uint32_t> pixels(1920 * 1080), large;
+        row(std::string(backend) + ": level of detail: its CPU raster alone",
+            time_ms(repeat, [&] { raster.draw(picture.mesh, frame, view, true, pixels, large); }), "ms");
+      }
+      const scene::ImageDiff diff = scene::compare_images(image, approximate_image, 5);
+      const std::size_t differing = diff.differing_pixels;
+      std::printf("| %-58s | %9zu | %8.4f%% | %9s | %s |\n", (std::string(backend) + ": level of detail: pixels off by > 5").c_str(),
+                  differing, 100.0 * static_cast<double>(differing) / (1920.0 * 1080.0), "", "pixels");
       row(std::string(backend) + ": same, with the mesh uploaded again", time_ms(repeat, [&] {
             renderer.invalidate();
             renderer.render(picture, camera, samples);

@@ -89,6 +89,33 @@ TEST_P(CanvasWorkerTest, DrawsTheLastMomentAskedForExactly) {
   EXPECT_EQ(picture.moment.position, log_->step_start(3));
 }
 
+TEST_P(CanvasWorkerTest, ANewMomentOfABigMeshIsApproximateFirstAndExactAtRest) {
+  // Every mesh counts as big here (the lesson's is small): each new request is drawn with
+  // the level of detail first, then, nothing newer being asked, exactly.
+  CanvasWorker worker(log_->path(), GetParam(), CanvasWorker::Follow::fixed_log, 1);
+  CanvasPicture picture;
+  worker.request(at(log_->step_start(40)));
+  worker.wait_until_drawn();
+  ASSERT_EQ(worker.error(), "");
+  EXPECT_EQ(worker.approximate_pictures(), 1u);
+  ASSERT_TRUE(worker.take(picture));
+  EXPECT_FALSE(picture.approximate) << "the picture at rest is exact";
+  EXPECT_FALSE(worker.drawing());
+
+  // Its pixels are the exact picture's.
+  std::unique_ptr<Session> here = Session::open_log(log_->path());
+  here->seek(log_->step_start(40));
+  here->set_color_by(scene::ColorBy::angle);
+  context_->make_current();
+  render::Renderer renderer;
+  renderer.render(here->scene(), at(0).camera());
+  EXPECT_EQ(scene::compare_images(renderer.read_pixels(), picture.image, 0).differing_pixels, 0u);
+  // The approximate picture said so on itself.
+  renderer.render(here->scene(), at(0).camera(), 1, render::Detail::approximate, kApproximateNote);
+  EXPECT_GT(scene::compare_images(renderer.read_pixels(), picture.image, 5).differing_pixels, 0u)
+      << "the note is drawn on an approximate picture";
+}
+
 TEST_P(CanvasWorkerTest, AnUnreadableLogIsReportedNotThrown) {
   CanvasWorker worker("/nonexistent/run.mslog", GetParam());
   worker.request(at(0));
