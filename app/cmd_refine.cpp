@@ -529,7 +529,7 @@ Command add_refine_command(CLI::App& parent) {
 
   std::vector<std::string> algorithm_names, selection_names;
   for (const AlgorithmInfo& a : algorithms()) algorithm_names.emplace_back(a.name);
-  for (const PartInfo& s : selections()) selection_names.emplace_back(s.name);
+  for (const SelectionInfo& s : selections()) selection_names.emplace_back(s.name);
   cmd->add_option("-a,--algorithm", args->algorithm, "Refinement algorithm: " + names_of_algorithms())
       ->check(CLI::IsMember(algorithm_names))
       ->capture_default_str();

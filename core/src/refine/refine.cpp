@@ -167,10 +167,6 @@ const char* to_string(Selection s) {
   return "?";
 }
 const char* to_string(RefineInsertion i) { return i == RefineInsertion::bisection ? "bisection" : "delaunay"; }
-Encroachment default_encroachment(Selection selection) {
-  return selection == Selection::lepp_midpoint || selection == Selection::longest_edge_midpoint ? Encroachment::circle
-                                                                                                 : Encroachment::lens;
-}
 
 double lens_angle_deg(const RefineCriteria& c) {
   // Without an angle bound nothing caps how flat a triangle by a segment may be: the circle.

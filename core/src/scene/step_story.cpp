@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "meshstep/refine/refine.hpp"
+#include "meshstep/refine/registry.hpp"
 
 namespace meshstep::scene::detail {
 
@@ -222,20 +223,18 @@ std::string chosen_point_name(const StepStory::Selected& selected, const std::op
       default: return "sample";
     }
   }
-  const auto strategy = static_cast<Selection>(selected.strategy);
   // Every strategy weighs its point against the circumcenter and records the circumcenter
   // as the alternative, unless it chose the circumcenter itself; the off-center selection
   // then records the off-center it did not take.
   if (selected.chose_circumcenter) return "circumcenter";
-  switch (strategy) {
-    case Selection::offcenter: return "off-center";
-    case Selection::lepp_midpoint: return "terminal-edge midpoint";
-    case Selection::lepp_centroid:
-      // On the boundary the terminal edge has one triangle: its midpoint is taken.
-      return lepp && lepp->terminal_triangles == 1 ? "terminal-edge midpoint" : "terminal-triangles centroid";
-    case Selection::longest_edge_midpoint: return "longest-edge midpoint";
-    default: return "circumcenter";
-  }
+  const SelectionInfo* info = nullptr;
+  for (const SelectionInfo& s : selections())
+    if (static_cast<std::uint8_t>(s.selection) == selected.strategy) info = &s;
+  if (!info) return "circumcenter";  // (a strategy no selection has: a damaged log)
+  // On the boundary the terminal edge has one triangle: a Lepp centroid takes its midpoint.
+  if (!info->boundary_point_name.empty() && lepp && lepp->terminal_triangles == 1)
+    return std::string(info->boundary_point_name);
+  return std::string(info->point_name);
 }
 
 // "22.4° < 30°": the measured value against the run's bound (from the log's parameters;
