@@ -206,9 +206,8 @@ StepStory read_step(const replay::Replay& cursor) {
 }
 
 double encroachment_angle(const replay::LogReader& log) {
-  if (log.parameter("encroachment") != "lens") return 90.0;
-  const std::string angle = log.parameter("lens_angle");
-  return angle.empty() ? 120.0 : std::strtod(angle.c_str(), nullptr);
+  if (log.run().encroachment != Encroachment::lens) return 90.0;
+  return log.run().lens_angle.value_or(120.0);
 }
 
 std::string chosen_point_name(const StepStory::Selected& selected, const std::optional<StepStory::Lepp>& lepp) {
@@ -242,17 +241,16 @@ std::string chosen_point_name(const StepStory::Selected& selected, const std::op
 std::string criterion_text(const StepStory::Criterion& f, const replay::LogReader& log) {
   using replay::Criterion;
   const auto criterion = static_cast<Criterion>(f.criterion);
-  const char* key = criterion == Criterion::min_angle    ? "min_angle"
-                    : criterion == Criterion::max_angle  ? "max_angle"
-                    : criterion == Criterion::max_aspect ? "max_aspect"
-                    : criterion == Criterion::max_area   ? "max_area"
-                    : criterion == Criterion::size       ? "size"
-                    : criterion == Criterion::vertical_error ? "max_error"
-                                                         : nullptr;
-  const std::string bound_text = key ? log.parameter(key) : "";
-  char* end = nullptr;
-  const double bound = std::strtod(bound_text.c_str(), &end);
-  const bool numeric = !bound_text.empty() && end && *end == '\0' && bound > 0.0;
+  const replay::RunHeader& run = log.run();
+  const std::optional<double> recorded = criterion == Criterion::min_angle        ? run.min_angle
+                                         : criterion == Criterion::max_angle      ? run.max_angle
+                                         : criterion == Criterion::max_aspect     ? run.max_aspect
+                                         : criterion == Criterion::max_area       ? run.max_area
+                                         : criterion == Criterion::size           ? run.size
+                                         : criterion == Criterion::vertical_error ? run.max_error
+                                                                                  : std::nullopt;
+  const double bound = recorded.value_or(0.0);
+  const bool numeric = bound > 0.0;
   const auto number = [](double v) { return printed("%.3g", v); };
   // One decimal, or as many more as it takes not to print 29.96 as "30.0° < 30°".
   const auto degrees = [&](double v) {
