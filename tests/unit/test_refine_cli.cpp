@@ -458,6 +458,9 @@ TEST_F(RefineCli, ListShowsEveryPart) {
   for (const char* name : {"circumcenter", "offcenter", "tds", "dcel", "flip", "cavity", "min-angle", ".poly",
                            "Algorithms", "Data structures"})
     EXPECT_TRUE(contains(r.out, name)) << name << " in " << r.out;
+  // Every format of the table (io/formats.hpp), with its kind and what meshstep does with it.
+  for (const char* name : {".tif", "grid, R:", ".mslog", "log, RW:", ".stl", "surface, RW:", ".edge", "mesh, W:"})
+    EXPECT_TRUE(contains(r.out, name)) << name << " in " << r.out;
   const CommandResult j = meshstep("list --json");
   ASSERT_EQ(j.status, 0) << j.err;
   const std::string json = last_line(j.out);

@@ -148,17 +148,6 @@ constexpr std::array kDataStructures = {
 };
 
 
-constexpr std::array kFileFormats = {
-    PartInfo{".node", "Triangle's vertices (input: a point set; output)"},
-    PartInfo{".poly", "Triangle's PSLG: vertices, segments, holes, regions (input; output)"},
-    PartInfo{".ele", "Triangle's triangles (output; with .node, a mesh to check or to refine again)"},
-    PartInfo{".area", "Triangle's per-triangle maximum areas (input with a mesh to refine again; output)"},
-    PartInfo{".asc", "ESRI ASCII grid (input: refine --size GRID.asc; terrain heights, NODATA kept out)"},
-    PartInfo{".png", "8/16-bit greyscale heightmap (input: terrain); also pictures (render, export)"},
-    PartInfo{".obj / .off / .ply / .stl", "3D triangle surfaces (output: terrain; PLY and STL ASCII or binary)"},
-    PartInfo{".edge / .neigh", "Triangle's edges and neighbours (output, -e / -n)"},
-    PartInfo{".mslog", "meshstep replay log (--record; read by meshstep log)"},
-};
 }  // namespace
 
 std::span<const AlgorithmInfo> algorithms() { return kAlgorithms; }
@@ -221,7 +210,6 @@ std::string range_problem(const ParameterInfo& parameter, std::string_view text)
 }
 std::span<const PartInfo> insertions() { return kInsertions; }
 std::span<const PartInfo> data_structures() { return kDataStructures; }
-std::span<const PartInfo> file_formats() { return kFileFormats; }
 
 std::optional<Selection> parse_selection(std::string_view name) {
   if (const SelectionInfo* s = find_selection(name)) return s->selection;

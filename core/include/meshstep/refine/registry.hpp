@@ -106,7 +106,6 @@ std::vector<std::string> choices(const ParameterInfo& parameter);
 std::string range_problem(const ParameterInfo& parameter, std::string_view text);
 std::span<const PartInfo> insertions();
 std::span<const PartInfo> data_structures();
-std::span<const PartInfo> file_formats();
 
 // The selection of that name (selections()), or nothing.
 std::optional<Selection> parse_selection(std::string_view name);
