@@ -1,4 +1,4 @@
-#include "pseudocode.hpp"
+#include "meshstep/scene/pseudocode.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,7 +9,7 @@
 
 #include "meshstep/refine/registry.hpp"
 
-namespace meshstep::viewer {
+namespace meshstep::scene {
 
 namespace {
 
@@ -710,4 +710,4 @@ CodeAt pseudocode_at(const replay::LogReader& log, const replay::Replay& cursor)
   return pseudocode_at(log, cursor.position());
 }
 
-}  // namespace meshstep::viewer
+}  // namespace meshstep::scene
