@@ -1,6 +1,5 @@
 // meshstep refine: Delaunay refinement of a .poly PSLG (or a .node point set) into a quality
 // mesh, by one of the registered algorithms (refine/registry.hpp).
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -60,15 +59,6 @@ bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-// The whole of `text` as a number, or nothing.
-bool parse_number(const std::string& text, double& value) {
-  if (text.empty()) return false;
-  errno = 0;
-  char* end = nullptr;
-  value = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && errno != ERANGE;
-}
-
 // "30", "0.125", "1e-06": short and exact enough for messages and the log header.
 std::string header_number(double v) {
   char buffer[32];
@@ -119,10 +109,11 @@ int refine_surface(const RefineArgs& args, const Operation& op) {
   surface.input = args.input;
   surface.output = args.prefix;
   surface.operation = op;
-  if (op.size && !parse_number(*op.size, surface.max_edge)) {
+  if (op.size && !size_length(op)) {
     print_error("--size: a 3D surface takes a length, not '" + *op.size + "'");
     return kExitUsage;
   }
+  surface.max_edge = size_length(op).value_or(0.0);
   surface.stats = args.stats;
   surface.no_output = args.no_output;
   surface.quiet = args.quiet;
@@ -145,9 +136,9 @@ int run_refine(const RefineArgs& args) {
   // An ESRI ASCII grid of sizes: the cell holding a triangle's centroid gives its longest
   // edge's bound (none outside the grid, on no-data cells and at values <= 0).
   const std::string size_text = op.size.value_or("");
-  double size = 0.0;
+  const double size = size_length(op).value_or(0.0);
   std::function<double(const Point&)> grid_size;
-  if (op.size && !parse_number(size_text, size)) {
+  if (op.size && !size_length(op)) {
     try {
       auto grid = std::make_shared<io::EsriGrid>(io::read_esri_grid(size_text));
       grid_size = [grid](const Point& p) { return grid->at(p, -1.0); };

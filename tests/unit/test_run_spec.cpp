@@ -64,7 +64,7 @@ TEST(RunSpec, AllOptionsTogetherInTheRegistrysOrder) {
   }
   expect_round_trip(text);
   expect_round_trip("refine --algorithm lepp-centroid --min-angle 25 --max-area 2e-05");
-  expect_round_trip("triangulate --ds dcel --insertion cavity --convex-hull");
+  expect_round_trip("triangulate --insertion cavity --ds dcel --convex-hull");
 }
 
 TEST(RunSpec, ReadsTheCommandLinesOtherSpellings) {
@@ -144,6 +144,9 @@ TEST(RunSpec, RefineOptionsRunWhatTheWordsSay) {
       refine_options(parse_operation("refine --size grid.asc"), [](const Point&) { return 3.0; });
   ASSERT_TRUE(sized.criteria.size);
   EXPECT_EQ(sized.criteria.size({0, 0}), 3.0);
+  EXPECT_EQ(size_length(parse_operation("refine --size 0.25")), 0.25);
+  EXPECT_FALSE(size_length(parse_operation("refine --size grid.asc")));
+  EXPECT_FALSE(size_length(parse_operation("refine")));
 }
 
 }  // namespace

@@ -230,6 +230,14 @@ std::string print_operation(const Operation& op) {
   return out;
 }
 
+std::optional<double> size_length(const Operation& op) {
+  if (!op.size) return std::nullopt;
+  double length = 0.0;
+  const auto [end, error] = std::from_chars(op.size->data(), op.size->data() + op.size->size(), length);
+  if (op.size->empty() || error != std::errc{} || end != op.size->data() + op.size->size()) return std::nullopt;
+  return length;
+}
+
 bool has_bound(const Operation& op) {
   return op.min_angle || op.max_angle || op.max_aspect || op.max_area || op.size;
 }
@@ -266,10 +274,8 @@ RefineOptions refine_options(const Operation& op, std::function<double(const Poi
   c.max_triangles = op.max_triangles;
   c.max_steiner = op.max_steiner;
   if (op.size) {
-    double length = 0.0;
-    const auto [end, error] = std::from_chars(op.size->data(), op.size->data() + op.size->size(), length);
-    if (error == std::errc{} && end == op.size->data() + op.size->size()) {
-      c.size = [length](const Point&) { return length; };
+    if (const std::optional<double> length = size_length(op)) {
+      c.size = [length = *length](const Point&) { return length; };
     } else if (size_from_grid) {
       c.size = std::move(size_from_grid);
     } else {

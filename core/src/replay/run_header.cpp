@@ -88,13 +88,18 @@ RunHeader read_run_header(const LogHeader& header, const std::string& path) {
   run.insertion = header_parameter(header, "insertion", header.insertion);
   if (const std::string e = text("encroachment"); e == "lens" || e == "circle")
     run.encroachment = e == "lens" ? Encroachment::lens : Encroachment::circle;
-  run.lens_angle = number<double>(text("lens_angle"));
-  run.min_angle = number<double>(text("min_angle"));
-  run.max_angle = number<double>(text("max_angle"));
-  run.max_aspect = number<double>(text("max_aspect"));
-  run.max_area = number<double>(text("max_area"));
-  run.size = number<double>(text("size"));
-  run.max_error = number<double>(text("max_error"));
+  // The header writes 0 for a bound not set.
+  const auto bound = [&](const char* key) -> std::optional<double> {
+    const std::optional<double> v = number<double>(text(key));
+    return v && *v > 0.0 ? v : std::nullopt;
+  };
+  run.lens_angle = bound("lens_angle");
+  run.min_angle = bound("min_angle");
+  run.max_angle = bound("max_angle");
+  run.max_aspect = bound("max_aspect");
+  run.max_area = bound("max_area");
+  run.size = bound("size");
+  run.max_error = bound("max_error");
   return run;
 }
 

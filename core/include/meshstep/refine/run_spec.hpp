@@ -87,6 +87,9 @@ Operation parse_operation(std::string_view line);
 // differs from the default, in the registry's order, each number in its shortest exact text.
 std::string print_operation(const Operation& op);
 
+// --size as a length, or nothing: none given, or the name of a grid of lengths.
+std::optional<double> size_length(const Operation& op);
+
 // Whether the description gives any bound (--min-angle, --max-angle, --max-aspect,
 // --max-area, --size); without one the algorithm's defaults apply.
 bool has_bound(const Operation& op);

@@ -22,7 +22,7 @@ struct RunHeader {
   std::string insertion;
   std::optional<Encroachment> encroachment;
   std::optional<double> lens_angle;  // degrees, under the lens rule
-  // The bounds as numbers (none: not set, or not a number: a --size grid's name).
+  // The bounds as numbers (none: not set, written as 0, or not a number: a --size grid's name).
   std::optional<double> min_angle, max_angle, max_aspect, max_area, size, max_error;
 };
 
