@@ -9,6 +9,7 @@
 
 #include "command.hpp"
 #include "json_line.hpp"
+#include "meshstep/io/formats.hpp"
 #include "meshstep/refine/registry.hpp"
 #include "meshstep/terrain/tin.hpp"
 
@@ -35,9 +36,32 @@ std::string short_number(double v) {
   return buffer;
 }
 
-std::vector<Row> rows_of(std::span<const PartInfo> parts) {
+template <class Part>
+std::vector<Row> rows_of(std::span<const Part> parts) {
   std::vector<Row> rows;
-  for (const PartInfo& p : parts) rows.push_back({std::string(p.name), std::string(p.description)});
+  for (const Part& p : parts) rows.push_back({std::string(p.name), std::string(p.description)});
+  return rows;
+}
+
+// ".poly  pslg, RW: Triangle's PSLG: ...": the format table (io/formats.hpp).
+std::vector<Row> format_rows() {
+  std::vector<Row> rows;
+  for (const io::FileFormat& f : io::file_formats())
+    rows.push_back({std::string(f.extension), std::string(io::to_string(f.kind)) + ", " + (f.read ? "R" : "") +
+                                                  (f.write ? "W" : "") + ": " + std::string(f.description)});
+  return rows;
+}
+
+// The bounds and caps among the refinement's parameter records: "--min-angle DEG: Every
+// angle at least DEG (below 60; ...".
+std::vector<Row> criteria_rows() {
+  std::vector<Row> rows;
+  for (const ParameterInfo& p : refine_parameters()) {
+    if (!p.bound && p.kind != ParameterKind::count) continue;
+    std::string help(p.help);
+    std::replace(help.begin(), help.end(), '\n', ' ');
+    rows.push_back({std::string(p.name), "--" + std::string(p.name) + " " + std::string(p.type_name) + ": " + help});
+  }
   return rows;
 }
 
@@ -65,10 +89,9 @@ std::vector<Section> sections() {
       {"selections", "Selections (refine --select S): where a bad triangle's new vertex goes",
        rows_of(meshstep::selections())},
       {"insertions", "Insertions (--insertion): how a vertex goes in", rows_of(meshstep::insertions())},
-      {"criteria", "Criteria (refine): a triangle is bad when it fails any bound given",
-       rows_of(meshstep::criteria())},
+      {"criteria", "Criteria (refine): a triangle is bad when it fails any bound given", criteria_rows()},
       {"data_structures", "Data structures (--ds)", rows_of(meshstep::data_structures())},
-      {"file_formats", "File formats", rows_of(meshstep::file_formats())},
+      {"file_formats", "File formats (R: meshstep reads it, W: writes it)", format_rows()},
   };
 }
 

@@ -1,6 +1,5 @@
 // meshstep refine: Delaunay refinement of a .poly PSLG (or a .node point set) into a quality
 // mesh, by one of the registered algorithms (refine/registry.hpp).
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,13 +17,17 @@
 #include "meshstep/check/quality.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/esri_grid.hpp"
+#include "meshstep/io/formats.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/pslg/input_angles.hpp"
 #include "meshstep/refine/refine.hpp"
 #include "meshstep/refine/registry.hpp"
 #include "meshstep/replay/log_writer.hpp"
+#include "meshstep/replay/run_header.hpp"
+#include "meshstep/refine/run_spec.hpp"
 #include "memory_budget.hpp"
 #include "output_prefix.hpp"
+#include "operation_options.hpp"
 #include "record_option.hpp"
 #include "region_option.hpp"
 
@@ -34,24 +37,8 @@ namespace {
 struct RefineArgs {
   std::string input;
   std::string prefix;
-  std::string algorithm{kDefaultAlgorithm};
-  std::string select;  // empty: the algorithm's own
-  double min_angle = 0.0;
-  double max_angle = 180.0;
-  double max_aspect = 0.0;
-  double max_area = 0.0;
-  std::size_t max_triangles = 0;
-  double flip_dihedral = -1.0;  // 3D surfaces: flips up to this dihedral angle (< 0: none)
-  std::size_t max_steiner = 0;
-  std::string size;
-  std::string insertion = "flip";
-  std::string order = "smallest";
-  std::string encroachment;  // empty: the selection's own (default_encroachment)
-  std::string ds = "tds";
-  bool convex_hull = false;
-  bool improve = false;
-  bool delete_free = false;  // always, even under an area or size bound
-  bool keep_free = false;
+  // The refinement's own options (algorithm, bounds, parts), from the registry's records.
+  std::unique_ptr<OperationOptions> operation;
   std::string record;
   RegionArgs region;
   std::string stats;
@@ -60,8 +47,6 @@ struct RefineArgs {
   bool write_partial = false;
   bool quiet = false;
   bool verbose = false;
-  // Which bounds the command line gave (the defaults above mean "none").
-  std::vector<const CLI::Option*> bounds;
 };
 
 // Progress that is worth seeing on a normal run (refinement can take a while): on standard
@@ -75,15 +60,6 @@ void note(Verbosity v, const std::string& message) {
 
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-// The whole of `text` as a number, or nothing.
-bool parse_number(const std::string& text, double& value) {
-  if (text.empty()) return false;
-  errno = 0;
-  char* end = nullptr;
-  value = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && errno != ERANGE;
 }
 
 // "30", "0.125", "1e-06": short and exact enough for messages and the log header.
@@ -110,31 +86,6 @@ void warn_of_small_input_angle(Verbosity verbosity, const std::string& name, con
                                "left as they are, and counted at the end");
 }
 
-// CLI11's own range checks print the largest double in full; these say what is wanted.
-// Text that is no number passes, for CLI11's conversion to refuse.
-CLI::Validator positive_number(bool zero_allowed) {
-  return CLI::Validator(
-      [zero_allowed](std::string& text) -> std::string {
-        double value = 0.0;
-        if (!parse_number(text, value)) return {};
-        if (std::isfinite(value) && (value > 0.0 || (zero_allowed && value == 0.0))) return {};
-        return std::string(zero_allowed ? "must be zero or a positive number" : "must be a positive number") +
-               ", not " + text;
-      },
-      "");
-}
-
-std::string names_of_algorithms() {
-  std::string names;
-  for (const AlgorithmInfo& a : algorithms()) names += (names.empty() ? "" : ", ") + std::string(a.name);
-  return names;
-}
-
-// The insertion as the user chose it: bisection, or the triangulation's flips or cavity.
-std::string insertion_name(const RefineOptions& o) {
-  return o.insertion == RefineInsertion::bisection ? "bisection" : to_string(o.triangulate.insertion);
-}
-
 // Longest-edge midpoints split a bad triangle without removing its small angle: against an
 // angle or aspect bound, midpoint-area went on without end on every corpus input at 30
 // degrees (28M Steiner vertices when memory ran out). Without a cap of the user's, such a
@@ -149,125 +100,82 @@ std::size_t midpoint_shape_cap(const RefineOptions& o, std::size_t input_vertice
 }
 
 // A 3D surface goes to longest-edge bisection in 3D; only its own options apply.
-int refine_surface(const RefineArgs& args) {
+int refine_surface(const RefineArgs& args, const Operation& op) {
   if (args.region.given()) {
     print_error("--region and --region-poly limit a planar refinement: they do not apply to a 3D surface");
     return kExitUsage;
   }
-  for (const CLI::Option* bound : args.bounds)
-    if (bound->count() > 0 && bound->get_name() != "--size" && bound->get_name() != "--max-area" &&
-        bound->get_name() != "--max-triangles") {
-      print_error(bound->get_name() + " does not apply to a 3D surface: it takes --size L, --max-area A and "
-                                      "--max-triangles N");
+  for (const std::string& name : args.operation->given()) {
+    const ParameterInfo* p = find_parameter(std::string_view(name).substr(2));
+    if (p && p->bound && name != "--size" && name != "--max-area") {
+      print_error(name + " does not apply to a 3D surface: it takes --size L, --max-area A and --max-triangles N");
       return kExitUsage;
     }
+  }
   SurfaceRefineArgs surface;
   surface.input = args.input;
   surface.output = args.prefix;
-  surface.algorithm = args.algorithm;
-  if (!args.size.empty() && !parse_number(args.size, surface.max_edge)) {
-    print_error("--size: a 3D surface takes a length, not '" + args.size + "'");
+  surface.operation = op;
+  if (op.size && !size_length(op)) {
+    print_error("--size: a 3D surface takes a length, not '" + *op.size + "'");
     return kExitUsage;
   }
-  surface.max_area = args.max_area;
-  surface.max_triangles = args.max_triangles;
-  surface.ds = args.ds;
+  surface.max_edge = size_length(op).value_or(0.0);
   surface.stats = args.stats;
   surface.no_output = args.no_output;
   surface.quiet = args.quiet;
-  surface.flip_dihedral = args.flip_dihedral;
   surface.record = args.record;
   return run_refine_surface(surface);
 }
 
 int run_refine(const RefineArgs& args) {
-  if (is_surface_file(args.input)) return refine_surface(args);
-  if (args.flip_dihedral >= 0.0) {
+  const std::optional<Operation> given = args.operation->operation();
+  if (!given) return kExitUsage;
+  const Operation& op = *given;
+  if (io::is_surface(args.input)) return refine_surface(args, op);
+  if (op.flip_dihedral) {
     print_error("--flip-dihedral flips the edges of a 3D surface (.off, .obj, .ply, .stl), not of a planar mesh");
     return kExitUsage;
   }
   const Verbosity verbosity =
       args.quiet ? Verbosity::quiet : args.verbose ? Verbosity::verbose : Verbosity::normal;
 
-  const AlgorithmInfo* algorithm = find_algorithm(args.algorithm);
-  if (!algorithm) {  // CLI11 checks the name already; this guards a registry change
-    print_error("unknown algorithm '" + args.algorithm + "'; registered: " + names_of_algorithms());
-    return kExitUsage;
-  }
-  RefineOptions options = options_for(*algorithm);
-  if (!args.select.empty()) {
-    const std::optional<Selection> selection = parse_selection(args.select);
-    if (!selection) {
-      print_error("unknown selection '" + args.select + "'");
-      return kExitUsage;
+  // An ESRI ASCII grid of sizes: the cell holding a triangle's centroid gives its longest
+  // edge's bound (none outside the grid, on no-data cells and at values <= 0).
+  const std::string size_text = op.size.value_or("");
+  const double size = size_length(op).value_or(0.0);
+  std::function<double(const Point&)> grid_size;
+  if (op.size && !size_length(op)) {
+    try {
+      auto grid = std::make_shared<io::EsriGrid>(io::read_esri_grid(size_text));
+      grid_size = [grid](const Point& p) { return grid->at(p, -1.0); };
+    } catch (const InputError& e) {
+      print_error(std::string("--size: ") + e.what());
+      return kExitBadInput;
     }
-    options.selection = *selection;
   }
-  options.order = args.order == "fifo"    ? RefineOrder::fifo
-                  : args.order == "worst" ? RefineOrder::worst_first
-                                          : RefineOrder::smallest_first;
-  options.encroachment = args.encroachment.empty()    ? default_encroachment(options.selection)
-                         : args.encroachment == "lens" ? Encroachment::lens
-                                                       : Encroachment::circle;
-  options.triangulate.data_structure = args.ds == "dcel" ? DataStructure::dcel : DataStructure::tds;
-  options.triangulate.insertion = args.insertion == "cavity" ? Insertion::cavity : Insertion::flip;
-  if (args.insertion == "bisection") options.insertion = RefineInsertion::bisection;
-  options.triangulate.convex_hull = args.convex_hull;
-  options.improve = options.improve || args.improve;
-  if (args.delete_free && args.keep_free) {
-    print_error("--delete-free and --keep-free contradict each other: give one");
+  RefineOptions options;
+  try {
+    options = refine_options(op, grid_size);
+  } catch (const RunSpecError& e) {
+    print_error(e.what());
     return kExitUsage;
   }
-  if (args.delete_free) options.delete_free = FreeVertexDeletion::always;
-  if (args.keep_free) options.delete_free = FreeVertexDeletion::never;
-  if ((options.improve || args.delete_free) && options.insertion == RefineInsertion::bisection) {
-    print_error(std::string(options.improve ? "--improve" : "--delete-free") +
-                " removes vertices from a Delaunay mesh: it does not go with bisection");
-    return kExitUsage;
-  }
-
+  const AlgorithmInfo* algorithm = find_algorithm(op.algorithm);  // (refine_options found it)
   int region_status = kExitOk;
   options.region = region_of(args.region, region_status);
   if (region_status != kExitOk) return region_status;
-
   RefineCriteria& criteria = options.criteria;
-  criteria.min_angle_deg = args.min_angle;
-  criteria.max_angle_deg = args.max_angle;
-  criteria.max_aspect = args.max_aspect;
-  criteria.max_area = args.max_area;
-  criteria.max_triangles = args.max_triangles;
-  criteria.max_steiner = args.max_steiner;
-  double size = 0.0;
-  if (!args.size.empty()) {
-    if (parse_number(args.size, size)) {
-      criteria.size = [size](const Point&) { return size; };
-    } else {
-      // An ESRI ASCII grid of sizes: the cell holding a triangle's centroid gives its
-      // longest edge's bound (none outside the grid, on no-data cells and at values <= 0).
-      try {
-        auto grid = std::make_shared<io::EsriGrid>(io::read_esri_grid(args.size));
-        criteria.size = [grid](const Point& p) { return grid->at(p, -1.0); };
-      } catch (const InputError& e) {
-        print_error(std::string("--size: ") + e.what());
-        return kExitBadInput;
-      }
-    }
-  }
   // A mesh prefix (PREFIX.node + PREFIX.ele, and PREFIX.area if there) rather than an input
   // file: re-refinement, as Triangle's -r.
   bool re_refine = false, area_file = false;
-  if (!ends_with(args.input, ".poly") && !ends_with(args.input, ".node")) {
+  if (!io::is_planar_input(args.input)) {
     std::error_code ec;
     re_refine = std::filesystem::exists(args.input + ".node", ec) && std::filesystem::exists(args.input + ".ele", ec);
     area_file = re_refine && std::filesystem::exists(args.input + ".area", ec);
   }
 
-  bool any_bound = false;
-  for (const CLI::Option* o : args.bounds) any_bound = any_bound || o->count() > 0;
-  if (!any_bound) {
-    criteria.min_angle_deg = algorithm->default_min_angle_deg;
-    criteria.max_aspect = algorithm->default_max_aspect;
-  }
+  const bool any_bound = has_bound(op);
   // Without a bound on the command line, a re-refined mesh's PREFIX.area (as with Triangle's
   // -r -a) or a .poly's regional areas may still give one: the latter is known only once the
   // input is read.
@@ -288,7 +196,8 @@ int run_refine(const RefineArgs& args) {
   // Delaunay refinement is proven to end only to 20.7 degrees (Ruppert) or 28.6 (Shewchuk);
   // in practice each algorithm ends to its registry's known_to_end_deg (34 for off-centers,
   // as Triangle's documentation says of its own), judged with its own selection.
-  const AlgorithmInfo* selected = args.select.empty() ? algorithm : find_algorithm(args.select);
+  const AlgorithmInfo* selected =
+      op.selection ? find_algorithm(selection_info(*op.selection).name) : algorithm;
   const double known_to_end = (selected ? selected : algorithm)->known_to_end_deg;
   if (known_to_end > 0.0 && criteria.min_angle_deg > known_to_end && options.insertion != RefineInsertion::bisection)
     print_warning(verbosity, "--min-angle " + header_number(criteria.min_angle_deg) + " is above " +
@@ -307,7 +216,6 @@ int run_refine(const RefineArgs& args) {
     return kExitUsage;
   };
   if (no_bound && (re_refine || ends_with(args.input, ".node"))) return refuse_without_bound();
-  if (algorithm->aspect_then_angle) options.phases = aspect_then_angle_phases(criteria, *algorithm);
 
   // (A mesh prefix has no extension to strip: box.1 becomes box.2, as with Triangle.)
   const std::string prefix =
@@ -328,7 +236,7 @@ int run_refine(const RefineArgs& args) {
   if (criteria.max_angle_deg < 180.0) bound("max angle " + header_number(criteria.max_angle_deg));
   if (criteria.max_aspect > 0.0) bound("max aspect " + header_number(criteria.max_aspect));
   if (criteria.max_area > 0.0) bound("max area " + header_number(criteria.max_area));
-  if (criteria.size) bound("size " + (size > 0.0 ? header_number(size) : args.size));
+  if (criteria.size) bound("size " + (size > 0.0 ? header_number(size) : size_text));
   if (bounds_text.empty()) bounds_text = "no bounds";
   if (criteria.max_triangles) bound("at most " + std::to_string(criteria.max_triangles) + " triangles");
   if (criteria.max_steiner) bound("at most " + std::to_string(criteria.max_steiner) + " Steiner vertices");
@@ -391,20 +299,7 @@ int run_refine(const RefineArgs& args) {
     std::unique_ptr<replay::LogWriter> log;
     if (!args.record.empty()) {
       log = open_log(args.record, re_refine ? args.input + ".node" : args.input, options.algorithm,
-                     "selection=" + std::string(to_string(options.selection)) +
-                         " min_angle=" + header_number(criteria.min_angle_deg) +
-                         " max_angle=" + header_number(criteria.max_angle_deg) +
-                         " max_aspect=" + header_number(criteria.max_aspect) +
-                         " max_area=" + header_number(criteria.max_area) +
-                         " size=" + (size > 0.0 ? header_number(size) : args.size.empty() ? "0" : args.size) +
-                         " max_triangles=" + std::to_string(criteria.max_triangles) +
-                         " max_steiner=" + std::to_string(criteria.max_steiner) +
-                         " order=" + to_string(options.order) + " insertion=" + insertion_name(options) +
-                         " encroachment=" + (options.encroachment == Encroachment::lens ? "lens" : "circle") +
-                         " lens_angle=" + header_number(lens_angle_deg(criteria)) +
-                         " input_vertices=" + std::to_string(input_vertices) +
-                         " first_index=" + std::to_string(input.first_index) +
-                         " convex_hull=" + std::to_string(args.convex_hull) +
+                     replay::refine_parameters(options, size_text, input_vertices, input.first_index) +
                          (options.region ? " region=" + options.region->text() : ""),
                      options.triangulate.data_structure, options.triangulate.insertion, &input);
       options.triangulate.record = log.get();
@@ -550,85 +445,7 @@ Command add_refine_command(CLI::App& parent) {
                   "or a 3D surface (.off, .obj, .ply, .stl): --algorithm lepp-bisection with --size L\n"
                   "and/or --max-area A, edges and areas in 3D; -o names the output surface file")->required();
 
-  std::vector<std::string> algorithm_names, selection_names;
-  for (const AlgorithmInfo& a : algorithms()) algorithm_names.emplace_back(a.name);
-  for (const PartInfo& s : selections()) selection_names.emplace_back(s.name);
-  cmd->add_option("-a,--algorithm", args->algorithm, "Refinement algorithm: " + names_of_algorithms())
-      ->check(CLI::IsMember(algorithm_names))
-      ->capture_default_str();
-  cmd->add_option("--select", args->select,
-                  "Override the algorithm's choice of new vertex: circumcenter or offcenter")
-      ->check(CLI::IsMember(selection_names))
-      ->type_name("S");
-
-  args->bounds.push_back(cmd->add_option("--min-angle", args->min_angle,
-                                         "Every angle at least DEG (below 60; above about 34-36 refinement\n"
-                                         "may not end: cap it with --max-steiner or --max-triangles)")
-                             ->check(positive_number(true))
-                             ->type_name("DEG"));
-  args->bounds.push_back(cmd->add_option("--max-angle", args->max_angle, "Every angle at most DEG (above 60)")
-                             ->check(positive_number(false))
-                             ->type_name("DEG"));
-  args->bounds.push_back(cmd->add_option("--max-aspect", args->max_aspect,
-                                         "Longest edge / shortest altitude at most R (equilateral: 1.1547)")
-                             ->check(positive_number(false))
-                             ->type_name("R"));
-  args->bounds.push_back(cmd->add_option("--max-area", args->max_area, "Every triangle's area at most A")
-                             ->check(positive_number(false))
-                             ->type_name("A"));
-  args->bounds.push_back(cmd->add_option("--size", args->size,
-                                         "Every edge at most VALUE long: a positive number, or an ESRI ASCII\n"
-                                         "grid (.asc) whose cell under a triangle's centroid bounds its longest\n"
-                                         "edge (no bound outside the grid, on no-data cells, at values <= 0)")
-                             ->check(positive_number(false))  // a file name passes: read later (exit 1 if bad)
-                             ->type_name("VALUE|GRID.asc"));
-  cmd->add_option("--flip-dihedral", args->flip_dihedral,
-                  "3D surfaces: afterwards, flip every edge whose flip raises the smallest angle of its\n"
-                  "two triangles, where their normals differ by at most DEG degrees (0: coplanar pairs\n"
-                  "only, which leaves the surface and its area as they are)")
-      ->check(CLI::Range(0.0, 180.0))
-      ->type_name("DEG");
-  cmd->add_option("--max-triangles", args->max_triangles, "Stop once the mesh has N triangles")
-      ->check(positive_number(false))
-      ->type_name("N");
-  cmd->add_option("--max-steiner", args->max_steiner,
-                  "Stop after inserting N Steiner vertices (default: none; for longest-edge\n"
-                  "midpoints against an angle or aspect bound, which need not end: 100000\n"
-                  "+ 100 per input vertex)")
-      ->check(positive_number(false))
-      ->type_name("N");
-
-  cmd->add_option("--insertion", args->insertion,
-                  "Point insertion: flip (Lawson) or cavity (Bowyer-Watson), or bisection (Lepp\n"
-                  "longest-edge bisection, not Delaunay; --max-area or --size only)")
-      ->check(CLI::IsMember({"flip", "cavity", "bisection"}))
-      ->capture_default_str();
-  cmd->add_option("--order", args->order,
-                  "Which bad triangle next: smallest (shortest edge first, as Triangle; keeps\n"
-                  "the mesh graded at high bounds), worst (smallest angle first) or fifo")
-      ->check(CLI::IsMember({"smallest", "worst", "fifo"}))
-      ->capture_default_str();
-  cmd->add_option("--encroachment", args->encroachment,
-                  "Points that encroach on a segment: those in its diametral circle, or only\n"
-                  "those in its diametral lens, seeing it at 180 - 2 x the angle bound degrees or\n"
-                  "more (as Triangle; fewer splits). Default: lens, but circle for midpoint\n"
-                  "selections (lepp-midpoint, midpoint-area), which crowd segments under a lens")
-      ->check(CLI::IsMember({"circle", "lens"}));
-  cmd->add_option("--ds", args->ds, "Mesh data structure: tds (triangle-based) or dcel (half-edge)")
-      ->check(CLI::IsMember({"tds", "dcel"}))
-      ->capture_default_str();
-  cmd->add_flag("-c,--convex-hull", args->convex_hull,
-                "Mesh the whole convex hull (minus holes), not only what segments enclose");
-  cmd->add_flag("--improve", args->improve,
-                "After refining, remove every free Steiner vertex whose removal raises the\n"
-                "smallest angle round it and keeps the bounds (what --algorithm improve does)");
-  cmd->add_flag("--delete-free", args->delete_free,
-                "Before a segment is split away from corners, remove the free Steiner vertices\n"
-                "that face it from inside its diametral circle (Chew's rule, as Triangle;\n"
-                "counted in removed_vertices), even under an area or size bound. The default\n"
-                "does it only without such a bound, which would put them back");
-  cmd->add_flag("--keep-free", args->keep_free,
-                "Never remove free Steiner vertices near a split segment (the rule before 2026-12-03)");
+  args->operation = std::make_unique<OperationOptions>(*cmd, OperationKind::refine);
   add_record_option(*cmd, args->record);
   add_region_options(*cmd, args->region);
   cmd->add_option("-o,--output", args->prefix,

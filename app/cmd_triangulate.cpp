@@ -12,7 +12,9 @@
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/replay/log_writer.hpp"
 #include "output_prefix.hpp"
+#include "operation_options.hpp"
 #include "record_option.hpp"
+#include "meshstep/replay/run_header.hpp"
 
 namespace meshstep::app {
 namespace {
@@ -20,9 +22,8 @@ namespace {
 struct TriangulateArgs {
   std::string input;
   std::string prefix;
-  std::string ds = "tds";
-  std::string insertion = "flip";
-  bool convex_hull = false;
+  // --ds, --insertion and --convex-hull, from the registry's records.
+  std::unique_ptr<OperationOptions> operation;
   std::string stats;
   std::string record;
   bool no_output = false;
@@ -35,10 +36,13 @@ struct TriangulateArgs {
 int run_triangulate(const TriangulateArgs& args) {
   const Verbosity verbosity =
       args.quiet ? Verbosity::quiet : args.verbose ? Verbosity::verbose : Verbosity::normal;
+  const std::optional<Operation> given = args.operation->operation();
+  if (!given) return kExitUsage;
+  const Operation& op = *given;
   TriangulateOptions options;
-  options.data_structure = args.ds == "dcel" ? DataStructure::dcel : DataStructure::tds;
-  options.insertion = args.insertion == "cavity" ? Insertion::cavity : Insertion::flip;
-  options.convex_hull = args.convex_hull;
+  options.data_structure = op.data_structure;
+  options.insertion = op.insertion == PointInsertion::cavity ? Insertion::cavity : Insertion::flip;
+  options.convex_hull = op.convex_hull;
   options.compute_neighbors = args.neighbors && !args.no_output;
   // Only what is printed is measured: at 1e6 points the angles cost a quarter of a run,
   // and converting a mesh nothing writes or measures a tenth.
@@ -72,9 +76,7 @@ int run_triangulate(const TriangulateArgs& args) {
     std::unique_ptr<replay::LogWriter> log;
     if (!args.record.empty()) {
       log = open_log(args.record, args.input, "triangulate",
-                     "convex_hull=" + std::to_string(args.convex_hull) +
-                         " input_vertices=" + std::to_string(input_vertices) +
-                         " first_index=" + std::to_string(input.first_index),
+                     replay::triangulate_parameters(op.convex_hull, input_vertices, input.first_index),
                      options.data_structure, options.insertion, &input);
       options.record = log.get();
     }
@@ -147,16 +149,7 @@ Command add_triangulate_command(CLI::App& parent) {
   cmd->add_option("-o,--output", args->prefix,
                   "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly\n"
                   "(default: INPUT without extension plus .1, as Triangle does)");
-  cmd->add_option("--ds", args->ds, "Mesh data structure: tds (triangle-based) or dcel (half-edge)")
-      ->check(CLI::IsMember({"tds", "dcel"}))
-      ->capture_default_str();
-  cmd->add_option("--insertion", args->insertion,
-                  "Point insertion: flip (Lawson) or cavity (Bowyer-Watson)")
-      ->check(CLI::IsMember({"flip", "cavity"}))
-      ->capture_default_str();
-  cmd->add_flag("-c,--convex-hull", args->convex_hull,
-                "Keep every triangle of the convex hull (minus holes), not only those\n"
-                "enclosed by segments");
+  args->operation = std::make_unique<OperationOptions>(*cmd, OperationKind::triangulate);
   cmd->add_option("--stats", args->stats,
                   "Print statistics; 'json': the last line of standard output is one JSON object\n"
                   "(vertices, triangles, input_vertices, steiner, min_angle, max_angle,\n"

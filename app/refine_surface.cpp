@@ -12,12 +12,11 @@
 #include "meshstep/io/surface_io.hpp"
 #include "meshstep/surface/surface_flips.hpp"
 #include "meshstep/io/shortest_text.hpp"
+#include "meshstep/replay/run_header.hpp"
 #include "meshstep/surface/surface_refine.hpp"
 #include "record_option.hpp"
 
 namespace meshstep::app {
-
-bool is_surface_file(const std::string& path) { return io::surface_format_for(path).has_value(); }
 
 namespace {
 
@@ -42,12 +41,15 @@ std::string bounds_missed_words(std::size_t over_bounds, const surface::Bisectio
 
 int run_refine_surface(const SurfaceRefineArgs& args) {
   const Verbosity verbosity = args.quiet ? Verbosity::quiet : Verbosity::normal;
-  if (args.algorithm != "lepp-bisection") {
+  const Operation& op = args.operation;
+  const double max_area = op.max_area.value_or(0.0);
+  const double flip_dihedral = op.flip_dihedral.value_or(-1.0);
+  if (op.algorithm != "lepp-bisection") {
     print_error(args.input + ": a 3D surface is refined by --algorithm lepp-bisection (longest-edge bisection "
-                             "keeps it on the surface); '" + args.algorithm + "' works in the plane");
+                             "keeps it on the surface); '" + op.algorithm + "' works in the plane");
     return kExitUsage;
   }
-  if (args.max_edge <= 0.0 && args.max_area <= 0.0 && args.flip_dihedral < 0.0) {
+  if (args.max_edge <= 0.0 && max_area <= 0.0 && flip_dihedral < 0.0) {
     print_error("refining a surface needs --size L (longest edge), --max-area A or --flip-dihedral DEG");
     return kExitUsage;
   }
@@ -67,21 +69,19 @@ int run_refine_surface(const SurfaceRefineArgs& args) {
     const io::Surface in = io::read_surface(args.input);
     surface::BisectionOptions options;
     options.max_edge = args.max_edge;
-    options.max_area = args.max_area;
-    options.max_triangles = args.max_triangles;
-    options.data_structure = args.ds == "dcel" ? DataStructure::dcel : DataStructure::tds;
+    options.max_area = max_area;
+    options.max_triangles = op.max_triangles;
+    options.data_structure = op.data_structure;
     std::unique_ptr<replay::LogWriter> log;
     if (!args.record.empty()) {
       log = open_log(args.record, args.input, "lepp-bisection",
-                     "surface=1 insertion=bisection size=" + io::shortest_text(args.max_edge) +
-                         " max_area=" + io::shortest_text(args.max_area) + " input_vertices=" +
-                         std::to_string(in.vertices.size()) + " max_triangles=" + std::to_string(args.max_triangles) +
-                         " flip_dihedral=" + io::shortest_text(args.flip_dihedral),
+                     replay::surface_parameters(args.max_edge, max_area, in.vertices.size(), op.max_triangles,
+                                                flip_dihedral),
                      options.data_structure, Insertion::flip, nullptr);
       options.record = log.get();
     }
     // The bisection, then the flips, in one mesh (and one log).
-    options.flip_dihedral_deg = args.flip_dihedral;
+    options.flip_dihedral_deg = flip_dihedral;
     surface::BisectionReport report;
     Stopwatch clock;
     io::Surface out = surface::bisect_surface(in, options, &report);
@@ -91,9 +91,9 @@ int run_refine_surface(const SurfaceRefineArgs& args) {
       log->finish();
       print_progress(verbosity, record_summary(*log));
     }
-    const bool has_bounds = args.max_edge > 0.0 || args.max_area > 0.0;
+    const bool has_bounds = args.max_edge > 0.0 || max_area > 0.0;
     const std::size_t over_bounds = report.over_bounds;
-    const std::string cap_words = "stopped at --max-triangles " + std::to_string(args.max_triangles);
+    const std::string cap_words = "stopped at --max-triangles " + std::to_string(op.max_triangles);
     if (over_bounds > 0)
       print_warning(verbosity, args.input + ": " + (report.capped ? cap_words + ": " : "") +
                                    bounds_missed_words(over_bounds, report));
@@ -102,7 +102,7 @@ int run_refine_surface(const SurfaceRefineArgs& args) {
     if (verbosity != Verbosity::quiet)
       std::printf("%s: %zu triangles -> %zu (%zu bisections%s); smallest angle %.2f -> %.2f degrees; area %.17g%s%s\n",
                   args.input.c_str(), in.triangles.size(), report.triangles, report.bisections,
-                  args.flip_dihedral < 0.0 ? "" : (", " + std::to_string(report.flips) + " flips").c_str(),
+                  flip_dihedral < 0.0 ? "" : (", " + std::to_string(report.flips) + " flips").c_str(),
                   report.smallest_angle_before_deg, report.smallest_angle_after_deg, report.area_after,
                   !has_bounds ? "" : over_bounds == 0 ? "; bounds met" : ("; " + bounds_missed_words(over_bounds, report)).c_str(),
                   args.no_output ? " (not written)" : (", written to " + output).c_str());

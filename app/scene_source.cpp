@@ -1,20 +1,15 @@
 #include "scene_source.hpp"
 
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "meshstep/error.hpp"
+#include "meshstep/io/formats.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "output_prefix.hpp"
 
 namespace meshstep::app {
 
-bool is_replay_log(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  char magic[8] = {};
-  return in.read(magic, sizeof magic) && std::memcmp(magic, "MSTEPLOG", sizeof magic) == 0;
-}
+bool is_replay_log(const std::string& path) { return io::is_replay_log(path); }
 
 SceneSource open_scene_source(const std::string& path, std::vector<std::string>* warnings) {
   namespace fs = std::filesystem;
@@ -26,7 +21,7 @@ SceneSource open_scene_source(const std::string& path, std::vector<std::string>*
     if (!source.log->complete() && warnings) warnings->push_back(path + ": " + source.log->incomplete_reason());
     return source;
   }
-  if (path.ends_with(".poly") || path.ends_with(".node")) {
+  if (io::is_planar_input(path)) {
     source.kind = SourceKind::input;
     source.input = io::read_pslg(path, warnings);
     return source;

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <system_error>
 
+#include "meshstep/io/formats.hpp"
+
 namespace meshstep::viewer {
 
 namespace {
@@ -29,11 +31,6 @@ std::string current_folder() {
   std::error_code ec;
   const fs::path here = fs::current_path(ec);
   return ec ? std::string("/") : normal(here);
-}
-
-bool ends_with(const std::string& s, const char* tail) {
-  const std::string_view t(tail);
-  return s.size() >= t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
 }
 
 // <0, 0 or >0 as a comes before, with or after b, ignoring the case of ASCII letters.
@@ -158,16 +155,18 @@ bool FileDialog::list(const std::string& folder) {
       e.bytes = 0;
     } else if (!f.file) {
       continue;
-    } else if (ends_with(f.name, ".mslog")) {
+    } else if (const io::FileFormat* format = io::format_of(f.name); !format || !f.name.ends_with(format->extension)) {
+      continue;  // (Triangle's files by their own lower-case names only, as the readers take them)
+    } else if (format->kind == io::FileKind::log) {
       e.kind = FileEntry::Kind::log;
-    } else if (ends_with(f.name, ".poly")) {
+    } else if (format->kind == io::FileKind::pslg) {
       e.kind = FileEntry::Kind::input;
-    } else if (ends_with(f.name, ".node")) {
-      const std::string prefix = f.name.substr(0, f.name.size() - 5);
+    } else if (format->kind == io::FileKind::points) {
+      const std::string prefix = f.name.substr(0, f.name.size() - format->extension.size());
       if (const Found* ele = file_named(prefix + ".ele")) {
         e.kind = FileEntry::Kind::mesh;
         e.name = prefix;
-        e.path.resize(e.path.size() - 5);
+        e.path.resize(e.path.size() - format->extension.size());
         e.bytes += ele->bytes;
       } else {
         e.kind = FileEntry::Kind::input;

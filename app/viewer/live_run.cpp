@@ -20,15 +20,13 @@ namespace meshstep::viewer {
 std::vector<std::string> run_arguments(const std::string& input, const RefineOptions& refine, const std::string& log) {
   std::vector<std::string> args = {sibling_program("meshstep"), refine.any() ? "refine" : "triangulate", input,
                                    "--record", log, "--no-output", "-q"};
-  const auto pass = [&](const char* flag, const std::string& value) {
-    if (!value.empty()) args.insert(args.end(), {flag, value});
-  };
-  pass("--algorithm", refine.algorithm);
-  pass("--min-angle", refine.min_angle);
-  pass("--max-angle", refine.max_angle);
-  pass("--max-area", refine.max_area);
-  pass("--max-aspect", refine.max_aspect);
-  if (refine.any()) pass("--max-memory", refine.max_memory);
+  if (!refine.operation) return args;
+  // The operation in its printed words, less the leading "refine".
+  std::istringstream words(print_operation(*refine.operation));
+  std::string word;
+  words >> word;
+  while (words >> word) args.push_back(word);
+  if (!refine.max_memory.empty()) args.insert(args.end(), {"--max-memory", refine.max_memory});
   return args;
 }
 

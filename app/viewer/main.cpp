@@ -27,8 +27,27 @@ struct Args {
   std::string script, size = "1280x800", gl = "auto";
   bool offscreen = false, quiet = false;
   std::string frame_log, canvas = "auto";
-  viewer::RefineOptions refine;  // of an input, as `meshstep refine` takes them
+  // Of an input, as `meshstep refine` takes them (--size is the window's here).
+  std::string algorithm, min_angle, max_angle, max_area, max_aspect, max_memory;
 };
+
+// The refinement the command line asks of an input (none: triangulate it), read by the run
+// description's parser. Throws RunSpecError.
+viewer::RefineOptions live_refinement(const Args& a) {
+  viewer::RefineOptions refine;
+  refine.max_memory = a.max_memory;
+  const std::pair<const char*, const std::string*> given[] = {{"algorithm", &a.algorithm},
+                                                              {"min-angle", &a.min_angle},
+                                                              {"max-angle", &a.max_angle},
+                                                              {"max-area", &a.max_area},
+                                                              {"max-aspect", &a.max_aspect}};
+  for (const auto& [name, text] : given) {
+    if (text->empty()) continue;
+    if (!refine.operation) refine.operation.emplace();
+    set_option(*refine.operation, name, *text);
+  }
+  return refine;
+}
 
 bool parse_size(const std::string& text, int& w, int& h) {
   char x = 0;
@@ -53,12 +72,12 @@ int main(int argc, char** argv) {
   app.add_flag("--offscreen", a.offscreen, "No window: draw off screen (EGL or OSMesa), for scripts");
   app.add_option("--gl", a.gl, "Off-screen OpenGL: auto, egl or osmesa")->default_str("auto");
   app.add_option("--size", a.size, "Window size WxH")->default_str("1280x800");
-  app.add_option("--algorithm", a.refine.algorithm, "Refine an input with this algorithm (see meshstep list)");
-  app.add_option("--min-angle", a.refine.min_angle, "Refine an input: every angle at least DEG");
-  app.add_option("--max-angle", a.refine.max_angle, "Refine an input: every angle at most DEG");
-  app.add_option("--max-area", a.refine.max_area, "Refine an input: every triangle's area at most A");
-  app.add_option("--max-aspect", a.refine.max_aspect, "Refine an input: aspect ratio at most R");
-  app.add_option("--max-memory", a.refine.max_memory,
+  app.add_option("--algorithm", a.algorithm, "Refine an input with this algorithm (see meshstep list)");
+  app.add_option("--min-angle", a.min_angle, "Refine an input: every angle at least DEG");
+  app.add_option("--max-angle", a.max_angle, "Refine an input: every angle at most DEG");
+  app.add_option("--max-area", a.max_area, "Refine an input: every triangle's area at most A");
+  app.add_option("--max-aspect", a.max_aspect, "Refine an input: aspect ratio at most R");
+  app.add_option("--max-memory", a.max_memory,
                  "Refine an input: stop at this memory budget (8G, 500M; default a quarter of the\n"
                  "machine's, as meshstep refine), and show the run as far as it went");
   app.add_flag("-q,--quiet", a.quiet, "Print only errors");
@@ -133,7 +152,12 @@ int main(int argc, char** argv) {
       if (std::FILE* f = std::fopen(a.input.c_str(), "rb")) std::fclose(f);
       else throw InputError(a.input, 0, "cannot be read");
       options.live_input = a.input;  // run live: the window shows it as it goes
-      options.live_refine = a.refine;
+      try {
+        options.live_refine = live_refinement(a);
+      } catch (const RunSpecError& e) {
+        std::fprintf(stderr, "meshstep view: %s\n", e.what());
+        return kExitUsage;
+      }
       options.start_step = a.step;
       options.start_event = a.event;
     } else if (!a.input.empty()) {

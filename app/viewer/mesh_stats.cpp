@@ -24,7 +24,7 @@ Stats measure(const scene::MeshLayer& mesh, const replay::LogReader* log) {
   }
   stats.triangles = mesh.triangles.size();
   const std::uint64_t inputs =
-      log ? std::strtoull(log->parameter("input_vertices", "0").c_str(), nullptr, 10) : used.size();
+      log ? log->run().input_vertices : used.size();
   for (std::size_t v = 0; v < used.size(); ++v) {
     if (!used[v]) continue;
     ++stats.vertices;

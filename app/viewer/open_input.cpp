@@ -9,6 +9,7 @@
 
 #include "../scene_source.hpp"
 #include "meshstep/error.hpp"
+#include "meshstep/io/formats.hpp"
 #include "live_run.hpp"
 
 
@@ -45,7 +46,7 @@ std::unique_ptr<LiveRun> Opener::start_live(const std::string& input, const Refi
   return std::make_unique<LiveRun>(input, refine, temporary_log(), backend);
 }
 
-bool is_input(const std::string& path) { return path.ends_with(".poly") || path.ends_with(".node"); }
+bool is_input(const std::string& path) { return io::is_planar_input(path); }
 
 std::unique_ptr<Session> Opener::open(const std::string& path) {
   if (app::is_replay_log(path)) return Session::open_log(path);

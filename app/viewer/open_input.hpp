@@ -4,8 +4,11 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "meshstep/refine/run_spec.hpp"
 
 #include "session.hpp"
 
@@ -16,12 +19,12 @@ class LiveRun;
 // Whether the viewer opens this path as an input to triangulate (.poly, .node).
 bool is_input(const std::string& path);
 
+// What an input's live run does: triangulate it, or refine it as `meshstep refine` takes
+// the operation's words (refine/run_spec.hpp).
 struct RefineOptions {
-  std::string algorithm, min_angle, max_angle, max_area, max_aspect;
+  std::optional<Operation> operation;  // none: triangulate only
   std::string max_memory;  // refine's --max-memory (its default budget when empty); not a bound
-  bool any() const {
-    return !algorithm.empty() || !min_angle.empty() || !max_angle.empty() || !max_area.empty() || !max_aspect.empty();
-  }
+  bool any() const { return operation.has_value(); }
 };
 
 // Owns the temporary logs of recorded inputs and removes them when it goes.

@@ -29,7 +29,7 @@ std::string event_name(const replay::LogReader& log, std::uint64_t e) {
 }
 
 std::string input_vertex_name(const replay::LogReader& log, VertexId v) {
-  const std::uint64_t inputs = std::strtoull(log.parameter("input_vertices", "0").c_str(), nullptr, 10);
+  const std::uint64_t inputs = log.run().input_vertices;
   if (v >= log.vertices().size() || log.vertices()[v].input_index >= inputs) return "vertex " + std::to_string(v);
   return "input vertex " + std::to_string(log.vertices()[v].input_index + 1);
 }
@@ -96,7 +96,7 @@ std::string Viewer::selection_text() {
     }
     if (!log || v >= log->vertices().size()) return out + (log ? "" : ", of the mesh");
     const replay::VertexInfo& info = log->vertices()[v];
-    const std::uint64_t inputs = std::strtoull(log->parameter("input_vertices", "0").c_str(), nullptr, 10);
+    const std::uint64_t inputs = log->run().input_vertices;
     const std::uint64_t step = log->step_of_event(info.event);
     out += info.input_index < inputs ? ": input vertex " + std::to_string(info.input_index + 1) : ": Steiner";
     if (step < log->step_count()) out.append(", inserted by ").append(step_name(*log, step));

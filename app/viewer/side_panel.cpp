@@ -170,7 +170,7 @@ void Viewer::draw_pseudocode() {
   // The moment the canvas and the explanation show (the cursor's, unless a worker draws).
   const std::uint64_t at = session_->shown_position();
   if (at != code_position_) {
-    code_ = pseudocode_at(*log, at);
+    code_ = scene::pseudocode_at(*log, at);
     code_position_ = at;
   }
   if (!code_.code) return;

@@ -15,8 +15,7 @@ namespace {
 // The start page's refinement buttons: an algorithm to 30 degrees.
 RefineOptions thirty_degrees(const char* algorithm) {
   RefineOptions r;
-  r.algorithm = algorithm;
-  r.min_angle = "30";
+  r.operation = parse_operation("refine --algorithm " + std::string(algorithm) + " --min-angle 30");
   return r;
 }
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "pseudocode.hpp"
+#include "meshstep/scene/pseudocode.hpp"
 #include "viewer.hpp"
 
 namespace meshstep::viewer {
@@ -111,7 +111,7 @@ std::string state_json(Viewer& v) {
   for (const std::string& line : e.lines) lines += std::string(lines.size() > 1 ? ",\n    " : "\n    ") + quoted(line);
   field("explain", lines + "\n  ]");
   if (const replay::LogReader* log = s.log()) {
-    const CodeAt code = pseudocode_at(*log, s.shown_position());
+    const scene::CodeAt code = scene::pseudocode_at(*log, s.shown_position());
     field("code_title", code.code ? quoted(code.code->title) : "null");
     std::string current;
     for (int i = code.line; code.code && i >= 0 && i < code.line + std::max(1, code.lines) &&

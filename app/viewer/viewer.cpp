@@ -34,7 +34,7 @@ Viewer::Viewer(std::unique_ptr<Session> session, const CanvasOptions& canvas)
     : session_(std::move(session)), view3d_(session_->log()) {
   const replay::LogReader* log = session_->log();
   if (!log) return;
-  angle_bound_ = std::strtod(log->parameter("min_angle", "0").c_str(), nullptr);
+  angle_bound_ = log->run().min_angle.value_or(0.0);
   const bool big = log->vertices().size() > kCanvasWorkerVertices;
   if (canvas.mode == CanvasMode::worker || (canvas.mode == CanvasMode::automatic && big)) {
     worker_ = std::make_unique<CanvasWorker>(log->path(), canvas.backend);

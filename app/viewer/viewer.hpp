@@ -25,7 +25,7 @@
 #include "mesh_stats.hpp"
 #include "invariant_job.hpp"
 #include "picture_texture.hpp"
-#include "pseudocode.hpp"
+#include "meshstep/scene/pseudocode.hpp"
 #include "run_plots.hpp"
 #include "session.hpp"
 #include "settings.hpp"
@@ -180,7 +180,7 @@ class Viewer {
   double angle_bound_ = 0.0;  // the run's min_angle, 0 when it has none
   bool explain_open_ = true, layers_open_ = true, stats_open_ = true, code_open_ = true;
   // The pseudo-code line of the cursor's event, found again only when the cursor moves.
-  CodeAt code_;
+  scene::CodeAt code_;
   // The inspector: what the pointer is over, and what was clicked (a triangle by its
   // vertices, found again in each new scene; a vertex by its id, which a log keeps).
   Picked hovered_, selected_;

@@ -10,6 +10,7 @@
 
 #include "meshstep/check/quality.hpp"
 #include "meshstep/io/triangle_io.hpp"
+#include "meshstep/refine/registry.hpp"
 #include "run_cli.hpp"
 #include "temp_dir.hpp"
 #include "triangulate_support.hpp"
@@ -458,6 +459,9 @@ TEST_F(RefineCli, ListShowsEveryPart) {
   for (const char* name : {"circumcenter", "offcenter", "tds", "dcel", "flip", "cavity", "min-angle", ".poly",
                            "Algorithms", "Data structures"})
     EXPECT_TRUE(contains(r.out, name)) << name << " in " << r.out;
+  // Every format of the table (io/formats.hpp), with its kind and what meshstep does with it.
+  for (const char* name : {".tif", "grid, R:", ".mslog", "log, RW:", ".stl", "surface, RW:", ".edge", "mesh, W:"})
+    EXPECT_TRUE(contains(r.out, name)) << name << " in " << r.out;
   const CommandResult j = meshstep("list --json");
   ASSERT_EQ(j.status, 0) << j.err;
   const std::string json = last_line(j.out);
@@ -468,6 +472,34 @@ TEST_F(RefineCli, ListShowsEveryPart) {
                            "\"data_structures\":[", "\"file_formats\":[", "\"name\":\"offcenter\"",
                            "\"name\":\"dcel\"", "\"default_min_angle\":"})
     EXPECT_TRUE(contains(json, part)) << part << " in " << json;
+}
+
+// The help of every option made from the registry lists exactly the words it accepts: the
+// --select line named two selections of five (issue 26).
+TEST_F(RefineCli, HelpListsExactlyTheAcceptedWords) {
+  const CommandResult help = meshstep("refine --help");
+  ASSERT_EQ(help.status, 0) << help.err;
+  for (const char* option : {"--select", "--algorithm"}) {
+    const ParameterInfo* parameter = find_parameter(std::string(option).substr(2));
+    ASSERT_NE(parameter, nullptr);
+    const std::size_t at = help.out.find(option);
+    ASSERT_NE(at, std::string::npos) << option;
+    const std::size_t colon = help.out.find(": ", at);
+    const std::size_t end = help.out.find('\n', colon);
+    std::vector<std::string> listed;
+    std::string words = help.out.substr(colon + 2, end - colon - 2);
+    for (std::size_t from = 0; from <= words.size();) {
+      const std::size_t comma = std::min(words.find(", ", from), words.size());
+      listed.push_back(words.substr(from, comma - from));
+      from = comma + 2;
+    }
+    EXPECT_EQ(listed, choices(*parameter)) << help.out.substr(at, end - at);
+    for (const std::string& word : listed) {  // and each of them is taken
+      const std::string args = "refine " + dir_.file("none.poly") + " " + option + " " + word + " --no-output -q";
+      const CommandResult r = meshstep(args);
+      EXPECT_FALSE(contains(r.err, "not in")) << args << ": " << r.err;
+    }
+  }
 }
 
 TEST_F(RefineCli, HelpExplains) {

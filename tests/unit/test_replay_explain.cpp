@@ -108,7 +108,7 @@ void check_walk(const replay::LogReader& log, const Event& e, std::uint64_t at) 
 
 // The parameter `key` of the log's header, as a number.
 double bound(const replay::LogReader& log, const std::string& key) {
-  const std::string value = log.parameter(key);
+  const std::string value = replay::header_parameter(log.header(), key);
   EXPECT_FALSE(value.empty()) << key << " is not in the header";
   return std::stod(value);
 }

@@ -9,9 +9,9 @@
 
 #include "golden_runs.hpp"
 #include "meshstep/replay/replay.hpp"
-#include "pseudocode.hpp"
+#include "meshstep/scene/pseudocode.hpp"
 
-namespace meshstep::viewer {
+namespace meshstep::scene {
 namespace {
 
 using replay::Event;
@@ -601,4 +601,4 @@ TEST(PseudoCode, PositionsPastTheEndAreTheLastEvent) {
 }
 
 }  // namespace
-}  // namespace meshstep::viewer
+}  // namespace meshstep::scene

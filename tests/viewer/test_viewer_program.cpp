@@ -273,7 +273,7 @@ TEST(ViewerInspector, SelectsVerticesAndTriangles) {
   ASSERT_NE(log, nullptr);
   // The vertex step 47 inserted (0-based step 46; a refine step, the off-center run's 45th and 46th
   // being segment splits), and a triangle of the mesh after it.
-  const std::uint64_t inputs = std::strtoull(log->parameter("input_vertices", "0").c_str(), nullptr, 10);
+  const std::uint64_t inputs = log->run().input_vertices;
   std::uint32_t vertex = kNone;
   for (std::uint32_t v = 0; v < log->vertices().size(); ++v)
     if (log->vertices()[v].event != kNone && log->step_of_event(log->vertices()[v].event) == 46 &&

@@ -12,6 +12,7 @@
 #include "meshstep/mesh/dcel.hpp"
 #include "meshstep/mesh/tds.hpp"
 #include "meshstep/geometry/triangle_field.hpp"
+#include "meshstep/refine/registry.hpp"
 #include "lepp_bisection.hpp"
 #include "refiner.hpp"
 
@@ -159,21 +160,9 @@ TriMesh refine(Pslg input, const RefineOptions& options, RefineReport* report) {
   throw std::logic_error("unknown data structure");
 }
 
-const char* to_string(Selection s) {
-  switch (s) {
-    case Selection::circumcenter: return "circumcenter";
-    case Selection::offcenter: return "offcenter";
-    case Selection::lepp_midpoint: return "lepp-midpoint";
-    case Selection::lepp_centroid: return "lepp-centroid";
-    case Selection::longest_edge_midpoint: return "longest-edge-midpoint";
-  }
-  return "?";
-}
+// Its record's name (refine/registry.hpp), which is a literal: the pointer stays valid.
+const char* to_string(Selection s) { return selection_info(s).name.data(); }
 const char* to_string(RefineInsertion i) { return i == RefineInsertion::bisection ? "bisection" : "delaunay"; }
-Encroachment default_encroachment(Selection selection) {
-  return selection == Selection::lepp_midpoint || selection == Selection::longest_edge_midpoint ? Encroachment::circle
-                                                                                                 : Encroachment::lens;
-}
 
 double lens_angle_deg(const RefineCriteria& c) {
   // Without an angle bound nothing caps how flat a triangle by a segment may be: the circle.

@@ -2,6 +2,9 @@
 #include "meshstep/refine/registry.hpp"
 
 #include <array>
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
 #include <string>
 
 namespace meshstep {
@@ -48,12 +51,88 @@ constexpr std::array kAlgorithms = {
                   Selection::lepp_centroid, 20.7, RefineInsertion::delaunay, kDefaultMaxAspect, true},
 };
 
+// The lens where its theory holds, for points that make the triangle round them no worse
+// than the bound (circumcenters, off-centers, Lepp centroids); the circle for midpoints,
+// which sit where the lens lets them crowd a segment (Lepp midpoints at 25 degrees on
+// p2t_debug2.poly went past 3M Steiner points with the lens, 540k with the circle).
 constexpr std::array kSelections = {
-    PartInfo{"circumcenter", "the bad triangle's circumcenter"},
-    PartInfo{"offcenter", "the off-center of the bad triangle's shortest edge (Ungor), or its circumcenter if nearer"},
-    PartInfo{"lepp-midpoint", "the midpoint of the terminal edge of the bad triangle's longest-edge propagation path"},
-    PartInfo{"lepp-centroid", "the centroid of the terminal triangles of that path (on the boundary: the edge's midpoint)"},
-    PartInfo{"longest-edge-midpoint", "the midpoint of the bad triangle's longest edge"},
+    SelectionInfo{"circumcenter", "the bad triangle's circumcenter", Selection::circumcenter, Encroachment::lens,
+                  "circumcenter"},
+    SelectionInfo{"offcenter", "the off-center of the bad triangle's shortest edge (Ungor), or its circumcenter if nearer",
+                  Selection::offcenter, Encroachment::lens, "off-center"},
+    SelectionInfo{"lepp-midpoint", "the midpoint of the terminal edge of the bad triangle's longest-edge propagation path",
+                  Selection::lepp_midpoint, Encroachment::circle, "terminal-edge midpoint"},
+    SelectionInfo{"lepp-centroid", "the centroid of the terminal triangles of that path (on the boundary: the edge's midpoint)",
+                  Selection::lepp_centroid, Encroachment::lens, "terminal-triangles centroid", "terminal-edge midpoint"},
+    SelectionInfo{"longest-edge-midpoint", "the midpoint of the bad triangle's longest edge",
+                  Selection::longest_edge_midpoint, Encroachment::circle, "longest-edge midpoint"},
+};
+
+constexpr std::array<std::string_view, 3> kInsertionWords = {"flip", "cavity", "bisection"};
+constexpr std::array<std::string_view, 3> kOrderWords = {"smallest", "worst", "fifo"};
+constexpr std::array<std::string_view, 2> kEncroachmentWords = {"circle", "lens"};
+constexpr std::array<std::string_view, 2> kDataStructureWords = {"tds", "dcel"};
+
+constexpr std::array kParameters = {
+    ParameterInfo{"algorithm", "a", ParameterKind::choice, "", "Refinement algorithm", NumberRange::any, false,
+                  kDefaultAlgorithm, ChoiceSource::algorithms},
+    ParameterInfo{"select", "", ParameterKind::choice, "S", "Override the algorithm's choice of new vertex",
+                  NumberRange::any, false, "", ChoiceSource::selections},
+    ParameterInfo{"min-angle", "", ParameterKind::number, "DEG",
+                  "Every angle at least DEG (below 60; above about 34-36 refinement\n"
+                  "may not end: cap it with --max-steiner or --max-triangles)",
+                  NumberRange::non_negative, true},
+    ParameterInfo{"max-angle", "", ParameterKind::number, "DEG", "Every angle at most DEG (above 60)",
+                  NumberRange::positive, true},
+    ParameterInfo{"max-aspect", "", ParameterKind::number, "R",
+                  "Longest edge / shortest altitude at most R (equilateral: 1.1547)", NumberRange::positive, true},
+    ParameterInfo{"max-area", "", ParameterKind::number, "A", "Every triangle's area at most A", NumberRange::positive,
+                  true},
+    ParameterInfo{"size", "", ParameterKind::text, "VALUE|GRID.asc",
+                  "Every edge at most VALUE long: a positive number, or an ESRI ASCII\n"
+                  "grid (.asc) whose cell under a triangle's centroid bounds its longest\n"
+                  "edge (no bound outside the grid, on no-data cells, at values <= 0)",
+                  NumberRange::positive, true},
+    ParameterInfo{"flip-dihedral", "", ParameterKind::number, "DEG",
+                  "3D surfaces: afterwards, flip every edge whose flip raises the smallest angle of its\n"
+                  "two triangles, where their normals differ by at most DEG degrees (0: coplanar pairs\n"
+                  "only, which leaves the surface and its area as they are)",
+                  NumberRange::degrees},
+    ParameterInfo{"max-triangles", "", ParameterKind::count, "N", "Stop once the mesh has N triangles",
+                  NumberRange::positive},
+    ParameterInfo{"max-steiner", "", ParameterKind::count, "N",
+                  "Stop after inserting N Steiner vertices (default: none; for longest-edge\n"
+                  "midpoints against an angle or aspect bound, which need not end: 100000\n"
+                  "+ 100 per input vertex)",
+                  NumberRange::positive},
+    ParameterInfo{"insertion", "", ParameterKind::choice, "",
+                  "Point insertion: flip (Lawson) or cavity (Bowyer-Watson), or bisection (Lepp\n"
+                  "longest-edge bisection, not Delaunay; --max-area or --size only)",
+                  NumberRange::any, false, "flip", ChoiceSource::own, kInsertionWords},
+    ParameterInfo{"order", "", ParameterKind::choice, "",
+                  "Which bad triangle next: smallest (shortest edge first, as Triangle; keeps\n"
+                  "the mesh graded at high bounds), worst (smallest angle first) or fifo",
+                  NumberRange::any, false, "smallest", ChoiceSource::own, kOrderWords},
+    ParameterInfo{"encroachment", "", ParameterKind::choice, "",
+                  "Points that encroach on a segment: those in its diametral circle, or only\n"
+                  "those in its diametral lens, seeing it at 180 - 2 x the angle bound degrees or\n"
+                  "more (as Triangle; fewer splits). Default: lens, but circle for midpoint\n"
+                  "selections (lepp-midpoint, midpoint-area), which crowd segments under a lens",
+                  NumberRange::any, false, "", ChoiceSource::own, kEncroachmentWords},
+    ParameterInfo{"ds", "", ParameterKind::choice, "", "Mesh data structure: tds (triangle-based) or dcel (half-edge)",
+                  NumberRange::any, false, "tds", ChoiceSource::own, kDataStructureWords},
+    ParameterInfo{"convex-hull", "c", ParameterKind::flag, "",
+                  "Mesh the whole convex hull (minus holes), not only what segments enclose"},
+    ParameterInfo{"improve", "", ParameterKind::flag, "",
+                  "After refining, remove every free Steiner vertex whose removal raises the\n"
+                  "smallest angle round it and keeps the bounds (what --algorithm improve does)"},
+    ParameterInfo{"delete-free", "", ParameterKind::flag, "",
+                  "Before a segment is split away from corners, remove the free Steiner vertices\n"
+                  "that face it from inside its diametral circle (Chew's rule, as Triangle;\n"
+                  "counted in removed_vertices), even under an area or size bound. The default\n"
+                  "does it only without such a bound, which would put them back"},
+    ParameterInfo{"keep-free", "", ParameterKind::flag, "",
+                  "Never remove free Steiner vertices near a split segment (the rule before 2026-12-03)"},
 };
 
 constexpr std::array kInsertions = {
@@ -62,32 +141,12 @@ constexpr std::array kInsertions = {
     PartInfo{"bisection", "Lepp longest-edge bisection: split the terminal edge at its midpoint, not Delaunay (size criteria only)"},
 };
 
-constexpr std::array kCriteria = {
-    PartInfo{"min-angle", "--min-angle DEG: every angle at least DEG (below 60)"},
-    PartInfo{"max-angle", "--max-angle DEG: every angle at most DEG (above 60)"},
-    PartInfo{"max-aspect", "--max-aspect R: longest edge / shortest altitude at most R (equilateral: 1.1547)"},
-    PartInfo{"max-area", "--max-area A: every triangle's area at most A"},
-    PartInfo{"size", "--size VALUE|GRID.asc: every edge at most VALUE long, or the value of an ESRI ASCII grid's cell under the triangle's centroid"},
-    PartInfo{"max-triangles", "--max-triangles N: stop once the mesh has N triangles"},
-    PartInfo{"max-steiner", "--max-steiner N: stop after inserting N vertices"},
-};
 
 constexpr std::array kDataStructures = {
     PartInfo{"tds", "triangle-based: three vertices and three neighbours per face"},
     PartInfo{"dcel", "half-edge: twin, next and origin per half-edge"},
 };
 
-constexpr std::array kFileFormats = {
-    PartInfo{".node", "Triangle's vertices (input: a point set; output)"},
-    PartInfo{".poly", "Triangle's PSLG: vertices, segments, holes, regions (input; output)"},
-    PartInfo{".ele", "Triangle's triangles (output; with .node, a mesh to check or to refine again)"},
-    PartInfo{".area", "Triangle's per-triangle maximum areas (input with a mesh to refine again; output)"},
-    PartInfo{".asc", "ESRI ASCII grid (input: refine --size GRID.asc; terrain heights, NODATA kept out)"},
-    PartInfo{".png", "8/16-bit greyscale heightmap (input: terrain); also pictures (render, export)"},
-    PartInfo{".obj / .off / .ply / .stl", "3D triangle surfaces (output: terrain; PLY and STL ASCII or binary)"},
-    PartInfo{".edge / .neigh", "Triangle's edges and neighbours (output, -e / -n)"},
-    PartInfo{".mslog", "meshstep replay log (--record; read by meshstep log)"},
-};
 
 }  // namespace
 
@@ -99,18 +158,61 @@ const AlgorithmInfo* find_algorithm(std::string_view name) {
   return nullptr;
 }
 
-std::span<const PartInfo> selections() { return kSelections; }
+std::span<const SelectionInfo> selections() { return kSelections; }
+
+const SelectionInfo* find_selection(std::string_view name) {
+  for (const SelectionInfo& s : kSelections)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+const SelectionInfo& selection_info(Selection selection) {
+  for (const SelectionInfo& s : kSelections)
+    if (s.selection == selection) return s;
+  throw std::logic_error("a selection without a record in the registry");
+}
+
+Encroachment default_encroachment(Selection selection) { return selection_info(selection).encroachment; }
+
+std::span<const ParameterInfo> refine_parameters() { return kParameters; }
+
+const ParameterInfo* find_parameter(std::string_view name) {
+  for (const ParameterInfo& p : kParameters)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+std::vector<std::string> choices(const ParameterInfo& parameter) {
+  std::vector<std::string> words;
+  if (parameter.choice_source == ChoiceSource::algorithms)
+    for (const AlgorithmInfo& a : kAlgorithms) words.emplace_back(a.name);
+  else if (parameter.choice_source == ChoiceSource::selections)
+    for (const SelectionInfo& s : kSelections) words.emplace_back(s.name);
+  else
+    for (const std::string_view w : parameter.own_choices) words.emplace_back(w);
+  return words;
+}
+
+std::string range_problem(const ParameterInfo& parameter, std::string_view text) {
+  const bool numeric = parameter.kind == ParameterKind::number || parameter.kind == ParameterKind::count ||
+                       parameter.kind == ParameterKind::text;
+  if (!numeric || parameter.range == NumberRange::any) return {};
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc{} || end != text.data() + text.size()) return {};
+  const bool zero_allowed = parameter.range == NumberRange::non_negative || parameter.range == NumberRange::degrees;
+  if (std::isfinite(value) && (value > 0.0 || (zero_allowed && value == 0.0)) &&
+      (parameter.range != NumberRange::degrees || value <= 180.0))
+    return {};
+  if (parameter.range == NumberRange::degrees) return "must be between 0 and 180 degrees, not " + std::string(text);
+  return std::string(zero_allowed ? "must be zero or a positive number" : "must be a positive number") + ", not " +
+         std::string(text);
+}
 std::span<const PartInfo> insertions() { return kInsertions; }
-std::span<const PartInfo> criteria() { return kCriteria; }
 std::span<const PartInfo> data_structures() { return kDataStructures; }
-std::span<const PartInfo> file_formats() { return kFileFormats; }
 
 std::optional<Selection> parse_selection(std::string_view name) {
-  if (name == "circumcenter") return Selection::circumcenter;
-  if (name == "offcenter") return Selection::offcenter;
-  if (name == "lepp-midpoint") return Selection::lepp_midpoint;
-  if (name == "lepp-centroid") return Selection::lepp_centroid;
-  if (name == "longest-edge-midpoint") return Selection::longest_edge_midpoint;
+  if (const SelectionInfo* s = find_selection(name)) return s->selection;
   return std::nullopt;
 }
 

@@ -50,7 +50,7 @@ LogReader::LogReader(const std::string& path, std::uint64_t keep_writes_bytes)
 // takes a byte of the log at the very least), so a hand-made header cannot make the reader
 // allocate more than a small multiple of the file.
 void LogReader::read_input_fields() {
-  const std::uint64_t inputs = std::strtoull(parameter("input_vertices", "0").c_str(), nullptr, 10);
+  const std::uint64_t inputs = run_.input_vertices;
   const std::size_t limit = static_cast<std::size_t>(std::min<std::uint64_t>(inputs, file_.size()));
   for (const auto& [key, value] : input_fields_) {
     if (value.empty()) continue;
@@ -114,15 +114,7 @@ void LogReader::read_header() {
     p += value_length;
   }
   blocks_start_ = 16 + std::size_t{length} + 8;
-}
-
-std::string LogReader::parameter(const std::string& key, const std::string& fallback) const {
-  std::istringstream words(header_.parameters);
-  std::string word;
-  while (words >> word)
-    if (word.size() > key.size() && word.compare(0, key.size(), key) == 0 && word[key.size()] == '=')
-      return word.substr(key.size() + 1);
-  return fallback;
+  run_ = read_run_header(header_, path_);
 }
 
 // One block of the file, as its header says; and what decoding an events block found.
@@ -224,7 +216,7 @@ void LogReader::scan_blocks() {
   std::uint64_t declared = 0;
   for (const BlockSlot& slot : slots)
     if (slot.header.kind == format::BlockKind::events) declared += std::min<std::uint64_t>(slot.header.count, UINT32_MAX);
-  const std::uint64_t inputs = std::strtoull(parameter("input_vertices", "0").c_str(), nullptr, 10);
+  const std::uint64_t inputs = run_.input_vertices;
   vertex_bound_ = std::min<std::uint64_t>(kInfiniteVertex, std::min<std::uint64_t>(inputs, UINT32_MAX) + declared + 3);
 
   // Then the blocks in batches: decoded two at a time (this thread and a helper), indexed

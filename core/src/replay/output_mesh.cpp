@@ -81,7 +81,7 @@ TriMesh Replay::output_mesh() const {
   // The vertices: the input's markers and attributes; Steiner vertices take the marker of
   // the first segment that ends at them, and attributes of 0.
   const std::size_t n = out.points.size();
-  const std::uint64_t inputs = numeric_parameter("input_vertices", 0);
+  const std::uint64_t inputs = log_->run().input_vertices;
   if (!header.vertex_markers.empty()) set_vertex_markers(out, header.vertex_markers, inputs);
   out.attributes_per_vertex = header.attributes_per_vertex;
   out.vertex_attributes = header.vertex_attributes;

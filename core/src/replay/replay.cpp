@@ -140,16 +140,6 @@ std::optional<Event> Replay::last_event() const {
   return log_->event(position_ - 1);
 }
 
-std::uint64_t Replay::numeric_parameter(const std::string& key, std::uint64_t fallback) const {
-  const std::string text = log_->parameter(key);
-  if (text.empty()) return fallback;
-  std::uint64_t value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc{} || end != text.data() + text.size())
-    throw InputError(log_->path(), 0, "the header's parameter " + key + "=" + text + " is not a number");
-  return value;
-}
-
 TriMesh Replay::mesh() const { return build_mesh(nullptr, nullptr); }
 
 TriMesh Replay::build_mesh(std::vector<std::uint32_t>* output_index, std::vector<std::uint8_t>* constrained_bits) const {
@@ -172,8 +162,8 @@ TriMesh Replay::build_mesh(std::vector<std::uint32_t>* output_index, std::vector
   std::vector<std::uint32_t> index(vertices.size(), kNoIndex);
   TriMesh out;
   // The header's parameters say how many vertices the input had and how it numbers them.
-  const std::uint64_t input_count = numeric_parameter("input_vertices", 0);
-  out.first_index = static_cast<int>(numeric_parameter("first_index", 0));
+  const std::uint64_t input_count = log_->run().input_vertices;
+  out.first_index = log_->run().first_index;
   for (const VertexId v : present) {
     index[v] = static_cast<std::uint32_t>(out.points.size());
     out.points.push_back(vertices[v].point);

@@ -49,7 +49,7 @@ Scene start_scene(const SceneOptions& options) {
 double quality_bound(const SceneOptions& options, const replay::LogReader* log) {
   if (options.min_angle_bound > 0.0) return options.min_angle_bound;
   if (log) {
-    const double run = std::strtod(log->parameter("min_angle", "0").c_str(), nullptr);
+    const double run = log->run().min_angle.value_or(0.0);
     if (run > 0.0 && run < 60.0) return run;
   }
   return 30.0;

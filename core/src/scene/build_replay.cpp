@@ -41,7 +41,7 @@ MomentMesh read_mesh(const replay::Replay& cursor, MeshLayer& layer) {
   MomentMesh out;
 
   layer.points.resize(vertices.size());
-  const std::uint64_t input_count = std::strtoull(log.parameter("input_vertices", "0").c_str(), nullptr, 10);
+  const std::uint64_t input_count = log.run().input_vertices;
   for (VertexId v = 0; v < vertices.size(); ++v) {
     const replay::VertexInfo& info = vertices[v];
     layer.points[v] = info.point;

@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "meshstep/refine/refine.hpp"
+#include "meshstep/refine/registry.hpp"
 
 namespace meshstep::scene::detail {
 
@@ -205,9 +206,8 @@ StepStory read_step(const replay::Replay& cursor) {
 }
 
 double encroachment_angle(const replay::LogReader& log) {
-  if (log.parameter("encroachment") != "lens") return 90.0;
-  const std::string angle = log.parameter("lens_angle");
-  return angle.empty() ? 120.0 : std::strtod(angle.c_str(), nullptr);
+  if (log.run().encroachment != Encroachment::lens) return 90.0;
+  return log.run().lens_angle.value_or(120.0);
 }
 
 std::string chosen_point_name(const StepStory::Selected& selected, const std::optional<StepStory::Lepp>& lepp) {
@@ -222,20 +222,18 @@ std::string chosen_point_name(const StepStory::Selected& selected, const std::op
       default: return "sample";
     }
   }
-  const auto strategy = static_cast<Selection>(selected.strategy);
   // Every strategy weighs its point against the circumcenter and records the circumcenter
   // as the alternative, unless it chose the circumcenter itself; the off-center selection
   // then records the off-center it did not take.
   if (selected.chose_circumcenter) return "circumcenter";
-  switch (strategy) {
-    case Selection::offcenter: return "off-center";
-    case Selection::lepp_midpoint: return "terminal-edge midpoint";
-    case Selection::lepp_centroid:
-      // On the boundary the terminal edge has one triangle: its midpoint is taken.
-      return lepp && lepp->terminal_triangles == 1 ? "terminal-edge midpoint" : "terminal-triangles centroid";
-    case Selection::longest_edge_midpoint: return "longest-edge midpoint";
-    default: return "circumcenter";
-  }
+  const SelectionInfo* info = nullptr;
+  for (const SelectionInfo& s : selections())
+    if (static_cast<std::uint8_t>(s.selection) == selected.strategy) info = &s;
+  if (!info) return "circumcenter";  // (a strategy no selection has: a damaged log)
+  // On the boundary the terminal edge has one triangle: a Lepp centroid takes its midpoint.
+  if (!info->boundary_point_name.empty() && lepp && lepp->terminal_triangles == 1)
+    return std::string(info->boundary_point_name);
+  return std::string(info->point_name);
 }
 
 // "22.4° < 30°": the measured value against the run's bound (from the log's parameters;
@@ -243,17 +241,16 @@ std::string chosen_point_name(const StepStory::Selected& selected, const std::op
 std::string criterion_text(const StepStory::Criterion& f, const replay::LogReader& log) {
   using replay::Criterion;
   const auto criterion = static_cast<Criterion>(f.criterion);
-  const char* key = criterion == Criterion::min_angle    ? "min_angle"
-                    : criterion == Criterion::max_angle  ? "max_angle"
-                    : criterion == Criterion::max_aspect ? "max_aspect"
-                    : criterion == Criterion::max_area   ? "max_area"
-                    : criterion == Criterion::size       ? "size"
-                    : criterion == Criterion::vertical_error ? "max_error"
-                                                         : nullptr;
-  const std::string bound_text = key ? log.parameter(key) : "";
-  char* end = nullptr;
-  const double bound = std::strtod(bound_text.c_str(), &end);
-  const bool numeric = !bound_text.empty() && end && *end == '\0' && bound > 0.0;
+  const replay::RunHeader& run = log.run();
+  const std::optional<double> recorded = criterion == Criterion::min_angle        ? run.min_angle
+                                         : criterion == Criterion::max_angle      ? run.max_angle
+                                         : criterion == Criterion::max_aspect     ? run.max_aspect
+                                         : criterion == Criterion::max_area       ? run.max_area
+                                         : criterion == Criterion::size           ? run.size
+                                         : criterion == Criterion::vertical_error ? run.max_error
+                                                                                  : std::nullopt;
+  const double bound = recorded.value_or(0.0);
+  const bool numeric = bound > 0.0;
   const auto number = [](double v) { return printed("%.3g", v); };
   // One decimal, or as many more as it takes not to print 29.96 as "30.0° < 30°".
   const auto degrees = [&](double v) {

@@ -45,10 +45,7 @@ enum class RefineOrder { smallest_first, worst_first, fifo };
 // the angle bound (Shewchuk; 120 degrees at a 30-degree bound): fewer splits.
 enum class Encroachment { circle, lens };
 
-// The lens where its theory holds, for points that make the triangle round them no worse
-// than the bound (circumcenters, off-centers, Lepp centroids); the circle for midpoints,
-// which sit where the lens lets them crowd a segment (Lepp midpoints at 25 degrees on
-// p2t_debug2.poly went past 3M Steiner points with the lens, 540k with the circle).
+// The selection's own rule, from its record (refine/registry.hpp, which says why).
 Encroachment default_encroachment(Selection selection);
 
 // When a subsegment is split away from corners, the free Steiner vertices (not on a

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -44,12 +45,69 @@ struct PartInfo {
   std::string_view name;
   std::string_view description;
 };
-std::span<const PartInfo> selections();
-std::span<const PartInfo> insertions();
-std::span<const PartInfo> criteria();
-std::span<const PartInfo> data_structures();
-std::span<const PartInfo> file_formats();
 
+// A point selection: where a bad triangle asks for its new vertex. Adding one means its
+// function in the refiner (refine.cpp, the Selection enum) and its record here; every
+// parser, the help and `meshstep list` read the records.
+struct SelectionInfo {
+  std::string_view name;  // as the command line and the log header spell it
+  std::string_view description;
+  Selection selection;
+  Encroachment encroachment;  // its default encroachment rule (default_encroachment)
+  // What the step story calls its point ("off-center"), and, where the terminal edge of a
+  // Lepp lies on the boundary (one terminal triangle), what it takes there instead.
+  std::string_view point_name;
+  std::string_view boundary_point_name = {};
+};
+std::span<const SelectionInfo> selections();
+const SelectionInfo* find_selection(std::string_view name);
+const SelectionInfo& selection_info(Selection selection);
+
+// A refinement option: the command line's --NAME and a run description's word alike
+// (refine/run_spec.hpp), with what it accepts.
+enum class ParameterKind {
+  number,  // a real number in `range`
+  count,   // a whole number, 0 or more
+  flag,    // present or not
+  choice,  // one of choices()
+  text,    // free text checked by its user (--size: a number or a grid file)
+};
+enum class NumberRange {
+  any,
+  positive,      // > 0
+  non_negative,  // >= 0
+  degrees,       // 0 to 180
+};
+// Where a choice parameter's words come from: its own list, or a table of the registry.
+enum class ChoiceSource { own, algorithms, selections };
+
+struct ParameterInfo {
+  std::string_view name;        // without the dashes: "min-angle"
+  std::string_view short_name;  // a one-letter alias on the command line, or empty
+  ParameterKind kind;
+  std::string_view type_name;  // "DEG", shown in the help
+  std::string_view help;       // the command line's help ("" for a choice: made from its words)
+  NumberRange range = NumberRange::any;
+  // A stopping bound: a run given none gets its algorithm's defaults.
+  bool bound = false;
+  std::string_view default_text = {};  // shown as the default in the help ("" none)
+  ChoiceSource choice_source = ChoiceSource::own;
+  std::span<const std::string_view> own_choices = {};
+};
+
+// The refinement's parameters, in the order the help and the printed description give them.
+std::span<const ParameterInfo> refine_parameters();
+const ParameterInfo* find_parameter(std::string_view name);
+// The words a choice parameter accepts, in the table's order.
+std::vector<std::string> choices(const ParameterInfo& parameter);
+// What is wrong with `text` as the value of `parameter` ("must be a positive number, not
+// -3"), or empty when it is acceptable. Text that is no number passes a number's range
+// check (the reader of the number refuses it in its own words).
+std::string range_problem(const ParameterInfo& parameter, std::string_view text);
+std::span<const PartInfo> insertions();
+std::span<const PartInfo> data_structures();
+
+// The selection of that name (selections()), or nothing.
 std::optional<Selection> parse_selection(std::string_view name);
 
 // Options that run `algorithm` with its own parts (criteria and triangulation options are

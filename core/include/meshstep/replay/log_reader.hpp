@@ -20,6 +20,7 @@
 #include "meshstep/replay/decoded_events.hpp"
 #include "meshstep/replay/event.hpp"
 #include "meshstep/replay/log_writer.hpp"
+#include "meshstep/replay/run_header.hpp"
 
 namespace meshstep::replay {
 
@@ -62,8 +63,8 @@ class LogReader {
   const std::string& path() const { return path_; }
   const LogHeader& header() const { return header_; }
   std::uint32_t format_version() const { return format_version_; }
-  // A value from the header's "key=value" parameters, or `fallback`.
-  std::string parameter(const std::string& key, const std::string& fallback = "") const;
+  // What the header says of the run, typed (the one reader of its parameters).
+  const RunHeader& run() const { return run_; }
   std::uint64_t file_size() const { return file_.size(); }
 
   bool complete() const { return complete_; }
@@ -138,6 +139,7 @@ class LogReader {
   std::string path_;
   io::MappedFile file_;
   LogHeader header_;
+  RunHeader run_;
   // The raw text of the fields that describe the input, parsed by read_input_fields().
   std::map<std::string, std::string> input_fields_ = {
       {"regions", {}}, {"holes", {}}, {"vertex_markers", {}}, {"vertex_attributes", {}}, {"segment_markers", {}}};

@@ -75,7 +75,6 @@ class Replay {
   void forward_to(std::uint64_t target);
   void backward_to(std::uint64_t target);
   void write(const SlotWrite& w, bool forward, std::uint64_t event);
-  std::uint64_t numeric_parameter(const std::string& key, std::uint64_t fallback) const;
 
   const LogReader* log_;
   std::uint64_t position_ = 0;

@@ -1,6 +1,6 @@
-// The pseudo-code panel's model: the published algorithms a recorded run follows, as short
-// programs readable on a slide, and which line of which program the event under the cursor
-// carries out. No GL, no ImGui: the viewer draws it, the tests read it.
+// The pseudo-code of the published algorithms a recorded run follows, as short programs
+// readable on a slide, and which line of which program the event under the cursor carries
+// out. No GL, no ImGui: the viewer's panel draws it, the tests read it.
 //
 // Which program: by the phase of the event (inserting vertices: the insertion program, Lawson's
 // flips or Bowyer-Watson's cavities as the log's header says; recovering segments and carving:
@@ -20,7 +20,7 @@
 #include "meshstep/replay/log_reader.hpp"
 #include "meshstep/replay/replay.hpp"
 
-namespace meshstep::viewer {
+namespace meshstep::scene {
 
 struct PseudoCode {
   std::string title;               // "Off-center refinement (Üngör 2004/2009)"
@@ -70,4 +70,4 @@ CodeAt pseudocode_at(const replay::LogReader& log, std::uint64_t position);
 // At the cursor's last event.
 CodeAt pseudocode_at(const replay::LogReader& log, const replay::Replay& cursor);
 
-}  // namespace meshstep::viewer
+}  // namespace meshstep::scene

@@ -1,4 +1,4 @@
-#include "pseudocode.hpp"
+#include "meshstep/scene/pseudocode.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,9 @@
 #include <optional>
 #include <utility>
 
-namespace meshstep::viewer {
+#include "meshstep/refine/registry.hpp"
+
+namespace meshstep::scene {
 
 namespace {
 
@@ -382,28 +384,25 @@ Insertion triangulation_insertion(const replay::LogReader& log) {
 }
 
 Insertion refinement_insertion(const replay::LogReader& log) {
-  const std::string insertion = log.parameter("insertion", log.header().insertion);
-  return insertion == "cavity" ? Insertion::cavity : Insertion::flips;
+  return log.run().insertion == "cavity" ? Insertion::cavity : Insertion::flips;
 }
 
-// The refinement program: by the point selection the parameters name (an algorithm's own or
-// --select's), the bisection insertion first; by the algorithm's name when the parameters
-// do not say.
+// The refinement program: by the point selection the header names (an algorithm's own or
+// --select's), the bisection insertion first; by the algorithm's registered selection when
+// the header does not say.
 Program refinement_program(const replay::LogReader& log) {
-  const std::string& algorithm = log.header().algorithm;
-  if (log.parameter("insertion") == "bisection" || algorithm == "lepp-bisection") return Program::lepp_bisection;
-  std::string selection = log.parameter("selection");
-  if (selection.empty()) {
-    if (algorithm == "offcenter") selection = "offcenter";
-    else if (algorithm == "lepp-midpoint") selection = "lepp-midpoint";
-    else if (algorithm == "lepp-centroid" || algorithm == "lepp-aspect" || algorithm == "combined")
-      selection = "lepp-centroid";
-    else if (algorithm == "midpoint-area") selection = "longest-edge-midpoint";
+  const AlgorithmInfo* algorithm = find_algorithm(log.header().algorithm);
+  if (log.run().insertion == "bisection" || (algorithm && algorithm->insertion == RefineInsertion::bisection))
+    return Program::lepp_bisection;
+  const std::optional<Selection> selection =
+      log.run().selection ? log.run().selection : algorithm ? std::optional(algorithm->selection) : std::nullopt;
+  switch (selection.value_or(Selection::circumcenter)) {
+    case Selection::offcenter: return Program::offcenter;
+    case Selection::lepp_midpoint: return Program::lepp_midpoint;
+    case Selection::lepp_centroid: return Program::lepp_centroid;
+    case Selection::longest_edge_midpoint: return Program::longest_edge_midpoint;
+    case Selection::circumcenter: break;
   }
-  if (selection == "offcenter") return Program::offcenter;
-  if (selection == "lepp-midpoint") return Program::lepp_midpoint;
-  if (selection == "lepp-centroid") return Program::lepp_centroid;
-  if (selection == "longest-edge-midpoint") return Program::longest_edge_midpoint;
   return Program::circumcenter;
 }
 
@@ -711,4 +710,4 @@ CodeAt pseudocode_at(const replay::LogReader& log, const replay::Replay& cursor)
   return pseudocode_at(log, cursor.position());
 }
 
-}  // namespace meshstep::viewer
+}  // namespace meshstep::scene

@@ -1,0 +1,82 @@
+// A command's refinement options from the registry's records (operation_options.hpp).
+#include "operation_options.hpp"
+
+#include "console.hpp"
+
+namespace meshstep::app {
+namespace {
+
+// The run description's own check of one value, as a CLI11 validator: CLI11 then names the
+// option ("--max-area: must be a positive number, not -1").
+CLI::Validator value_check(OperationKind kind, const ParameterInfo& parameter) {
+  return CLI::Validator(
+      [kind, &parameter](std::string& text) -> std::string {
+        Operation scratch;
+        scratch.kind = kind;
+        try {
+          set_option(scratch, parameter.name, text);
+        } catch (const RunSpecError& e) {
+          const std::string what = e.what();
+          const std::string prefix = "--" + std::string(parameter.name) + ": ";
+          return what.starts_with(prefix) ? what.substr(prefix.size()) : what;
+        }
+        return {};
+      },
+      "");
+}
+
+}  // namespace
+
+std::string option_help(OperationKind kind, const ParameterInfo& parameter) {
+  std::string help(help_for(kind, parameter));
+  if (parameter.kind != ParameterKind::choice || parameter.choice_source == ChoiceSource::own) return help;
+  std::string words;
+  for (const std::string& w : accepted_words(kind, parameter)) words += (words.empty() ? "" : ", ") + w;
+  return help + ": " + words;
+}
+
+OperationOptions::OperationOptions(CLI::App& cmd, OperationKind kind) : kind_(kind) {
+  for (const ParameterInfo& p : refine_parameters()) {
+    if (!takes(kind, p)) continue;
+    auto entry = std::make_unique<Entry>();
+    entry->parameter = &p;
+    const std::string names =
+        (p.short_name.empty() ? "" : "-" + std::string(p.short_name) + ",") + "--" + std::string(p.name);
+    if (p.kind == ParameterKind::flag) {
+      entry->option = cmd.add_flag(names, entry->flag, option_help(kind, p));
+    } else {
+      entry->text = std::string(p.default_text);
+      entry->option = cmd.add_option(names, entry->text, option_help(kind, p));
+      if (p.kind == ParameterKind::choice)
+        entry->option->check(CLI::IsMember(accepted_words(kind, p)));
+      else
+        entry->option->check(value_check(kind, p));
+      if (!p.type_name.empty()) entry->option->type_name(std::string(p.type_name));
+      if (!p.default_text.empty()) entry->option->capture_default_str();
+    }
+    entries_.push_back(std::move(entry));
+  }
+}
+
+std::optional<Operation> OperationOptions::operation() const {
+  Operation op;
+  op.kind = kind_;
+  try {
+    for (const auto& e : entries_)
+      if (e->option->count() > 0)
+        set_option(op, e->parameter->name, e->parameter->kind == ParameterKind::flag ? "" : e->text);
+  } catch (const RunSpecError& e) {
+    print_error(e.what());
+    return std::nullopt;
+  }
+  return op;
+}
+
+std::vector<std::string> OperationOptions::given() const {
+  std::vector<std::string> names;
+  for (const auto& e : entries_)
+    if (e->option->count() > 0) names.push_back("--" + std::string(e->parameter->name));
+  return names;
+}
+
+}  // namespace meshstep::app

@@ -1,0 +1,48 @@
+// What a log's header says of its run, typed: read once from the header's "key=value"
+// parameters (LogReader::run()), so that no reader of a log parses header text itself.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "meshstep/refine/refine.hpp"
+#include "meshstep/replay/log_writer.hpp"
+
+namespace meshstep::replay {
+
+struct RunHeader {
+  // The input's vertices come first among the run's vertices, numbered from first_index in
+  // its files; the rest are Steiner vertices.
+  std::uint64_t input_vertices = 0;
+  int first_index = 0;
+  // A refinement's selection, insertion ("flip", "cavity" or "bisection": the parameters'
+  // own, else the triangulation's) and encroachment rule, as the run recorded them.
+  std::optional<Selection> selection;
+  std::string insertion;
+  std::optional<Encroachment> encroachment;
+  std::optional<double> lens_angle;  // degrees, under the lens rule
+  // The bounds as numbers (none: not set, written as 0, or not a number: a --size grid's name).
+  std::optional<double> min_angle, max_angle, max_aspect, max_area, size, max_error;
+};
+
+// Reads the header's run description. Throws InputError ("PATH: the header's parameter
+// input_vertices=x is not a number") for a vertex count or first index that is no number.
+RunHeader read_run_header(const LogHeader& header, const std::string& path);
+
+// The header parameters each kind of run records, which read_run_header reads back.
+// A triangulation: the convex hull flag and the input's numbering.
+std::string triangulate_parameters(bool convex_hull, std::uint64_t input_vertices, int first_index);
+// A planar refinement: its selection, bounds, caps, order, insertion and encroachment;
+// `size_text` is --size as given (a number or a grid's name; empty: none).
+std::string refine_parameters(const RefineOptions& options, const std::string& size_text,
+                              std::uint64_t input_vertices, int first_index);
+// A 3D surface's bisection (and flips: flip_dihedral < 0 for none).
+std::string surface_parameters(double max_edge, double max_area, std::uint64_t input_vertices,
+                               std::size_t max_triangles, double flip_dihedral);
+
+// A value from the header's "key=value" parameters, or `fallback` (what read_run_header
+// reads; for showing the header's words as they are).
+std::string header_parameter(const LogHeader& header, const std::string& key, const std::string& fallback = "");
+
+}  // namespace meshstep::replay

@@ -1,0 +1,106 @@
+// The log header's run description, read in one place (run_header.hpp).
+#include "meshstep/replay/run_header.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "meshstep/error.hpp"
+#include "meshstep/io/shortest_text.hpp"
+#include "meshstep/refine/registry.hpp"
+
+namespace meshstep::replay {
+namespace {
+
+template <class T>
+std::optional<T> number(const std::string& text) {
+  T value{};
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc{} || end != text.data() + text.size()) return std::nullopt;
+  if constexpr (std::is_floating_point_v<T>)
+    if (!std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+// "30", "0.125", "1e-06": short and exact enough for the header's bounds (as they always were).
+std::string bound_text(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.9g", v);
+  return buffer;
+}
+
+}  // namespace
+
+std::string triangulate_parameters(bool convex_hull, std::uint64_t input_vertices, int first_index) {
+  return "convex_hull=" + std::to_string(convex_hull) + " input_vertices=" + std::to_string(input_vertices) +
+         " first_index=" + std::to_string(first_index);
+}
+
+std::string refine_parameters(const RefineOptions& o, const std::string& size_text, std::uint64_t input_vertices,
+                              int first_index) {
+  const RefineCriteria& c = o.criteria;
+  double size = 0.0;
+  const bool numeric_size = number<double>(size_text).has_value();
+  if (numeric_size) size = *number<double>(size_text);
+  return "selection=" + std::string(to_string(o.selection)) + " min_angle=" + bound_text(c.min_angle_deg) +
+         " max_angle=" + bound_text(c.max_angle_deg) + " max_aspect=" + bound_text(c.max_aspect) +
+         " max_area=" + bound_text(c.max_area) +
+         " size=" + (numeric_size && size > 0.0 ? bound_text(size) : size_text.empty() ? "0" : size_text) +
+         " max_triangles=" + std::to_string(c.max_triangles) + " max_steiner=" + std::to_string(c.max_steiner) +
+         " order=" + to_string(o.order) +
+         " insertion=" + (o.insertion == RefineInsertion::bisection ? "bisection" : to_string(o.triangulate.insertion)) +
+         " encroachment=" + (o.encroachment == Encroachment::lens ? "lens" : "circle") +
+         " lens_angle=" + bound_text(lens_angle_deg(c)) + " input_vertices=" + std::to_string(input_vertices) +
+         " first_index=" + std::to_string(first_index) + " convex_hull=" + std::to_string(o.triangulate.convex_hull);
+}
+
+std::string surface_parameters(double max_edge, double max_area, std::uint64_t input_vertices,
+                               std::size_t max_triangles, double flip_dihedral) {
+  return "surface=1 insertion=bisection size=" + io::shortest_text(max_edge) + " max_area=" +
+         io::shortest_text(max_area) + " input_vertices=" + std::to_string(input_vertices) +
+         " max_triangles=" + std::to_string(max_triangles) + " flip_dihedral=" + io::shortest_text(flip_dihedral);
+}
+
+std::string header_parameter(const LogHeader& header, const std::string& key, const std::string& fallback) {
+  std::istringstream words(header.parameters);
+  std::string word;
+  while (words >> word)
+    if (word.size() > key.size() && word.compare(0, key.size(), key) == 0 && word[key.size()] == '=')
+      return word.substr(key.size() + 1);
+  return fallback;
+}
+
+RunHeader read_run_header(const LogHeader& header, const std::string& path) {
+  RunHeader run;
+  const auto text = [&](const char* key) { return header_parameter(header, key); };
+  // A count the reader sizes things by: refused when it is no number, not read as 0.
+  const auto count = [&]<class T>(const char* key, T& out) {
+    const std::string t = text(key);
+    if (t.empty()) return;
+    const std::optional<T> v = number<T>(t);
+    if (!v) throw InputError(path, 0, "the header's parameter " + std::string(key) + "=" + t + " is not a number");
+    out = *v;
+  };
+  count("input_vertices", run.input_vertices);
+  count("first_index", run.first_index);
+  if (const std::string s = text("selection"); !s.empty()) run.selection = parse_selection(s);
+  run.insertion = header_parameter(header, "insertion", header.insertion);
+  if (const std::string e = text("encroachment"); e == "lens" || e == "circle")
+    run.encroachment = e == "lens" ? Encroachment::lens : Encroachment::circle;
+  // The header writes 0 for a bound not set.
+  const auto bound = [&](const char* key) -> std::optional<double> {
+    const std::optional<double> v = number<double>(text(key));
+    return v && *v > 0.0 ? v : std::nullopt;
+  };
+  run.lens_angle = bound("lens_angle");
+  run.min_angle = bound("min_angle");
+  run.max_angle = bound("max_angle");
+  run.max_aspect = bound("max_aspect");
+  run.max_area = bound("max_area");
+  run.size = bound("size");
+  run.max_error = bound("max_error");
+  return run;
+}
+
+}  // namespace meshstep::replay
