@@ -220,11 +220,11 @@ int run_refine(const RefineArgs& args) {
   // (A mesh prefix has no extension to strip: box.1 becomes box.2, as with Triangle.)
   const std::string prefix =
       args.prefix.empty() ? default_output_prefix(re_refine ? args.input + ".node" : args.input) : args.prefix;
-  double size_number = 0.0;
   FileRoles files;
   if (re_refine) files.reads_mesh(args.input);
   else files.reads_pslg(args.input);
-  if (!args.size.empty() && !parse_number(args.size, size_number)) files.reads(args.size);
+  if (op.size && !size_length(op)) files.reads(*op.size);
+  if (!args.region.poly.empty()) files.reads(args.region.poly);
   files.writes_mesh(args.prefix.empty() ? "" : "-o", args.no_output ? "" : prefix).writes_log("--record", args.record);
   if (const int refused = refuse_overwrites(files)) return refused;
   std::string bounds_text;
