@@ -21,6 +21,7 @@
 #include "painter.hpp"
 #include "png_frame_writer.hpp"
 #include "scene_source.hpp"
+#include "staged_frames.hpp"
 #include "video_pipe.hpp"
 
 namespace meshstep::app {
@@ -138,14 +139,14 @@ int run_export(const ExportArgs& args) {
         draw.view ? draw.camera(first.bounds) : scene::fit_scene(first, draw.width, draw.height);
 
     Painter painter(draw.gl);
+    // Declared before the writer: on an error, the writer's threads stop before the staged
+    // frames are removed. No frame is in the folder until every one is written.
+    std::optional<StagedFrames> staged;
     std::optional<PngFrameWriter> frames;
     std::optional<VideoPipe> video;
     if (!args.frames.empty()) {
-      std::error_code ec;
-      std::filesystem::create_directories(args.frames, ec);
-      if (ec || !std::filesystem::is_directory(args.frames))
-        throw InputError(args.frames, 0, "cannot make the frames folder (" + ec.message() + ")");
-      frames.emplace(args.frames);
+      staged.emplace(args.frames);
+      frames.emplace(staged->staging());
     } else {
       video.emplace(args.video, draw.width, draw.height, args.fps);
     }
@@ -164,8 +165,12 @@ int run_export(const ExportArgs& args) {
       else video->add(image);
       progress.frame(i + 1);
     }
-    if (frames) frames->finish();
-    else video->finish();
+    if (frames) {
+      frames->finish();
+      staged->commit();
+    } else {
+      video->finish();
+    }
     if (verbosity != Verbosity::quiet) {
       const std::string where = frames ? args.frames + "/frame_000000.png .. " + PngFrameWriter::frame_name(moments.size() - 1)
                                        : args.video;

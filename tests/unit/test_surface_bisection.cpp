@@ -301,6 +301,25 @@ std::string refusal(const Surface& s, const BisectionOptions& options = {}) {
 
 // ---------------------------------------------------------------------------------------
 
+// Coordinates of 1e300 (or all of 1e-300) made every area infinite (or zero): the surface
+// came back unrefined, silently. Refused, naming the vertex.
+TEST(SurfaceBisection, CoordinatesBeyondWhatDoublesMeasureAreRefused) {
+  BisectionOptions options;
+  options.max_edge = 0.3;
+  for (const double scale : {1e300, 1e-300}) {
+    Surface s = folded_square(2);
+    for (auto& p : s.vertices) p = {p.x * scale, p.y * scale, p.z * scale};
+    options.max_edge = 0.3 * scale;
+    const std::string why = refusal(s, options);
+    EXPECT_NE(why.find("measured in doubles"), std::string::npos) << scale << ": " << why;
+  }
+  // Within the range, the same surface is refined as at unit size.
+  Surface s = folded_square(2);
+  for (auto& p : s.vertices) p = {p.x * 0x1p200, p.y * 0x1p200, p.z * 0x1p200};
+  options.max_edge = 0.3 * 0x1p200;
+  EXPECT_GT(bisect_surface(s, options).triangles.size(), folded_square(2).triangles.size());
+}
+
 TEST(SurfaceBisection, EdgeBoundMetOnEverySurfaceWithoutHangingVertices) {
   for (const Case& c : all_surfaces()) {
     BisectionOptions options;

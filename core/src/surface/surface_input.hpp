@@ -11,12 +11,36 @@
 #include <vector>
 
 #include "meshstep/error.hpp"
+#include "meshstep/io/shortest_text.hpp"
 #include "meshstep/io/surface_io.hpp"
 #include "surface_geometry.hpp"
 
 namespace meshstep::surface::detail {
 
 using Triangle = std::array<std::uint32_t, 3>;
+
+// The surface is measured in doubles (surface_geometry.hpp): an area takes the fourth power
+// of coordinate differences, which overflows past 2^255 and leaves nothing of surfaces
+// whose every coordinate is below 2^-255. Such a surface was measured as infinite or empty
+// and came back unrefined, silently; it is refused, naming the coordinate. (The plane's
+// exact path scales by a power of two instead; here the bounds and the log would have to
+// follow.)
+inline constexpr int kSurfaceHighestExponent = 240, kSurfaceLowestExponent = -240;
+
+inline void check_measurable(const io::Surface& in, const std::string& who) {
+  double largest = 0.0;
+  std::size_t at = 0;
+  for (std::size_t v = 0; v < in.vertices.size(); ++v)
+    for (const double c : {in.vertices[v].x, in.vertices[v].y, in.vertices[v].z})
+      if (std::fabs(c) > largest) largest = std::fabs(c), at = v;
+  if (largest == 0.0) return;
+  const int e = std::ilogb(largest);
+  if (e >= kSurfaceHighestExponent || e < kSurfaceLowestExponent)
+    throw InputError(who + ": vertex " + std::to_string(at) + " has a coordinate of magnitude " +
+                     io::shortest_text(largest) + ", and the largest must lie between 2^" +
+                     std::to_string(kSurfaceLowestExponent) + " and 2^" + std::to_string(kSurfaceHighestExponent) +
+                     " (about 1e-72 to 1e72): lengths and areas in 3D are measured in doubles");
+}
 
 // Refuses, naming `who` ("surface bisection"), anything but a manifold surface whose
 // triangles agree on their orientation (borders allowed), coordinates that are not finite,
@@ -29,6 +53,7 @@ inline void check_surface_input(const io::Surface& in, const std::string& who) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw InputError(who + ": vertex " + std::to_string(v) + " has a coordinate that is not finite");
   }
+  check_measurable(in, who);
   const io::SurfaceReport r = io::report_surface(in);  // throws for an index past the end
   if (r.degenerate_triangles > 0 || r.duplicate_triangles > 0 || r.non_manifold_edges > 0 ||
       r.inconsistent_edges > 0) {

@@ -7,6 +7,7 @@
 
 #include "meshstep/error.hpp"
 #include "meshstep/terrain/tiles.hpp"
+#include "planar_scale.hpp"
 
 namespace meshstep::terrain {
 namespace {
@@ -52,6 +53,9 @@ class TileCutter {
  private:
   void start(const HeightGrid& header) {
     if (size_ < 2) throw InputError("a tile needs at least 2 x 2 samples, not " + std::to_string(size_));
+    // The whole grid's rule, before any tile: a tile's own extent may be within the doubles
+    // where its place in the grid (tile_surface) is not.
+    detail::planar_scale(header);
     // A tile larger than the grid is the grid: the same layout, and a band no larger.
     layout_ = {header.nx, header.ny, std::min(size_, std::max(header.nx, header.ny))};
     if (only_ && (only_->row >= layout_.rows() || only_->column >= layout_.columns()))

@@ -44,6 +44,13 @@ void set_spacing(const std::string& path, const io::EsriGrid& header, const Heig
   const bool guessed = looks_geographic(extent);
   grid.geographic = options.geographic.value_or(guessed);
   if (!grid.geographic) {
+    // Named at its line here; the terrain would refuse it too (planar_scale.hpp), unnamed.
+    const double extent = static_cast<double>(std::max(header.ncols, header.nrows) - 1) * header.cellsize;
+    if (!std::isfinite(extent))
+      throw InputError(path, header.lines.cellsize,
+                       "cellsize " + number(header.cellsize) + " over " +
+                           std::to_string(std::max(header.ncols, header.nrows) - 1) +
+                           " cells puts the grid's far side beyond the largest double (1.8e308)");
     grid.dx = grid.dy = header.cellsize;
     grid.units_note = number(header.cellsize) + " m cells (the grid's units, taken as metres)";
     if (guessed) grid.units_note += "; not converted from degrees, as told";

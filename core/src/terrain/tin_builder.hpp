@@ -18,6 +18,7 @@
 #include "meshstep/delaunay/vertex_removal.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/terrain/tin.hpp"
+#include "planar_scale.hpp"
 #include "triangle_scan.hpp"
 
 namespace meshstep::terrain::detail {
@@ -34,7 +35,7 @@ class TinBuilder {
   // sample on the rectangle is ever searched or inserted.
   TinBuilder(const HeightGrid& grid, const TerrainOptions& options, const BorderVertices* border = nullptr,
              Rec recorder = {})
-      : grid_(grid), options_(options), border_(border),
+      : grid_(grid), options_(options), border_(border), scale_(planar_scale(grid)),
         tri_(initial_points(grid, border), Insertion::flip, std::move(recorder)),
         used_(grid.nx * grid.ny, false),
         window_(border ? SampleWindow{1, static_cast<std::int64_t>(grid.nx) - 2, 1, static_cast<std::int64_t>(grid.ny) - 2}
@@ -43,6 +44,8 @@ class TinBuilder {
 
   Tin run(TerrainReport& report) {
     const auto start = std::chrono::steady_clock::now();
+    // The log stores points in metres, as the grid's samples are.
+    if constexpr (Rec::enabled) rec().set_vertex_context({}, scale_.exponent);
     tri_.insert_all();
     for (VertexId v = 0; v < hull_vertices_; ++v) {
       samples_.push_back(border_ ? border_->samples[v] : corner_sample(v));
@@ -139,23 +142,28 @@ class TinBuilder {
     rec().point_selected(static_cast<std::uint8_t>(next.choice), mesh().origin(h), mesh().dest(h), mesh().apex(h), at,
                          alternatives);
   }
+  // Sample s where the triangulation has it: scaled by 2^scale_.exponent.
   Point sample_point(std::uint32_t s) const {
+    return {static_cast<double>(s % grid_.nx) * scale_.dx, static_cast<double>(s / grid_.nx) * scale_.dy};
+  }
+  // Vertex v in metres, for what mixes in heights (3D lengths and angles).
+  Point metres(VertexId v) const {
+    const std::uint32_t s = samples_[v];
     return {static_cast<double>(s % grid_.nx) * grid_.dx, static_cast<double>(s / grid_.nx) * grid_.dy};
   }
 
-  static std::vector<Point> corners(const HeightGrid& g) {
-    if (g.nx < 2 || g.ny < 2) throw InputError("a terrain needs a grid of at least 2 x 2 samples");
-    const double x = static_cast<double>(g.nx - 1) * g.dx, y = static_cast<double>(g.ny - 1) * g.dy;
+  std::vector<Point> corners(const HeightGrid& g) const {
+    const double x = static_cast<double>(g.nx - 1) * scale_.dx, y = static_cast<double>(g.ny - 1) * scale_.dy;
     return {{0, 0}, {x, 0}, {x, y}, {0, y}};
   }
   // The corners, then the rest of a given border: the first three start the triangulation
   // as a proper triangle, and every later border vertex falls on a hull edge and splits it.
-  static std::vector<Point> initial_points(const HeightGrid& g, const BorderVertices* border) {
+  std::vector<Point> initial_points(const HeightGrid& g, const BorderVertices* border) const {
     std::vector<Point> points = corners(g);
     if (!border) return points;
     for (std::size_t k = 4; k < border->samples.size(); ++k) {
       const std::uint32_t s = border->samples[k];
-      points.push_back({static_cast<double>(s % g.nx) * g.dx, static_cast<double>(s / g.nx) * g.dy});
+      points.push_back(sample_point(s));
     }
     return points;
   }
@@ -248,11 +256,10 @@ class TinBuilder {
     // hull's count in triangle_count() wrap: it is a bug, stopped here.
     if (used_[sample])
       throw std::logic_error("terrain: sample " + std::to_string(sample) + " chosen again: it is a vertex already");
-    const std::size_t i = sample % grid_.nx, j = sample / grid_.nx;
     used_[sample] = true;
     samples_.push_back(sample);
     heights_.push_back(grid_.z[sample]);
-    const VertexId v = tri_.add_point({static_cast<double>(i) * grid_.dx, static_cast<double>(j) * grid_.dy});
+    const VertexId v = tri_.add_point(sample_point(sample));
     // Recorded, the step is open already (record_worst); else insert() opens its own.
     const HalfEdge out = Rec::enabled ? tri_.insert_in_step(v, hint) : tri_.insert(v, hint);
     rec().elevation(v, heights_.back());
@@ -376,7 +383,7 @@ class TinBuilder {
   // The smallest angle of triangle abc in 3D, in radians: the one with the largest cosine.
   double smallest_angle_3d(VertexId a, VertexId b, VertexId c) const {
     const auto position = [&](VertexId v) {
-      const Point& p = tri_.point(v);
+      const Point p = metres(v);
       return std::array<double, 3>{p.x, p.y, static_cast<double>(heights_[v])};
     };
     const std::array<double, 3> p[3] = {position(a), position(b), position(c)};
@@ -417,7 +424,7 @@ class TinBuilder {
     }
     const auto p = terminal_point(e);
     terminal_point_ = {p[0], p[1]};
-    const double fi = std::round(p[0] / grid_.dx), fj = std::round(p[1] / grid_.dy);
+    const double fi = std::round(p[0] / scale_.dx), fj = std::round(p[1] / scale_.dy);
     const std::size_t i = static_cast<std::size_t>(std::clamp(fi, 0.0, static_cast<double>(grid_.nx - 1)));
     const std::size_t j = static_cast<std::size_t>(std::clamp(fj, 0.0, static_cast<double>(grid_.ny - 1)));
     const std::uint32_t s = static_cast<std::uint32_t>(i + j * grid_.nx);
@@ -474,8 +481,7 @@ class TinBuilder {
   }
   std::array<double, 3> edge_key(HalfEdge e) const {
     const VertexId u = mesh().origin(e), w = mesh().dest(e);
-    const Point& p = tri_.point(u);
-    const Point& q = tri_.point(w);
+    const Point p = metres(u), q = metres(w);
     const double dz = static_cast<double>(heights_[u]) - heights_[w];
     const double length2 = (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y) + dz * dz;
     return {length2, -static_cast<double>(std::min(u, w)), -static_cast<double>(std::max(u, w))};
@@ -503,6 +509,7 @@ class TinBuilder {
   const HeightGrid& grid_;
   const TerrainOptions& options_;
   const BorderVertices* border_;         // null: the four corners start the TIN
+  PlanarScale scale_;                    // the triangulation's coordinates: samples scaled exactly
   Triangulation<Mesh, Rec> tri_;
   std::vector<bool> used_;               // by sample: already a vertex
   std::vector<bool> removed_;            // by vertex: removed by the improvement (empty: none)
