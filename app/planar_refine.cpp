@@ -184,11 +184,6 @@ int run_planar_refine(const PlanarRefineJob& job) {
     int status = kExitOk;
     if (!prepare_step(job.operations[i], origin(i), job.refusal_status, steps[i], status)) return status;
   }
-  if (steps.size() > 1 && !job.record.empty()) {
-    print_error("--record: a recipe of " + std::to_string(steps.size()) +
-                " operations cannot be recorded yet (one log per recipe is not done): record a one-operation recipe");
-    return kExitUsage;
-  }
   // A mesh prefix (PREFIX.node + PREFIX.ele, and PREFIX.area if there) rather than an input
   // file: re-refinement, as Triangle's -r.
   bool re_refine = false, area_file = false;
@@ -246,6 +241,12 @@ int run_planar_refine(const PlanarRefineJob& job) {
   if (first_no_bound && (re_refine || ends_with(job.input, ".node"))) return refuse_without_bound(0);
   for (std::size_t i = 1; i < steps.size(); ++i)
     if (steps[i].no_bound) return refuse_without_bound(i);
+
+  if (steps.size() > 1 && !job.record.empty()) {
+    print_error("--record: a recipe of " + std::to_string(steps.size()) +
+                " operations cannot be recorded yet (one log per recipe is not done): record a one-operation recipe");
+    return kExitUsage;
+  }
 
   // (A mesh prefix has no extension to strip: box.1 becomes box.2, as with Triangle.)
   const std::string prefix =

@@ -109,7 +109,8 @@ TEST_F(RunRecipeCli, BadLinesAreRefusedBeforeAnyWork) {
     const std::string out = dir_.file("out");
     const CommandResult r = meshstep("run " + recipe + " " + input + " -o " + out + " --record " + out + ".mslog");
     EXPECT_EQ(r.status, 1);
-    EXPECT_TRUE(contains(r.err, recipe + ":4: " + message)) << r.err;
+    EXPECT_TRUE(contains(r.err, "error: " + recipe + ":4: ")) << r.err;
+    EXPECT_TRUE(contains(r.err, message)) << r.err;
     EXPECT_FALSE(contains(r.err, "internal error")) << r.err;
     for (const char* ext : {".node", ".ele", ".poly", ".mslog", ".mslog.partial"})
       EXPECT_FALSE(std::filesystem::exists(out + ext)) << ext;
