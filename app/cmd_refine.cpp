@@ -1,35 +1,19 @@
 // meshstep refine: Delaunay refinement of a .poly PSLG (or a .node point set) into a quality
 // mesh, by one of the registered algorithms (refine/registry.hpp).
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
-#include <vector>
+#include <string_view>
 
 #include "command.hpp"
-#include "refine_surface.hpp"
 #include "console.hpp"
-#include "file_roles.hpp"
-#include "json_line.hpp"
-#include "meshstep/check/quality.hpp"
-#include "meshstep/error.hpp"
-#include "meshstep/io/esri_grid.hpp"
 #include "meshstep/io/formats.hpp"
-#include "meshstep/io/triangle_io.hpp"
-#include "meshstep/pslg/input_angles.hpp"
-#include "meshstep/refine/refine.hpp"
 #include "meshstep/refine/registry.hpp"
-#include "meshstep/replay/log_writer.hpp"
-#include "meshstep/replay/run_header.hpp"
 #include "meshstep/refine/run_spec.hpp"
-#include "memory_budget.hpp"
-#include "output_prefix.hpp"
-#include "planar_refine.hpp"
 #include "operation_options.hpp"
+#include "planar_refine.hpp"
 #include "record_option.hpp"
+#include "refine_surface.hpp"
 
 namespace meshstep::app {
 namespace {
