@@ -56,6 +56,19 @@ OperationOptions::OperationOptions(CLI::App& cmd, OperationKind kind) : kind_(ki
     }
     entries_.push_back(std::move(entry));
   }
+  if (kind != OperationKind::refine) return;
+  region_box_ = std::make_unique<Entry>();
+  region_box_->option =
+      cmd.add_option("--region", region_box_->text,
+                     "Refine only where a triangle's centroid lies in the box X0,Y0,X1,Y1 (border\n"
+                     "included); elsewhere triangles are held to no bound, and change only where\n"
+                     "the algorithm's own rules reach them (docs/recipes.md, Regions)")
+          ->type_name("X0,Y0,X1,Y1");
+  region_poly_ = std::make_unique<Entry>();
+  region_poly_->option = cmd.add_option("--region-poly", region_poly_->text,
+                                        "As --region, in the polygon the segments of FILE.poly make (one closed\n"
+                                        "simple polygon; its holes and regions are not used)")
+                             ->type_name("FILE.poly");
 }
 
 std::optional<Operation> OperationOptions::operation() const {
@@ -65,6 +78,8 @@ std::optional<Operation> OperationOptions::operation() const {
     for (const auto& e : entries_)
       if (e->option->count() > 0)
         set_option(op, e->parameter->name, e->parameter->kind == ParameterKind::flag ? "" : e->text);
+    if (region_box_ && region_box_->option->count() > 0) set_option(op, "region", region_box_->text);
+    if (region_poly_ && region_poly_->option->count() > 0) set_option(op, "region-poly", region_poly_->text);
   } catch (const RunSpecError& e) {
     print_error(e.what());
     return std::nullopt;

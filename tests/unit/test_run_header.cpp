@@ -42,6 +42,24 @@ TEST(RunHeader, ARefinementReadsBackAsItWasRun) {
   EXPECT_FALSE(read_back(replay::refine_parameters(grid, "g.asc", 3, 0)).size);  // a grid's name: no number
 }
 
+// The region= field (RefineRegion::text()) reads back as the region the run was limited to.
+TEST(RunHeader, TheRegionReadsBack) {
+  const RefineRegion box = RefineRegion::box({0.2, -0.8}, {0.45, -0.5});
+  const replay::RunHeader boxed = read_back("input_vertices=3 region=" + box.text());
+  ASSERT_TRUE(boxed.region);
+  EXPECT_EQ(boxed.region->text(), box.text());
+  EXPECT_EQ(boxed.region->kind(), RefineRegion::Kind::box);
+  const RefineRegion l = RefineRegion::polygon({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}});
+  const replay::RunHeader ell = read_back("region=" + l.text());
+  ASSERT_TRUE(ell.region);
+  EXPECT_EQ(ell.region->vertices(), l.vertices());
+  EXPECT_TRUE(ell.region->contains({0.5, 1.5}));
+  EXPECT_FALSE(ell.region->contains({1.5, 1.5}));
+  EXPECT_FALSE(read_back("input_vertices=3").region);
+  EXPECT_THROW(read_back("region=disc:0,0,1"), InputError);
+  EXPECT_THROW(read_back("region=polygon:0,0;1,x;0,1"), InputError);
+}
+
 TEST(RunHeader, TriangulationsAndSurfacesReadBack) {
   const replay::RunHeader t = read_back(replay::triangulate_parameters(true, 40, 1));
   EXPECT_EQ(t.input_vertices, 40u);

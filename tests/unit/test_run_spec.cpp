@@ -82,6 +82,28 @@ std::string refusal(const std::string& text) {
   return "(accepted)";
 }
 
+// --region and --region-poly are the operation's like the registry's options.
+TEST(RunSpec, TheRegionPrintsAsItParses) {
+  expect_round_trip("refine --algorithm midpoint-area --max-area 2e-05 --region 0.2,-0.8,0.45,-0.5");
+  expect_round_trip("refine --min-angle 25 --region-poly l.poly");
+  const Operation op = parse_operation("refine --region=1,2,3.5,4");
+  ASSERT_TRUE(op.region && op.region->box);
+  EXPECT_EQ(op.region->box->first, (Point{1, 2}));
+  EXPECT_EQ(op.region->box->second, (Point{3.5, 4}));
+  const std::optional<RefineRegion> region = region_of(op);
+  ASSERT_TRUE(region);
+  EXPECT_EQ(region->text(), "box:1,2,3.5,4");
+  EXPECT_FALSE(region_of(parse_operation("refine --min-angle 20")));
+  EXPECT_EQ(refusal("refine --region 3,1,1,3"),
+            "--region: the region box 3,1,1,3 is empty: X0 must be below X1 and Y0 below Y1");
+  EXPECT_EQ(refusal("refine --region 1,2,3"),
+            "--region: a region box is X0,Y0,X1,Y1 (four numbers separated by commas), not '1,2,3'");
+  EXPECT_EQ(refusal("refine --region 0,0,1,1 --region-poly l.poly"),
+            "--region and --region-poly both name a region: give one");
+  EXPECT_EQ(refusal("triangulate --region 0,0,1,1"), "--region: does not apply to triangulate");
+  EXPECT_EQ(refusal("refine --region"), "--region: needs a value");
+}
+
 TEST(RunSpec, RefusesWhatTheCommandLineRefuses) {
   EXPECT_EQ(refusal("refine --min-angle -3"), "--min-angle: must be zero or a positive number, not -3");
   EXPECT_EQ(refusal("refine --max-area 0"), "--max-area: must be a positive number, not 0");

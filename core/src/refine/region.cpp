@@ -185,6 +185,29 @@ RefineRegion RefineRegion::polygon_of(const Pslg& pslg) {
   return polygon(std::move(ring));
 }
 
+RefineRegion RefineRegion::parse_text(std::string_view text) {
+  if (text.starts_with("box:")) return parse_box(text.substr(4));
+  if (!text.starts_with("polygon:"))
+    throw InputError("a region is box:X0,Y0,X1,Y1 or polygon:X,Y;X,Y;..., not '" + std::string(text) + "'");
+  std::vector<Point> vertices;
+  std::string_view rest = text.substr(8);
+  for (std::size_t start = 0; start <= rest.size();) {
+    const std::size_t semicolon = std::min(rest.find(';', start), rest.size());
+    const std::string pair(rest.substr(start, semicolon - start));
+    const std::size_t comma = pair.find(',');
+    char* end_x = nullptr;
+    char* end_y = nullptr;
+    const double x = std::strtod(pair.c_str(), &end_x);
+    const double y = comma == std::string::npos ? 0.0 : std::strtod(pair.c_str() + comma + 1, &end_y);
+    if (comma == std::string::npos || end_x != pair.c_str() + comma || end_y != pair.c_str() + pair.size() ||
+        comma == 0 || comma + 1 == pair.size())
+      throw InputError("a region polygon's vertex is X,Y, not '" + pair + "'");
+    vertices.push_back({x, y});
+    start = semicolon + 1;
+  }
+  return polygon(std::move(vertices));
+}
+
 std::string RefineRegion::text() const {
   if (kind_ == Kind::box)
     return "box:" + shortest(low_.x) + "," + shortest(low_.y) + "," + shortest(high_.x) + "," + shortest(high_.y);

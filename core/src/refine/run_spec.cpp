@@ -5,7 +5,9 @@
 #include <cmath>
 #include <variant>
 
+#include "meshstep/error.hpp"
 #include "meshstep/io/shortest_text.hpp"
+#include "meshstep/io/triangle_io.hpp"
 
 namespace meshstep {
 namespace {
@@ -156,6 +158,38 @@ const ParameterInfo* find_by_word(std::string_view word) {
   return nullptr;
 }
 
+// --region and --region-poly: not registry parameters (a region is no bound of an
+// algorithm), but options of every refine operation all the same.
+bool is_region_option(std::string_view name) { return name == "region" || name == "region-poly"; }
+
+void set_region(Operation& op, std::string_view name, std::string_view text) {
+  if (op.kind != OperationKind::refine) refuse(name, "does not apply to triangulate");
+  if (text.empty()) refuse(name, "needs a value");
+  RegionSpec region = op.region.value_or(RegionSpec{});
+  if (name == "region") {
+    try {
+      const RefineRegion box = RefineRegion::parse_box(text);
+      region.box = std::pair{box.low(), box.high()};
+    } catch (const InputError& e) {
+      refuse(name, e.message());
+    }
+  } else {
+    region.polygon_file = std::string(text);
+  }
+  if (region.box && !region.polygon_file.empty())
+    throw RunSpecError("--region and --region-poly both name a region: give one");
+  op.region = region;
+}
+
+std::string region_words(const RegionSpec& region) {
+  if (region.box) {
+    const auto& [low, high] = *region.box;
+    return " --region " + io::shortest_text(low.x) + "," + io::shortest_text(low.y) + "," +
+           io::shortest_text(high.x) + "," + io::shortest_text(high.y);
+  }
+  return region.polygon_file.empty() ? "" : " --region-poly " + region.polygon_file;
+}
+
 }  // namespace
 
 bool takes(OperationKind kind, const ParameterInfo& parameter) {
@@ -175,6 +209,7 @@ std::string_view help_for(OperationKind kind, const ParameterInfo& parameter) {
 }
 
 void set_option(Operation& op, std::string_view name, std::string_view text) {
+  if (is_region_option(name)) return set_region(op, name, text);
   const ParameterInfo* p = find_parameter(name);
   if (!p) throw RunSpecError("unknown option --" + std::string(name));
   if (!takes(op.kind, *p)) refuse(name, "does not apply to triangulate");
@@ -201,6 +236,15 @@ Operation parse_operation(const std::vector<std::string>& words) {
     const std::string& word = words[i];
     const std::size_t equals = word.find('=');
     const std::string_view head = std::string_view(word).substr(0, equals);
+    if (head.starts_with("--") && is_region_option(head.substr(2))) {
+      if (equals != std::string::npos) {
+        set_option(op, head.substr(2), std::string_view(word).substr(equals + 1));
+      } else {
+        if (i + 1 == words.size()) refuse(head.substr(2), "needs a value");
+        set_option(op, head.substr(2), words[++i]);
+      }
+      continue;
+    }
     const ParameterInfo* p = find_by_word(head);
     if (!p) throw RunSpecError(word.starts_with("-") ? "unknown option " + std::string(head)
                                                      : "'" + word + "' is not an option (--NAME expected)");
@@ -227,6 +271,7 @@ std::string print_operation(const Operation& op) {
     out += " --" + std::string(p.name);
     if (p.kind != ParameterKind::flag) out += " " + *text;
   }
+  if (op.region) out += region_words(*op.region);
   return out;
 }
 
@@ -292,6 +337,19 @@ RefineOptions refine_options(const Operation& op, std::function<double(const Poi
 
 std::string insertion_name(const RefineOptions& options) {
   return options.insertion == RefineInsertion::bisection ? "bisection" : to_string(options.triangulate.insertion);
+}
+
+std::optional<RefineRegion> region_of(const Operation& op) {
+  if (!op.region) return std::nullopt;
+  if (op.region->box) return RefineRegion::box(op.region->box->first, op.region->box->second);
+  if (op.region->polygon_file.empty()) return std::nullopt;
+  const std::string& file = op.region->polygon_file;
+  const Pslg pslg = io::read_pslg(file);
+  try {
+    return RefineRegion::polygon_of(pslg);
+  } catch (const InputError& e) {
+    throw InputError(file, 0, e.message());
+  }
 }
 
 }  // namespace meshstep

@@ -100,6 +100,13 @@ RunHeader read_run_header(const LogHeader& header, const std::string& path) {
   run.max_area = bound("max_area");
   run.size = bound("size");
   run.max_error = bound("max_error");
+  if (const std::string r = text("region"); !r.empty()) {
+    try {
+      run.region = RefineRegion::parse_text(r);
+    } catch (const InputError& e) {
+      throw InputError(path, 0, "the header's parameter region=" + r + ": " + e.message());
+    }
+  }
   return run;
 }
 

@@ -53,6 +53,9 @@ class RefineRegion {
   // The region as one word of text, exact (shortest round-trip numbers), for the log's
   // parameters: "box:X0,Y0,X1,Y1" or "polygon:X,Y;X,Y;..." (counterclockwise).
   std::string text() const;
+  // The region from text() (the log header's region= field). Throws InputError for text
+  // that is neither, with the errors of box() and polygon().
+  static RefineRegion parse_text(std::string_view text);
 
  private:
   bool polygon_contains(const Point& p) const;

@@ -17,15 +17,16 @@
 #include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/geometry/point.hpp"
 #include "meshstep/refine/refine.hpp"
+#include "meshstep/refine/region.hpp"
 #include "meshstep/refine/registry.hpp"
 
 namespace meshstep {
 
-// Where an operation applies: a box (its two corners) or a polygon (counterclockwise or
-// not). Kept a plain value so that the refinement's own region support can take it over.
+// Where an operation applies, as the command line names it: --region X0,Y0,X1,Y1 (a box,
+// checked when parsed) or --region-poly FILE.poly (a polygon, read by region_of()).
 struct RegionSpec {
-  std::optional<std::pair<Point, Point>> box;
-  std::vector<Point> polygon;
+  std::optional<std::pair<Point, Point>> box;  // its two corners, low then high
+  std::string polygon_file;
   bool operator==(const RegionSpec&) const = default;
 };
 
@@ -105,5 +106,10 @@ RefineOptions refine_options(const Operation& op, std::function<double(const Poi
 // The insertion as the log header and the statistics name it: "bisection", or the
 // triangulation's "flip" or "cavity".
 std::string insertion_name(const RefineOptions& options);
+
+// The region an operation names, or none: the box as parsed, or the polygon its --region-poly
+// file's segments make. Throws InputError ("FILE: a region polygon's segment 1 and ...") for
+// a file that cannot be read or makes no simple polygon.
+std::optional<RefineRegion> region_of(const Operation& op);
 
 }  // namespace meshstep

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "meshstep/refine/refine.hpp"
+#include "meshstep/refine/region.hpp"
 #include "meshstep/replay/log_writer.hpp"
 
 namespace meshstep::replay {
@@ -24,10 +25,13 @@ struct RunHeader {
   std::optional<double> lens_angle;  // degrees, under the lens rule
   // The bounds as numbers (none: not set, written as 0, or not a number: a --size grid's name).
   std::optional<double> min_angle, max_angle, max_aspect, max_area, size, max_error;
+  // The part of the plane the refinement was limited to (region=box:... or polygon:...).
+  std::optional<RefineRegion> region;
 };
 
 // Reads the header's run description. Throws InputError ("PATH: the header's parameter
-// input_vertices=x is not a number") for a vertex count or first index that is no number.
+// input_vertices=x is not a number") for a vertex count or first index that is no number,
+// and for a region= that is no region.
 RunHeader read_run_header(const LogHeader& header, const std::string& path);
 
 // The header parameters each kind of run records, which read_run_header reads back.

@@ -1,0 +1,134 @@
+// meshstep run RECIPE INPUT: the operations of a recipe file, one after the other on the same
+// mesh in one process (planar_refine.hpp). A recipe line is an operation in the command
+// line's own words (run_spec.hpp); every line is read and checked before any work.
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "command.hpp"
+#include "console.hpp"
+#include "meshstep/io/formats.hpp"
+#include "meshstep/refine/run_spec.hpp"
+#include "planar_refine.hpp"
+#include "record_option.hpp"
+
+namespace meshstep::app {
+namespace {
+
+struct RunArgs {
+  std::string recipe, input, prefix, record, stats, max_memory, ds, insertion;
+  bool quiet = false, verbose = false;
+};
+
+// A recipe's operations, each with the "RECIPE:LINE: " its errors start with; nothing after
+// printing the first bad line's error.
+struct Recipe {
+  std::vector<Operation> operations;
+  std::vector<std::string> origins;
+};
+
+std::string trimmed_line(const std::string& line) {
+  const std::string text = line.substr(0, line.find('#'));
+  const std::size_t first = text.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
+}
+
+std::optional<Recipe> read_recipe(const RunArgs& args) {
+  std::ifstream in(args.recipe);
+  if (!in) {
+    print_error(args.recipe + ": cannot be read");
+    return std::nullopt;
+  }
+  Recipe recipe;
+  std::string line;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    const std::string text = trimmed_line(line);
+    if (text.empty()) continue;
+    const std::string origin = args.recipe + ":" + std::to_string(number) + ": ";
+    try {
+      Operation op = parse_operation(text);
+      if (op.kind != OperationKind::refine)
+        throw RunSpecError("a recipe's operations refine the mesh: 'refine ...' expected, not '" + text + "'");
+      if (op.flip_dihedral) throw RunSpecError("--flip-dihedral is for a 3D surface: a recipe refines a planar mesh");
+      // The command line's --ds and --insertion hold for every operation.
+      if (!args.ds.empty()) set_option(op, "ds", args.ds);
+      if (!args.insertion.empty()) set_option(op, "insertion", args.insertion);
+      recipe.operations.push_back(std::move(op));
+      recipe.origins.push_back(origin);
+    } catch (const RunSpecError& e) {
+      print_error(origin + e.what());
+      return std::nullopt;
+    }
+  }
+  if (in.bad()) {
+    print_error(args.recipe + ": cannot be read");
+    return std::nullopt;
+  }
+  if (recipe.operations.empty()) {
+    print_error(args.recipe + ": no operation in the recipe (one 'refine ...' line at least)");
+    return std::nullopt;
+  }
+  return recipe;
+}
+
+int run_recipe(const RunArgs& args) {
+  if (io::is_surface(args.input)) {
+    print_error(args.input + ": a recipe refines a planar input (.poly, .node or a mesh PREFIX), not a 3D surface");
+    return kExitUsage;
+  }
+  std::optional<Recipe> recipe = read_recipe(args);
+  if (!recipe) return kExitBadInput;
+  PlanarRefineJob job;
+  job.input = args.input;
+  job.prefix = args.prefix;
+  job.record = args.record;
+  job.stats = args.stats;
+  job.max_memory = args.max_memory;
+  job.verbosity = args.quiet ? Verbosity::quiet : args.verbose ? Verbosity::verbose : Verbosity::normal;
+  job.operations = std::move(recipe->operations);
+  job.origins = std::move(recipe->origins);
+  job.recipe = args.recipe;
+  job.refusal_status = kExitBadInput;
+  return run_planar_refine(job);
+}
+
+}  // namespace
+
+Command add_run_command(CLI::App& parent) {
+  auto args = std::make_shared<RunArgs>();
+  CLI::App* cmd = parent.add_subcommand(
+      "run",
+      "Run a recipe: the operations of RECIPE, one per line, one after the other on the same\n"
+      "mesh (the first refines INPUT, each next one the mesh so far). A line is an operation\n"
+      "in the command line's words, e.g. 'refine --algorithm lepp-centroid --min-angle 25'\n"
+      "or 'refine --max-area 2e-5 --region 0.2,-0.8,0.45,-0.5'; '#' starts a comment. Every\n"
+      "line is checked before any work (docs/recipes.md).");
+  cmd->add_option("RECIPE", args->recipe, "The recipe file")->required();
+  cmd->add_option("INPUT", args->input, "Input .poly or .node file, or a mesh PREFIX to refine again")->required();
+  cmd->add_option("-o,--output", args->prefix,
+                  "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly\n"
+                  "(default: INPUT without extension plus .1, as refine does)");
+  add_record_option(*cmd, args->record);
+  cmd->add_option("--stats", args->stats, "Print statistics; 'json': as refine's, the last line of standard output")
+      ->check(CLI::IsMember({"json"}));
+  cmd->add_option("--ds", args->ds, "Mesh data structure of every operation: tds or dcel")
+      ->check(CLI::IsMember({"tds", "dcel"}));
+  cmd->add_option("--insertion", args->insertion, "Point insertion of every operation: flip, cavity or bisection")
+      ->check(CLI::IsMember({"flip", "cavity", "bisection"}));
+  cmd->add_option("--max-memory", args->max_memory,
+                  "Stop before the run takes more memory than SIZE (8G, 500M, ...; none: no\n"
+                  "budget). Default: a quarter of this machine's memory")
+      ->type_name("SIZE");
+  cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors (and --stats)");
+  cmd->add_flag("-v,--verbose", args->verbose, "Also print refinement counts, timings and the record summary");
+  cmd->footer(
+      "Example: meshstep run chain.recipe assets/examples/plate.poly -o plate_chain\n"
+      "Exit status: 0 done, 1 bad input or a recipe line that cannot run (RECIPE:LINE: what\n"
+      "is wrong; nothing is written), 2 usage error.");
+  return {cmd, [args] { return run_recipe(*args); }};
+}
+
+}  // namespace meshstep::app

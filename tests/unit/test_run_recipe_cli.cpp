@@ -1,0 +1,134 @@
+// `meshstep run RECIPE INPUT`: a chain of operations on one mesh (the second's area bound
+// holds in its box and not elsewhere), a one-line recipe writes byte for byte what
+// `meshstep refine` writes, and every bad line is refused as RECIPE:LINE before any work.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "meshstep/io/triangle_io.hpp"
+#include "meshstep/refine/region.hpp"
+#include "run_cli.hpp"
+#include "temp_dir.hpp"
+
+namespace meshstep {
+namespace {
+
+using testing::CommandResult;
+
+constexpr const char* kSquare =
+    "# 10 x 10 square\n"
+    "4 2 0 0\n1 0 0\n2 10 0\n3 10 10\n4 0 10\n"
+    "4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n"
+    "0\n";
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+double area_of(const TriMesh& m, const std::array<std::uint32_t, 3>& t) {
+  const Point &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]];
+  return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+}
+
+class RunRecipeCli : public ::testing::Test {
+ protected:
+  CommandResult meshstep(const std::string& args) const { return testing::run_meshstep(args, dir_.path()); }
+  std::string write(const std::string& name, const std::string& text) const { return dir_.write(name, text); }
+  testing::TempDir dir_{"meshstep_run_recipe_cli_"};
+};
+
+// Lepp-centroid to 25 degrees everywhere, then an area bound in a box: the area bound holds
+// where a triangle's centroid is in the box, and not elsewhere.
+TEST_F(RunRecipeCli, AChainsSecondBoundHoldsInItsRegionOnly) {
+  const std::string input = write("square.poly", kSquare);
+  const std::string recipe = write("chain.recipe",
+                                   "# quality first, then small triangles in a box\n"
+                                   "refine --algorithm lepp-centroid --min-angle 25 --max-area 2\n"
+                                   "\n"
+                                   "refine --algorithm midpoint-area --max-area 0.05 --region 1,1,4,4  # the box\n");
+  const CommandResult r = meshstep("run " + recipe + " " + input + " -o " + dir_.file("chain") + " --stats json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const TriMesh m = io::read_mesh(dir_.file("chain"));
+  const RefineRegion box = RefineRegion::box({1, 1}, {4, 4});
+  std::size_t inside = 0, large_inside = 0, large_outside = 0;
+  for (const auto& t : m.triangles) {
+    const Point &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]];
+    const bool large = area_of(m, t) > 0.05 * (1 + 1e-12);
+    if (box.contains({(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0})) {
+      ++inside;
+      large_inside += large;
+    } else {
+      large_outside += large;
+    }
+  }
+  EXPECT_GT(inside, 100u);
+  EXPECT_EQ(large_inside, 0u);
+  EXPECT_GT(large_outside, 5u);
+  EXPECT_EQ(meshstep("check " + dir_.file("chain") + " --poly " + input + " -q").status, 0);
+
+  // The first operation alone leaves large triangles in the box: the second did the work.
+  const std::string first = write("first.recipe", "refine --algorithm lepp-centroid --min-angle 25 --max-area 2\n");
+  ASSERT_EQ(meshstep("run " + first + " " + input + " -q -o " + dir_.file("first")).status, 0);
+  EXPECT_LT(io::read_mesh(dir_.file("first")).triangles.size() + 100, m.triangles.size());
+}
+
+// `meshstep refine` is a recipe of one operation: the same files, byte for byte, the log too.
+TEST_F(RunRecipeCli, AOneLineRecipeWritesWhatRefineWrites) {
+  const std::string input = write("square.poly", kSquare);
+  const std::vector<std::string> lines = {
+      "refine --algorithm lepp-centroid --min-angle 25",
+      "refine --algorithm offcenter --min-angle 30 --max-area 0.5 --region 2,2,6,7",
+      "refine --algorithm lepp-bisection --max-area 0.3",
+      "refine --algorithm improve --min-angle 28 --ds dcel --insertion cavity",
+  };
+  int n = 0;
+  for (const std::string& line : lines) {
+    SCOPED_TRACE(line);
+    const std::string a = dir_.file("a" + std::to_string(n)), b = dir_.file("b" + std::to_string(n));
+    const std::string recipe = write("one" + std::to_string(n++) + ".recipe", line + "\n");
+    const CommandResult ra = meshstep(line + " " + input + " -q -o " + a + " --record " + a + ".mslog");
+    const CommandResult rb = meshstep("run " + recipe + " " + input + " -q -o " + b + " --record " + b + ".mslog");
+    ASSERT_EQ(ra.status, 0) << ra.err;
+    ASSERT_EQ(rb.status, 0) << rb.err;
+    for (const char* ext : {".node", ".ele", ".poly", ".mslog"}) {
+      const std::string fa = testing::slurp(a + ext), fb = testing::slurp(b + ext);
+      EXPECT_FALSE(fa.empty()) << ext;
+      EXPECT_TRUE(fa == fb) << ext << " differs";
+    }
+  }
+}
+
+// Each bad line: RECIPE:LINE: what is wrong, exit status 1, nothing written.
+TEST_F(RunRecipeCli, BadLinesAreRefusedBeforeAnyWork) {
+  const std::string input = write("square.poly", kSquare);
+  const std::string bowtie = write("bowtie.poly",
+                                   "4 2 0 0\n1 0 0\n2 2 2\n3 2 0\n4 0 2\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n");
+  const std::string good = "refine --algorithm lepp-centroid --min-angle 25\n# a comment\n\n";
+  const auto refused = [&](const std::string& bad_line, const std::string& message) {
+    SCOPED_TRACE(bad_line);
+    const std::string recipe = write("bad.recipe", good + bad_line + "\n");
+    const std::string out = dir_.file("out");
+    const CommandResult r = meshstep("run " + recipe + " " + input + " -o " + out + " --record " + out + ".mslog");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(contains(r.err, "error: " + recipe + ":4: ")) << r.err;
+    EXPECT_TRUE(contains(r.err, message)) << r.err;
+    EXPECT_FALSE(contains(r.err, "internal error")) << r.err;
+    for (const char* ext : {".node", ".ele", ".poly", ".mslog", ".mslog.partial"})
+      EXPECT_FALSE(std::filesystem::exists(out + ext)) << ext;
+    EXPECT_FALSE(contains(r.err, "reading")) << "work began: " << r.err;
+  };
+  refused("refine --algorithm nope", "--algorithm: 'nope' is not one of");
+  refused("refine --min-angle -3", "--min-angle: must be zero or a positive number, not -3");
+  refused("refine --max-area 0", "--max-area: must be a positive number, not 0");
+  refused("refine --min-angle 25 --colour red", "unknown option --colour");
+  refused("refine --min-angle 25 --region 1,2,3", "--region: a region box is X0,Y0,X1,Y1");
+  refused("refine --min-angle 25 --region 3,1,1,3", "--region: the region box 3,1,1,3 is empty");
+  refused("refine --min-angle 25 --region-poly " + bowtie, "--region-poly: " + bowtie + ": a region polygon's");
+  refused("refine --min-angle 25 --region 1,1,2,2 --region-poly " + bowtie, "give one");
+  refused("triangulate --convex-hull", "'refine ...' expected");
+  refused("smooth --min-angle 25", "unknown operation 'smooth'");
+  refused("refine --algorithm improve --insertion bisection", "does not go with bisection");
+  refused("refine --algorithm midpoint-area", "midpoint-area needs a bound");
+}
+
+}  // namespace
+}  // namespace meshstep
