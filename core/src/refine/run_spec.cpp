@@ -91,6 +91,10 @@ template <class... Ts>
 struct Overloaded : Ts... {
   using Ts::operator()...;
 };
+// Spelled out for clang 14 (the fuzz build), which does not yet deduce an aggregate's
+// template arguments from its initialiser.
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
 
 // Sets the option's field from its (range-checked) text.
 void set_field(Operation& op, const ParameterInfo& p, std::string_view text) {
