@@ -34,7 +34,11 @@ std::string bounds_missed_words(std::size_t over_bounds, const surface::Bisectio
   if (report.over_max_edge > 0) words += std::to_string(report.over_max_edge) + " over --size";
   if (report.over_max_edge > 0 && report.over_max_area > 0) words += ", ";
   if (report.over_max_area > 0) words += std::to_string(report.over_max_area) + " over --max-area";
-  return words + ")";
+  words += ")";
+  if (report.too_fine_to_cut > 0)
+    words += "; " + std::to_string(report.too_fine_to_cut) +
+             " cut(s) refused: the doubles cannot cut those edges at these coordinates' magnitudes";
+  return words;
 }
 
 }  // namespace
@@ -120,6 +124,7 @@ int run_refine_surface(const SurfaceRefineArgs& args) {
           .field("area_before", report.area_before)
           .field("area", report.area_after)
           .field("capped", report.capped)
+          .field("too_fine_to_cut", report.too_fine_to_cut)
           .field("bounds_met", over_bounds == 0)
           .field("over_bounds", over_bounds)
           .field("over_size", report.over_max_edge)

@@ -108,12 +108,19 @@ void bisection_then_flips(const io::Surface& s, double dihedral, std::uint8_t bo
     fuzz::finding("bisection and flips left a surface that is not clean: " + io::describe(after));
   const std::size_t over = clearly_over(out, options);
   if (report.over_bounds < over) fuzz::finding("the report counts fewer triangles over the bounds than there are");
-  // A bound far above the rounding of the coordinates can always be met by cutting; below
-  // it an edge may be too short for its midpoint to differ from its ends.
+  // Uncapped, a run ends over the bounds only when it refused a cut that doubles cannot make
+  // (an edge too short for its midpoint to differ from its ends, or a midpoint rounded onto
+  // the line to an apex).
   const double smallest_bound = std::min(options.max_area > 0.0 ? std::sqrt(options.max_area) : INFINITY,
                                          options.max_edge > 0.0 ? options.max_edge : INFINITY);
-  if (!report.capped && over > 0 && smallest_bound > 1e-9 * largest_coordinate)
-    fuzz::finding("a triangle over the bounds at the end of a run that was not capped");
+  if (!report.capped && over > 0 && report.too_fine_to_cut == 0)
+    fuzz::finding("a triangle over the bounds at the end of a run that was not capped, and no cut refused");
+  // Longest-edge bisection keeps every angle above half the input's smallest (Rivara), so a
+  // target's altitude is at least about bound * sin(that half): far above the rounding of the
+  // coordinates, a cut is always possible.
+  const double half_smallest_angle = report.smallest_angle_before_deg * (3.14159265358979 / 360.0);
+  if (report.too_fine_to_cut > 0 && smallest_bound * std::sin(half_smallest_angle) > 1e-6 * largest_coordinate)
+    fuzz::finding("a cut refused although the bounds and the angles are far above the coordinates' rounding");
   surface::BisectionOptions unflipped = options;
   unflipped.flip_dihedral_deg = -1.0;
   surface::BisectionReport without;

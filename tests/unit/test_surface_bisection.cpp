@@ -320,6 +320,30 @@ TEST(SurfaceBisection, CoordinatesBeyondWhatDoublesMeasureAreRefused) {
   EXPECT_GT(bisect_surface(s, options).triangles.size(), folded_square(2).triangles.size());
 }
 
+TEST(SurfaceBisection, ACutThatDoublesCannotMakeIsRefusedAndCounted) {
+  // A tetrahedron with one corner at 4.4e27 beside corners a unit apart: the midpoints of
+  // its two long edges from 0 and from 1 round to the same point, so cutting both would
+  // make degenerate triangles. The run leaves what it cannot cut and says so.
+  Surface s;
+  s.vertices = {{0, 0, 0}, {1, 0, 0}, {4.4e27, 1, 0}, {0, 0, 1}};
+  s.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  BisectionOptions options;
+  options.max_edge = 1e27;
+  for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel}) {
+    options.data_structure = ds;
+    BisectionReport r;
+    const Surface out = bisect_surface(s, options, &r);
+    const io::SurfaceReport clean = io::report_surface(out);
+    EXPECT_EQ(clean.degenerate_triangles, 0u) << io::describe(clean);
+    EXPECT_TRUE(clean.clean()) << io::describe(clean);
+    EXPECT_EQ(clean.boundary_edges, 0u);
+    EXPECT_FALSE(r.capped);
+    EXPECT_GT(r.too_fine_to_cut, 0u);
+    EXPECT_GT(r.over_bounds, 0u);
+    EXPECT_GT(r.bisections, 0u);  // the cuts it could make, it made
+  }
+}
+
 TEST(SurfaceBisection, EdgeBoundMetOnEverySurfaceWithoutHangingVertices) {
   for (const Case& c : all_surfaces()) {
     BisectionOptions options;

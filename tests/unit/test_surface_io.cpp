@@ -479,6 +479,26 @@ TEST(SurfaceReport, HolesAndBowtiesCountOneLoopEach) {
   EXPECT_TRUE(r.clean());
 }
 
+TEST(SurfaceReport, LoopsTouchingAtSeveralVerticesFollowTheFans) {
+  // A triangle (0 5 8) joined to a band only at its three corners: its own rim is a loop,
+  // and the band's rim another, although a walk along the edges alone could pair them up
+  // at 0, 5 and 8 into three loops or two. Renumbering the vertices must not change that.
+  Surface s;
+  s.vertices = {{0, 0, 0}, {9, 0, 0}, {2, 0.3, 0}, {-0.1, 3, 0}, {2.3, 1.1, 0},
+                {2.3, 0.7, 0}, {0, 1.8, 0}, {1, 2, 0}, {1.6, 1.8, 0}};
+  s.triangles = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {3, 4, 7}, {3, 7, 6}, {0, 5, 8}, {4, 8, 7}};
+  io::SurfaceReport r = io::report_surface(s);
+  EXPECT_EQ(r.boundary_edges, 12u);
+  EXPECT_EQ(r.boundary_loops, 2u);
+  for (std::uint32_t shift = 1; shift < 9; ++shift) {
+    Surface renumbered = s;
+    for (std::uint32_t v = 0; v < 9; ++v) renumbered.vertices[(v + shift) % 9] = s.vertices[v];
+    for (auto& t : renumbered.triangles)
+      for (auto& v : t) v = (v + shift) % 9;
+    EXPECT_EQ(io::report_surface(renumbered).boundary_loops, 2u) << "shift " << shift;
+  }
+}
+
 TEST(SurfaceReport, FlippedTriangleMakesInconsistentEdges) {
   Surface s = cube();
   std::swap(s.triangles[4][1], s.triangles[4][2]);

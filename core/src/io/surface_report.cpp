@@ -4,23 +4,13 @@
 #include <limits>
 
 #include "meshstep/error.hpp"
-#include "meshstep/geometry/predicates.hpp"
+#include "meshstep/geometry/collinear3.hpp"
 #include "meshstep/io/surface_io.hpp"
 
 namespace meshstep::io {
 namespace {
 
 using Triangle = std::array<std::uint32_t, 3>;
-
-// Exactly collinear corners: their cross product is zero, and its three components are
-// the orientations of the corners projected on the yz, zx and xy planes, which the exact
-// 2D predicate decides without rounding error (for coordinates whose products neither
-// overflow nor underflow: see geometry/predicates.hpp).
-bool collinear(const Point3& a, const Point3& b, const Point3& c) {
-  return orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == 0.0 &&
-         orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == 0.0 &&
-         orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == 0.0;
-}
 
 bool repeats_a_vertex(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
 
@@ -111,6 +101,62 @@ std::size_t count_boundary_loops(const std::vector<EdgeUse>& edges) {
   return loops;
 }
 
+// A triangle's edge in its direction, and the triangle's third corner.
+struct Directed {
+  std::uint32_t from, to, apex;
+  friend bool operator<(const Directed& a, const Directed& b) {
+    return a.from != b.from ? a.from < b.from : a.to < b.to;
+  }
+};
+
+// Counts the boundary loops of a surface whose every edge has at most two triangles, which
+// run along it in opposite directions. Each boundary edge, directed as its triangle runs
+// along it, is followed by the next boundary edge round the fan of triangles at its end.
+// So two loops that touch at a vertex stay two, and a third loop that touches both there
+// (a chain walk could pair those edges either way) is counted one way only: cutting an edge
+// or flipping one inside the surface never changes the count.
+std::size_t count_fan_boundary_loops(const std::vector<Triangle>& triangles) {
+  std::vector<Directed> edges;
+  edges.reserve(3 * triangles.size());
+  for (const Triangle& t : triangles) {
+    if (repeats_a_vertex(t)) continue;
+    for (std::size_t k = 0; k < 3; ++k) edges.push_back({t[k], t[(k + 1) % 3], t[(k + 2) % 3]});
+  }
+  std::sort(edges.begin(), edges.end());
+  const auto find = [&](std::uint32_t from, std::uint32_t to) -> std::size_t {
+    const auto it = std::lower_bound(edges.begin(), edges.end(), Directed{from, to, 0});
+    return it != edges.end() && it->from == from && it->to == to ? static_cast<std::size_t>(it - edges.begin())
+                                                                : edges.size();
+  };
+  constexpr std::size_t kNotBoundary = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> next(edges.size(), kNotBoundary);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    if (find(edges[i].to, edges[i].from) != edges.size()) continue;  // an inner edge
+    // Round the fan at `to`: leave by the triangle's next edge, and cross each inner edge
+    // into the triangle beyond, until an edge has no triangle beyond it.
+    const std::uint32_t v = edges[i].to;
+    std::size_t e = find(v, edges[i].apex);
+    for (std::size_t turns = 0; turns <= edges.size(); ++turns) {
+      const std::size_t back = find(edges[e].to, v);
+      if (back == edges.size()) break;
+      e = find(v, edges[back].apex);
+    }
+    next[i] = e;
+  }
+  std::vector<char> seen(edges.size(), 0);
+  std::size_t loops = 0;
+  for (std::size_t start = 0; start < edges.size(); ++start) {
+    if (next[start] == kNotBoundary || seen[start]) continue;
+    std::size_t e = start;
+    while (e != kNotBoundary && e < edges.size() && !seen[e]) {
+      seen[e] = 1;
+      e = next[e];
+    }
+    loops += e == start;
+  }
+  return loops;
+}
+
 }  // namespace
 
 bool SurfaceReport::clean() const {
@@ -159,7 +205,9 @@ SurfaceReport report_surface(const Surface& s) {
     i = j;
   }
   r.boundary_edges = boundary.size();
-  r.boundary_loops = count_boundary_loops(boundary);
+  // Oriented and manifold, the fans decide the loops; otherwise the edges alone do.
+  r.boundary_loops = r.non_manifold_edges == 0 && r.inconsistent_edges == 0 ? count_fan_boundary_loops(s.triangles)
+                                                                             : count_boundary_loops(boundary);
   return r;
 }
 

@@ -76,6 +76,7 @@ io::Surface bisect_with(const io::Surface& in, const BisectionOptions& options, 
     rec.run_end(mesh);
     report.bisections = bisector.bisections();
     report.capped = bisector.capped();
+    report.too_fine_to_cut = bisector.too_fine_to_cut();
     reserve_huge(out.triangles, mesh.face_count());
     for (FaceId f = 0; f < mesh.face_capacity(); ++f) {
       if (!mesh.is_live(f)) continue;

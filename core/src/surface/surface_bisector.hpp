@@ -20,6 +20,7 @@
 #include <tuple>
 #include <vector>
 
+#include "meshstep/geometry/collinear3.hpp"
 #include "meshstep/geometry/point3.hpp"
 #include "meshstep/huge_pages.hpp"
 #include "meshstep/mesh/concept.hpp"
@@ -59,6 +60,7 @@ class SurfaceBisector {
   }
 
   std::size_t bisections() const { return bisections_; }
+  std::size_t too_fine_to_cut() const { return too_fine_to_cut_; }
   bool capped() const { return capped_; }
 
  private:
@@ -170,13 +172,16 @@ class SurfaceBisector {
   }
 
   // One bisection on f's path. False when none is possible: the cap is reached, or the
-  // edge is too short for its midpoint to differ from its ends (then f stays as it is).
+  // doubles cannot cut the edge (then f stays as it is, counted in too_fine_to_cut).
   bool bisect_terminal_edge(FaceId f) {
     const HalfEdge e = terminal_edge(f);
     const HalfEdge t = across(e);
     const VertexId a = mesh_.origin(e), b = mesh_.dest(e);
     const Point3 m = midpoint(points_[a], points_[b]);
-    if (m == points_[a] || m == points_[b]) return false;
+    if (!cuttable(e, m) || (t != kNone && !cuttable(t, m))) {
+      ++too_fine_to_cut_;
+      return false;
+    }
     const std::size_t triangles_after = mesh_.face_count() + (t == kNone ? 1 : 2);
     if ((options_.max_triangles > 0 && triangles_after > options_.max_triangles) ||
         triangles_after > kMostFaces || points_.size() >= kInfiniteVertex) {
@@ -213,6 +218,15 @@ class SurfaceBisector {
     return true;
   }
 
+  // Whether cutting h's edge at m leaves two true triangles on h's side. The rounded
+  // midpoint may fall on an end of a short edge, or, where coordinates of very different
+  // magnitudes meet (1 beside 4e27), exactly on the line from an end to the apex: then
+  // cutting would make a degenerate triangle, which the exact test refuses.
+  bool cuttable(HalfEdge h, const Point3& m) const {
+    const Point3 &a = points_[mesh_.origin(h)], &b = points_[mesh_.dest(h)], &c = points_[mesh_.apex(h)];
+    return !collinear(a, m, c) && !collinear(m, b, c);
+  }
+
   // The faces round the new vertex after split_edge returned r = v->b in (v, b, c): that
   // face, (a, v, c) beside it, and, when the edge had a twin, (b, v, d) and (v, a, d).
   std::size_t faces_of_split(HalfEdge r, FaceId* out) const {
@@ -243,6 +257,7 @@ class SurfaceBisector {
   TargetQueue targets_;
   std::array<FaceId, 4> new_faces_{};
   std::size_t bisections_ = 0;
+  std::size_t too_fine_to_cut_ = 0;
   bool capped_ = false;
 };
 

@@ -28,6 +28,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "meshstep/geometry/collinear3.hpp"
 #include "meshstep/geometry/point3.hpp"
 #include "meshstep/mesh/concept.hpp"
 #include "meshstep/replay/recorder.hpp"
@@ -161,6 +162,8 @@ class SurfaceFlipper {
     for (const Triangle& n : {new_t, new_s}) {
       const Triangle q = from_smallest(n);
       if (!(dot(normal(p(q[0]), p(q[1]), p(q[2])), mean) > 0.0)) return;
+      // A rounded cross product can be nonzero for exactly collinear corners.
+      if (collinear(p(q[0]), p(q[1]), p(q[2]))) return;
     }
     const double before = std::min(smallest_angle(old_t), smallest_angle(old_s));
     const double after = std::min(smallest_angle(new_t), smallest_angle(new_s));

@@ -47,8 +47,11 @@ struct BisectionReport {
   double area_after = 0.0;
   bool capped = false;  // max_triangles stopped the run before every bound was met
   // Triangles of the output over a bound (either), over max_edge, over max_area: none
-  // unless the cap stopped the run or an edge was too short to cut. Flips never add to them.
+  // unless the cap stopped the run or doubles could not cut an edge. Flips never add to them.
   std::size_t over_bounds = 0, over_max_edge = 0, over_max_area = 0;
+  // Targets left over a bound because the doubles cannot cut their terminal edge: its
+  // rounded midpoint is one of its ends, or makes a degenerate triangle with an apex.
+  std::size_t too_fine_to_cut = 0;
   std::size_t flips = 0;                      // with flip_dihedral_deg >= 0
   double largest_dihedral_flipped_deg = 0.0;  // of the pairs flipped
 };
@@ -59,8 +62,9 @@ struct BisectionReport {
 // manifold surface (border allowed): degenerate or duplicate triangles, edges of more than
 // two triangles, neighbours of opposite orientation, coordinates that are not finite; and
 // for a negative or non-finite bound, or a dihedral bound above 180. Vertices of no triangle are kept as they are. A
-// triangle whose terminal edge is too short for its rounded midpoint to differ from its
-// ends (a bound near the precision of the coordinates) is left as it is.
+// triangle whose terminal edge doubles cannot cut (its rounded midpoint is one of its ends,
+// or on the line from an end to an apex: a bound near the precision of the coordinates,
+// or coordinates of very different magnitudes) is left as it is, and counted.
 io::Surface bisect_surface(const io::Surface& in, const BisectionOptions& options,
                            BisectionReport* report = nullptr);
 
