@@ -43,12 +43,16 @@ std::vector<Row> rows_of(std::span<const Part> parts) {
   return rows;
 }
 
-// ".poly  pslg, RW: Triangle's PSLG: ...": the format table (io/formats.hpp).
+// ".poly  pslg, RW: Triangle's PSLG: ...": the format table (io/formats.hpp), with what a 2D
+// mesh written by `-o OUT.EXT` keeps ("2D mesh: ...") where the format has that writer.
 std::vector<Row> format_rows() {
   std::vector<Row> rows;
   for (const io::FileFormat& f : io::file_formats())
-    rows.push_back({std::string(f.extension), std::string(io::to_string(f.kind)) + ", " + (f.read ? "R" : "") +
-                                                  (f.write ? "W" : "") + ": " + std::string(f.description)});
+    rows.push_back({std::string(f.extension),
+                    std::string(io::to_string(f.kind)) + ", " + (f.read ? "R" : "") + (f.write ? "W" : "") + ": " +
+                        std::string(f.description) +
+                        (f.write_mesh ? "; 2D mesh (-o OUT" + std::string(f.extension) + "): " + std::string(f.carries)
+                                      : std::string())});
   return rows;
 }
 

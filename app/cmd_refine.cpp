@@ -94,7 +94,8 @@ Command add_refine_command(CLI::App& parent) {
       "algorithm's default applies: a minimum angle of 20.7 degrees, an aspect ratio of 2.83\n"
       "for lepp-aspect; lepp-bisection and midpoint-area need --max-area or --size. INPUT may\n"
       "also be a mesh PREFIX (PREFIX.node + PREFIX.ele [+ PREFIX.area]) to refine again.");
-  cmd->add_option("INPUT", args->input, "Input .poly or .node file (Triangle's formats), or a mesh PREFIX\n"
+  cmd->add_option("INPUT", args->input, "Input .poly or .node file (Triangle's formats), .geojson or .wkt\n"
+                  "polygons (holes as holes), or a mesh PREFIX\n"
                   "(PREFIX.node + PREFIX.ele, optionally PREFIX.area) to refine again, as Triangle's -r;\n"
                   "or a 3D surface (.off, .obj, .ply, .stl): --algorithm lepp-bisection with --size L\n"
                   "and/or --max-area A, edges and areas in 3D; -o names the output surface file")->required();
@@ -103,7 +104,8 @@ Command add_refine_command(CLI::App& parent) {
   add_record_option(*cmd, args->record);
   cmd->add_option("-o,--output", args->prefix,
                   "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly\n"
-                  "(default: INPUT without extension plus .1, as Triangle does)");
+                  "(default: INPUT without extension plus .1, as Triangle does);\n"
+                  "or one file OUT.msh, .vtu, .obj, .off, .ply or .stl in that format (meshstep list)");
   cmd->add_option("--stats", args->stats,
                   "Print statistics; 'json': the last line of standard output is one JSON object\n"
                   "(vertices, triangles, steiner, segment_splits, bad_triangles, bounds_met,\n"

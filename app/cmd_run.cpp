@@ -107,10 +107,11 @@ Command add_run_command(CLI::App& parent) {
       "or 'refine --max-area 2e-5 --region 0.2,-0.8,0.45,-0.5'; '#' starts a comment. Every\n"
       "line is checked before any work (docs/recipes.md).");
   cmd->add_option("RECIPE", args->recipe, "The recipe file")->required();
-  cmd->add_option("INPUT", args->input, "Input .poly or .node file, or a mesh PREFIX to refine again")->required();
+  cmd->add_option("INPUT", args->input, "Input .poly, .node, .geojson or .wkt file, or a mesh PREFIX to refine again")->required();
   cmd->add_option("-o,--output", args->prefix,
                   "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly\n"
-                  "(default: INPUT without extension plus .1, as refine does)");
+                  "(default: INPUT without extension plus .1, as refine does);\n"
+                  "or one file OUT.msh, .vtu, .obj, .off, .ply or .stl in that format (meshstep list)");
   add_record_option(*cmd, args->record);
   cmd->add_option("--stats", args->stats, "Print statistics; 'json': as refine's, the last line of standard output")
       ->check(CLI::IsMember({"json"}));

@@ -11,6 +11,7 @@
 #include "meshstep/error.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/replay/log_writer.hpp"
+#include "mesh_output.hpp"
 #include "output_prefix.hpp"
 #include "operation_options.hpp"
 #include "record_option.hpp"
@@ -49,11 +50,16 @@ int run_triangulate(const TriangulateArgs& args) {
   const bool prints_angles = verbosity == Verbosity::verbose || args.stats == "json";
   options.keep_mesh = !args.no_output || prints_angles;
   const std::string prefix = args.prefix.empty() ? default_output_prefix(args.input) : args.prefix;
-  if (const int refused = refuse_overwrites(FileRoles()
-                                                .reads_pslg(args.input)
-                                                .writes_mesh(args.prefix.empty() ? "" : "-o", args.no_output ? "" : prefix)
-                                                .writes_log("--record", args.record)))
-    return refused;
+  const MeshOutput output = MeshOutput::named(prefix);
+  if (output.single_file() && (args.edges || args.neighbors)) {
+    print_error(std::string(args.edges ? "-e/--edges" : "-n/--neighbors") +
+                " writes a file of Triangle's beside PREFIX.node: it needs -o PREFIX, not the one file -o " + prefix);
+    return kExitUsage;
+  }
+  FileRoles files;
+  files.reads_pslg(args.input);
+  if (!args.no_output) output.add_to(files, args.prefix.empty() ? "" : "-o");
+  if (const int refused = refuse_overwrites(files.writes_log("--record", args.record))) return refused;
 
   Stopwatch clock;
   std::vector<std::string> warnings;
@@ -84,8 +90,8 @@ int run_triangulate(const TriangulateArgs& args) {
     triangulate_ms = clock.lap_ms();
     for (const std::string& w : report.warnings) print_warning(verbosity, args.input + ": " + w);
     if (!args.no_output) {
-      print_progress(verbosity, "writing " + prefix + ".node/.ele/.poly");
-      io::write_mesh(prefix, mesh, {.edges = args.edges, .neighbors = args.neighbors});
+      print_progress(verbosity, "writing " + output.files());
+      output.write(mesh, {.edges = args.edges, .neighbors = args.neighbors});
       write_ms = clock.lap_ms();
     }
     // Last: the log writer's thread finishes its backlog while the mesh is written.
@@ -103,7 +109,8 @@ int run_triangulate(const TriangulateArgs& args) {
     std::printf("%s: %zu vertices, %zu segments -> %zu triangles, %zu Steiner vertices%s\n",
                 args.input.c_str(), input_vertices, input_segments, report.triangles,
                 report.steiner_vertices,
-                args.no_output ? " (not written)" : (", written to " + prefix + ".*").c_str());
+                args.no_output ? " (not written)"
+                : (", written to " + (output.single_file() ? prefix : prefix + ".*")).c_str());
   }
   if (verbosity == Verbosity::verbose) {
     std::printf("  angles: min %.4f, max %.4f degrees; %zu duplicates merged; %zu segment splits;"
@@ -144,11 +151,12 @@ Command add_triangulate_command(CLI::App& parent) {
       "Delaunay triangulation of a .node point set, or constrained Delaunay triangulation of a\n"
       ".poly PSLG (segments kept as edges; crossing segments split at their intersection;\n"
       "triangles in holes and, unless --convex-hull, outside the segments removed).");
-  cmd->add_option("INPUT", args->input, "Input .node or .poly file (Triangle's formats)")
+  cmd->add_option("INPUT", args->input, "Input .node or .poly file (Triangle's formats), or .geojson or .wkt polygons")
       ->required();
   cmd->add_option("-o,--output", args->prefix,
                   "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly\n"
-                  "(default: INPUT without extension plus .1, as Triangle does)");
+                  "(default: INPUT without extension plus .1, as Triangle does);\n"
+                  "or one file OUT.msh, .vtu, .obj, .off, .ply or .stl in that format (meshstep list)");
   args->operation = std::make_unique<OperationOptions>(*cmd, OperationKind::triangulate);
   cmd->add_option("--stats", args->stats,
                   "Print statistics; 'json': the last line of standard output is one JSON object\n"

@@ -26,6 +26,7 @@
 #include "meshstep/replay/log_writer.hpp"
 #include "meshstep/replay/run_header.hpp"
 #include "memory_budget.hpp"
+#include "mesh_output.hpp"
 #include "output_prefix.hpp"
 #include "record_option.hpp"
 
@@ -259,7 +260,9 @@ int run_planar_refine(const PlanarRefineJob& job) {
     if (op.size && !size_length(op)) files.reads(*op.size);
     if (op.region && !op.region->polygon_file.empty()) files.reads(op.region->polygon_file);
   }
-  files.writes_mesh(job.prefix.empty() ? "" : "-o", job.no_output ? "" : prefix).writes_log("--record", job.record);
+  const MeshOutput output = MeshOutput::named(prefix);
+  if (!job.no_output) output.add_to(files, job.prefix.empty() ? "" : "-o");
+  files.writes_log("--record", job.record);
   if (const int refused = refuse_overwrites(files)) return refused;
 
   Stopwatch clock;
@@ -353,8 +356,8 @@ int run_planar_refine(const PlanarRefineJob& job) {
       if (stopped_by_budget) break;
     }
     if (!job.no_output && (!stopped_by_budget || job.write_partial)) {
-      print_progress(verbosity, "writing " + prefix + ".node/.ele/.poly");
-      io::write_mesh(prefix, mesh);
+      print_progress(verbosity, "writing " + output.files());
+      output.write(mesh);
       write_ms = clock.lap_ms();
     }
     // Last: the log writer's thread finishes its backlog while the mesh is written.
@@ -402,7 +405,9 @@ int run_planar_refine(const PlanarRefineJob& job) {
                 "max angle %.2f); %s\n",
                 job.input.c_str(), input_vertices, input_segments, mesh.triangles.size(), report.steiner_vertices,
                 angles.min_angle_deg, angles.max_angle_deg, outcome.c_str());
-    if (!job.no_output)
+    if (!job.no_output && output.single_file())
+      std::printf("  written to %s\n", prefix.c_str());
+    else if (!job.no_output)
       std::printf("  written to %s.node, .ele, .poly%s\n", prefix.c_str(), mesh.triangle_max_area.empty() ? "" : ", .area");
   }
   if (verbosity == Verbosity::verbose) {

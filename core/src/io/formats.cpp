@@ -6,26 +6,50 @@
 #include <cstring>
 #include <fstream>
 
+#include "meshstep/io/mesh_formats.hpp"
+#include "meshstep/io/polygon_io.hpp"
+#include "meshstep/io/triangle_io.hpp"
+
 namespace meshstep::io {
 namespace {
 
+constexpr std::string_view kSurfaceCarries = "triangles at z = 0 (no segments, markers or regions)";
+
 constexpr std::array kFormats = {
-    FileFormat{".poly", FileKind::pslg, true, true, "Triangle's PSLG: vertices, segments, holes, regions"},
-    FileFormat{".node", FileKind::points, true, true, "Triangle's vertices: a point set, or a mesh PREFIX's vertices"},
+    FileFormat{".poly", FileKind::pslg, true, true, "Triangle's PSLG: vertices, segments, holes, regions",
+               {}, read_poly},
+    FileFormat{".node", FileKind::points, true, true, "Triangle's vertices: a point set, or a mesh PREFIX's vertices",
+               {}, read_node},
     FileFormat{".ele", FileKind::mesh, true, true,
                "Triangle's triangles (with .node, a mesh PREFIX to check, view or refine again)"},
     FileFormat{".area", FileKind::area, true, true, "Triangle's per-triangle maximum areas (with a mesh PREFIX)"},
     FileFormat{".edge", FileKind::mesh, false, true, "Triangle's edges (-e)"},
     FileFormat{".neigh", FileKind::mesh, false, true, "Triangle's neighbours (-n)"},
+    FileFormat{".geojson", FileKind::pslg, true, false,
+               "GeoJSON polygons (Polygon, MultiPolygon, Feature, FeatureCollection; holes as holes) as a PSLG",
+               {}, read_geojson},
+    FileFormat{".wkt", FileKind::pslg, true, false, "WKT polygons (POLYGON, MULTIPOLYGON; holes as holes) as a PSLG",
+               {}, read_wkt},
+    FileFormat{".msh", FileKind::mesh, false, true, "gmsh mesh, format 4.1 ASCII",
+               "triangles; segments as line elements; physical groups from segment markers and region attributes",
+               nullptr, write_gmsh},
+    FileFormat{".vtu", FileKind::mesh, false, true, "VTK XML unstructured grid (ParaView)",
+               "triangles; cell data region, min_angle, quality (min angle / 60); point data marker",
+               nullptr, write_vtu},
     FileFormat{".asc", FileKind::grid, true, false,
                "ESRI ASCII grid (refine --size GRID.asc; terrain heights, NODATA kept out)"},
     FileFormat{".png", FileKind::grid, true, true, "8/16-bit greyscale heightmap (terrain); also pictures (render, export)"},
     FileFormat{".tif", FileKind::grid, true, false, "GeoTIFF height grid (terrain, read through GDAL when present)"},
     FileFormat{".tiff", FileKind::grid, true, false, "GeoTIFF height grid, as .tif"},
-    FileFormat{".off", FileKind::surface, true, true, "3D triangle surface (terrain output; refine input)"},
-    FileFormat{".obj", FileKind::surface, true, true, "3D triangle surface, Wavefront (terrain output; refine input)"},
-    FileFormat{".ply", FileKind::surface, true, true, "3D triangle surface, PLY ASCII or binary"},
-    FileFormat{".stl", FileKind::surface, true, true, "3D triangle surface, STL ASCII or binary"},
+    FileFormat{".off", FileKind::surface, true, true, "3D triangle surface (terrain output; refine input)",
+               kSurfaceCarries, nullptr, write_mesh_off},
+    FileFormat{".obj", FileKind::surface, true, true, "3D triangle surface, Wavefront (terrain output; refine input)",
+               kSurfaceCarries, nullptr, write_mesh_obj},
+    FileFormat{".ply", FileKind::surface, true, true, "3D triangle surface, PLY ASCII or binary (writes binary)",
+               kSurfaceCarries, nullptr, write_mesh_ply},
+    FileFormat{".stl", FileKind::surface, true, true,
+               "3D triangle surface, STL ASCII or binary (writes binary: float32 coordinates)", kSurfaceCarries,
+               nullptr, write_mesh_stl},
     FileFormat{".mslog", FileKind::log, true, true, "meshstep replay log (--record; read by meshstep log, render, view)"},
 };
 
@@ -42,6 +66,11 @@ const FileFormat* format_of(std::string_view path) {
   for (const FileFormat& f : kFormats)
     if (f.extension == extension) return &f;
   return nullptr;
+}
+
+const FileFormat* mesh_writer_for(std::string_view path) {
+  const FileFormat* f = format_of(path);
+  return f && f->write_mesh ? f : nullptr;
 }
 
 const char* to_string(FileKind kind) {

@@ -2,6 +2,7 @@
 #include "io/record_reader.hpp"
 #include "io/sections.hpp"
 #include "meshstep/error.hpp"
+#include "meshstep/io/formats.hpp"
 #include "meshstep/io/triangle_io.hpp"
 
 namespace meshstep::io {
@@ -21,7 +22,10 @@ Pslg read_pslg(const std::string& path, std::vector<std::string>* warnings) {
   };
   if (ends_with(".node")) return read_node(path, warnings);
   if (ends_with(".poly")) return read_poly(path, warnings);
-  throw InputError(path, 0, "unknown file type: expected a .node or .poly file");
+  // The polygon formats by the table (formats.hpp), in lower case as is_planar_input takes them.
+  for (const FileFormat& f : file_formats())
+    if (f.read_pslg && ends_with(f.extension)) return f.read_pslg(path, warnings);
+  throw InputError(path, 0, "unknown file type: expected a .node, .poly, .geojson or .wkt file");
 }
 
 }  // namespace meshstep::io

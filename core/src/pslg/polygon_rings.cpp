@@ -1,0 +1,173 @@
+// pslg_from_rings (pslg/polygon_rings.hpp): the rings' vertices and segments, then one
+// hole point per enclosed region that the rings cover an even number of times.
+#include "meshstep/pslg/polygon_rings.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <deque>
+#include <unordered_map>
+
+#include "meshstep/delaunay/triangulate.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/geometry/predicates.hpp"
+
+namespace meshstep {
+namespace {
+
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+  if (a > b) std::swap(a, b);
+  return (std::uint64_t{a} << 32) | b;
+}
+
+struct PointKey {
+  std::uint64_t x, y;
+  bool operator==(const PointKey&) const = default;
+};
+struct PointKeyHash {
+  std::size_t operator()(const PointKey& k) const { return std::hash<std::uint64_t>()(k.x * 0x9E3779B97F4A7C15ull ^ k.y); }
+};
+PointKey key_of(Point p) {
+  p.x += 0.0, p.y += 0.0;  // -0 and +0 are one coordinate
+  PointKey k;
+  std::memcpy(&k.x, &p.x, sizeof k.x);
+  std::memcpy(&k.y, &p.y, sizeof k.y);
+  return k;
+}
+
+// The hole points of `pslg` (whose segments each carry, as marker, 1 when the rings use
+// them an odd number of times and 2 when even): one inside each region, bounded by
+// segments and not reachable from outside the segments, that the rings enclose an even
+// number of times.
+std::vector<Point> even_region_points(const Pslg& pslg, TriangulateReport& report) {
+  TriangulateOptions options;
+  options.convex_hull = true;  // every triangle of the hull, so that parity can be counted from outside
+  options.compute_neighbors = true;
+  const TriMesh mesh = triangulate(pslg, options, &report);
+  std::unordered_map<std::uint64_t, int> segment_marker;  // pieces of segments, as the mesh has them
+  for (const Segment& s : mesh.segments) segment_marker.emplace(edge_key(s.a, s.b), s.marker);
+  const auto edge = [&](std::size_t t, int i) {
+    const auto& tri = mesh.triangles[t];
+    return segment_marker.find(edge_key(tri[(i + 1) % 3], tri[(i + 2) % 3]));
+  };
+
+  // Parity: 0 outside everything; crossing a segment used an odd number of times flips it.
+  const std::size_t n = mesh.triangles.size();
+  std::vector<int> parity(n, -1);
+  std::deque<std::size_t> queue;
+  for (std::size_t t = 0; t < n; ++t)
+    for (int i = 0; i < 3 && parity[t] < 0; ++i)
+      if (mesh.neighbors[t][i] == kNoIndex) {
+        const auto e = edge(t, i);
+        parity[t] = e != segment_marker.end() && e->second == 1 ? 1 : 0;
+        queue.push_back(t);
+      }
+  while (!queue.empty()) {
+    const std::size_t t = queue.front();
+    queue.pop_front();
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t u = mesh.neighbors[t][i];
+      if (u == kNoIndex || parity[u] >= 0) continue;
+      const auto e = edge(t, i);
+      parity[u] = parity[t] ^ (e != segment_marker.end() && e->second == 1 ? 1 : 0);
+      queue.push_back(u);
+    }
+  }
+
+  // Regions: triangles connected without crossing any segment (what a hole point eats).
+  std::vector<std::uint32_t> region(n, kNoIndex);
+  std::vector<Point> holes;
+  for (std::size_t seed = 0; seed < n; ++seed) {
+    if (region[seed] != kNoIndex) continue;
+    const std::uint32_t id = static_cast<std::uint32_t>(seed);
+    std::vector<std::size_t> members{seed};
+    region[seed] = id;
+    bool open_to_outside = false;  // a hull edge that is no segment: removed as the outside
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      const std::size_t t = members[k];
+      for (int i = 0; i < 3; ++i) {
+        const bool segment = edge(t, i) != segment_marker.end();
+        const std::uint32_t u = mesh.neighbors[t][i];
+        if (u == kNoIndex) open_to_outside = open_to_outside || !segment;
+        if (u == kNoIndex || segment || region[u] != kNoIndex) continue;
+        region[u] = id;
+        members.push_back(u);
+      }
+    }
+    if (open_to_outside || parity[seed] != 0) continue;
+    // The largest triangle's centroid, unless rounding put it on an edge: then the next.
+    const auto area = [&](std::size_t t) {
+      const auto& tri = mesh.triangles[t];
+      return orient2d(mesh.points[tri[0]], mesh.points[tri[1]], mesh.points[tri[2]]);
+    };
+    std::sort(members.begin(), members.end(), [&](std::size_t a, std::size_t b) { return area(a) > area(b); });
+    for (const std::size_t t : members) {
+      const Point &a = mesh.points[mesh.triangles[t][0]], &b = mesh.points[mesh.triangles[t][1]],
+                  &c = mesh.points[mesh.triangles[t][2]];
+      const Point g{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
+      if (orient2d(a, b, g) > 0 && orient2d(b, c, g) > 0 && orient2d(c, a, g) > 0) {
+        holes.push_back(g);
+        break;
+      }
+    }
+  }
+  return holes;
+}
+
+}  // namespace
+
+Pslg pslg_from_rings(const std::string& file, const std::vector<PolygonRing>& rings,
+                     std::vector<std::string>* warnings) {
+  if (rings.empty()) throw InputError(file, 0, "no polygon in the file");
+  Pslg pslg;
+  std::unordered_map<PointKey, std::uint32_t, PointKeyHash> vertex_of;
+  struct Use {
+    std::size_t segment;
+    int count;
+  };
+  std::unordered_map<std::uint64_t, Use> uses;
+  for (const PolygonRing& ring : rings) {
+    std::vector<std::uint32_t> chain;
+    for (const Point& p : ring.points) {
+      if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        throw InputError(file, ring.line, "a coordinate of this ring is not finite");
+      const auto [it, added] = vertex_of.emplace(key_of(p), static_cast<std::uint32_t>(pslg.points.size()));
+      if (added) pslg.points.push_back(p);
+      if (chain.empty() || chain.back() != it->second) chain.push_back(it->second);
+    }
+    while (chain.size() > 1 && chain.back() == chain.front()) chain.pop_back();
+    std::vector<std::uint32_t> distinct = chain;
+    std::sort(distinct.begin(), distinct.end());
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    if (distinct.size() < 3)
+      throw InputError(file, ring.line,
+                       std::string(ring.hole ? "a hole" : "a polygon") +
+                           " ring needs at least 3 distinct vertices; this one has " + std::to_string(distinct.size()));
+    for (std::size_t i = 0; i < chain.size(); ++i) {
+      const std::uint32_t a = chain[i], b = chain[(i + 1) % chain.size()];
+      const auto [it, added] = uses.emplace(edge_key(a, b), Use{pslg.segments.size(), 0});
+      ++it->second.count;
+      if (added) pslg.segments.push_back({a, b, ring.hole ? 2 : 1});
+    }
+  }
+  pslg.has_segment_markers = true;
+  // The copy to triangulate says by its markers which segments change the count.
+  Pslg parity = pslg;
+  for (const auto& [key, use] : uses) parity.segments[use.segment].marker = use.count % 2 ? 1 : 2;
+  TriangulateReport report;
+  try {
+    pslg.holes = even_region_points(parity, report);
+  } catch (const InputError& e) {
+    throw InputError(file, 0, e.message());
+  }
+  // Valid polygons' rings meet at most at vertices; crossing ones are split where they
+  // cross (by the triangulation, as for a .poly), and even-odd still says what is a hole.
+  if (warnings && report.steiner_vertices)
+    warnings->push_back(file + ": the rings cross " + std::to_string(report.steiner_vertices) +
+                        " times (a polygon that is not valid): meshed with its segments split there, holes where the "
+                        "rings enclose a region an even number of times");
+  return pslg;
+}
+
+}  // namespace meshstep
