@@ -148,6 +148,21 @@ inline int write_seeds(const fs::path& assets, const fs::path& out) {
         "OFF\n9 8 0\n0.09 0.17 0\n1.21 0.31 0\n2.17 0.3 0\n-0.33 0.98 0\n1.31 1.1 0\n2.28 0.73 0\n-0.02 1.82 0\n"
         "1.03 2.05 0\n1.66 1.8 0\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 3 4 7\n3 3 7 6\n3 4 5 8\n3 4 8 7\n");
 
+  // Polygons: the first byte picks the reader (0 GeoJSON, 1 WKT), the rest is the file.
+  write(out / "polygons" / "lake.geojson",
+        std::string(1, '\0') + R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
+ "geometry": {"type": "Polygon", "coordinates": [[[0,0],[4,0],[4,4],[0,4],[0,0]],
+  [[1,1],[3,1],[3,1.5],[1.5,1.5],[1.5,2.5],[3,2.5],[3,3],[1,3],[1,1]]]}}]})");
+  write(out / "polygons" / "island.geojson",
+        std::string(1, '\0') + R"({"type": "MultiPolygon", "coordinates": [
+ [[[0,0],[10,0],[10,10],[0,10],[0,0]], [[2,2],[8,2],[8,8],[2,8],[2,2]]],
+ [[[4,4],[6,4],[6,6],[4,6],[4,4]]]]})");
+  write(out / "polygons" / "lake.wkt",
+        std::string(1, '\1') + "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 3 1, 3 3, 1 3, 1 1))\n");
+  write(out / "polygons" / "collection.wkt",
+        std::string(1, '\1') + "SRID=4326;GEOMETRYCOLLECTION (POINT (9 9), MULTIPOLYGON (((0 0, 2 0, 2 2, 0 0)), "
+                                "((3 0, 5 0, 5 2 7, 3 0))))\n");
+
   // Terrains: small height grids, one with a hole of no data and a corner without any.
   write(out / "terrain" / "hill.asc", kHillGrid);
   write(out / "terrain" / "holes.asc", kHolesGrid);
