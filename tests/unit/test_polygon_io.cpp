@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/polygon_io.hpp"
+#include "meshstep/io/shortest_text.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/refine/quality.hpp"
 #include "temp_dir.hpp"
@@ -113,6 +115,21 @@ TEST(PolygonIo, AdjacentFeaturesShareTheirBorderWithoutAHole) {
   EXPECT_NE(warnings[1].find("parcels.geojson:7: a Point is not a polygon"), std::string::npos) << warnings[1];
 }
 
+// A zero-width spike, as real coastlines have: the ring goes down a line and back up it,
+// over segments that overlap. Each piece is run twice, so crossing it changes nothing: no
+// hole, the whole square meshed.
+TEST(PolygonIo, ASpikeThatDoublesBackMakesNoHole) {
+  TempDir dir;
+  const Pslg p = read(dir, "spike.wkt", "POLYGON ((0 0, 4 0, 4 4, 2 4, 2 1, 2 3, 2 4, 0 4, 0 0))");
+  EXPECT_TRUE(p.holes.empty()) << p.holes.size() << " holes, the first at " << p.holes[0].x << ", " << p.holes[0].y;
+  EXPECT_DOUBLE_EQ(mesh_area(triangulate(p)), 16.0);
+  // And the same spike into a hole: the hole is still one hole.
+  const Pslg h = read(dir, "spike_hole.wkt",
+                      "POLYGON ((0 0, 8 0, 8 8, 0 8, 0 0), (2 2, 6 2, 6 6, 4 6, 4 3, 4 5, 4 6, 2 6, 2 2))");
+  EXPECT_EQ(h.holes.size(), 1u);
+  EXPECT_DOUBLE_EQ(mesh_area(triangulate(h)), 64.0 - 16.0);
+}
+
 TEST(PolygonIo, WktVariantsReadTheSameSquare) {
   TempDir dir;
   for (const char* text : {"POLYGON((0 0,1 0,1 1,0 1,0 0))", "POLYGON Z ((0 0 5, 1 0 5, 1 1 5, 0 1 5, 0 0 5))",
@@ -187,6 +204,56 @@ TEST(PolygonIo, MalformedWktIsRefusedAtItsLine) {
       {"open.wkt", "LINESTRING (0 0, 1 1", 1, "never closed"},
   };
   for (const Malformed& m : cases) expect_refused(m);
+}
+
+}  // namespace
+}  // namespace meshstep
+
+namespace meshstep {
+namespace {
+
+// Real water polygons (OpenStreetMap, via mapbox/earcut's fixtures, kept in ../shared/data
+// as .poly files whose segments run ring after ring, the shell first): written back as a
+// GeoJSON Polygon, read by read_geojson, meshed. Each hole ring of the data holds a hole
+// point, and the mesh's area is the polygon's (shell's area less the holes'), to the little
+// the data's crossing rings and zero-width spikes make of it. (The .poly's own hole points,
+// one per hole ring, leave the pockets its spikes enclose in the mesh: its area is twice
+// the polygon's, so it is no reference.)
+TEST(PolygonIoSharedData, WaterPolygonsAsGeoJsonHaveTheirHoles) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(MESHSTEP_SHARED_DATA) / "pslg";
+  if (!fs::exists(dir / "earcut_water.poly")) GTEST_SKIP() << "no shared data at " << dir << ": water polygons skipped";
+  TempDir tmp;
+  for (const char* name : {"earcut_water.poly", "earcut_water2.poly"}) {
+    const Pslg poly = io::read_poly((dir / name).string());
+    std::vector<std::vector<Point>> rings;
+    std::size_t start = 0;
+    for (std::size_t s = 0; s < poly.segments.size(); ++s) {
+      if (s == start) rings.emplace_back();
+      rings.back().push_back(poly.points[poly.segments[s].a]);
+      if (poly.segments[s].b == poly.segments[start].a) start = s + 1;
+    }
+    ASSERT_EQ(start, poly.segments.size()) << name << ": the segments are not closed rings";
+    std::string json = "{\"type\": \"Polygon\", \"coordinates\": [";
+    double polygon_area = 0;
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      json += r ? ",\n[" : "\n[";
+      for (const Point& p : rings[r]) json += "[" + io::shortest_text(p.x) + "," + io::shortest_text(p.y) + "],";
+      json += "[" + io::shortest_text(rings[r][0].x) + "," + io::shortest_text(rings[r][0].y) + "]]";
+      double twice = 0;
+      for (std::size_t i = 0, j = rings[r].size() - 1; i < rings[r].size(); j = i++)
+        twice += rings[r][j].x * rings[r][i].y - rings[r][i].x * rings[r][j].y;
+      polygon_area += (r == 0 ? 0.5 : -0.5) * std::fabs(twice);
+    }
+    json += "]}";
+    const Pslg geo = io::read_geojson(tmp.write("water.geojson", json));
+    for (std::size_t r = 1; r < rings.size(); ++r) {
+      bool found = false;
+      for (const Point& h : geo.holes) found = found || inside(rings[r], h);
+      EXPECT_TRUE(found) << name << ": hole ring " << r << " has no hole point";
+    }
+    EXPECT_NEAR(mesh_area(triangulate(geo)), polygon_area, 1e-3 * polygon_area) << name;
+  }
 }
 
 }  // namespace

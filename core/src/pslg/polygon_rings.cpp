@@ -36,17 +36,62 @@ PointKey key_of(Point p) {
   return k;
 }
 
-// The hole points of `pslg` (whose segments each carry, as marker, 1 when the rings use
-// them an odd number of times and 2 when even): one inside each region, bounded by
-// segments and not reachable from outside the segments, that the rings enclose an even
-// number of times.
-std::vector<Point> even_region_points(const Pslg& pslg, TriangulateReport& report) {
+// How many times the rings run along each constrained edge of `mesh`, the triangulation of
+// `pslg` (whose segment s the rings use uses[s] times). The triangulation splits segments
+// where vertices lie on them and where they cross, and a spike that doubles back on itself
+// (common in real coastlines) makes two segments overlap: a piece of the mesh may then lie
+// on several input segments, and only the total says whether crossing it changes the
+// count. Each input segment is walked from end to end along the mesh's constrained edges,
+// each step to the neighbour that goes toward the far end most nearly along the segment
+// (a crossing's vertex is rounded, so off the line by a rounding).
+std::unordered_map<std::uint64_t, int> uses_of_pieces(const Pslg& pslg, const std::vector<int>& uses,
+                                                      const TriMesh& mesh) {
+  std::unordered_map<std::uint64_t, int> pieces;
+  std::vector<std::vector<std::uint32_t>> along(mesh.points.size());
+  for (const Segment& s : mesh.segments) {
+    along[s.a].push_back(s.b);
+    along[s.b].push_back(s.a);
+    pieces.emplace(edge_key(s.a, s.b), 0);
+  }
+  for (std::size_t s = 0; s < pslg.segments.size(); ++s) {
+    const std::uint32_t a = pslg.segments[s].a, b = pslg.segments[s].b;
+    const Point target = mesh.points[b];
+    std::uint32_t at = a;
+    for (std::size_t steps = 0; at != b && steps < mesh.points.size(); ++steps) {
+      const Point from = mesh.points[at];
+      const double dx = target.x - from.x, dy = target.y - from.y, length2 = dx * dx + dy * dy;
+      std::uint32_t best = kNoIndex;
+      double best_sine = 1e-6;  // farther off the line than this: no piece of this segment
+      for (const std::uint32_t x : along[at]) {
+        if (x == b) {
+          best = b;
+          break;
+        }
+        const double ex = mesh.points[x].x - from.x, ey = mesh.points[x].y - from.y;
+        const double dot = ex * dx + ey * dy, e2 = ex * ex + ey * ey;
+        if (dot <= 0.0 || e2 >= length2) continue;  // backward, or past the far end
+        const double sine = std::fabs(ex * dy - ey * dx) / std::sqrt(e2 * length2);
+        if (sine < best_sine) best_sine = sine, best = x;
+      }
+      if (best == kNoIndex) break;  // not found: the pieces walked so far keep their counts
+      pieces[edge_key(at, best)] += uses[s];
+      at = best;
+    }
+  }
+  return pieces;
+}
+
+// The hole points of `pslg`, whose segment s the rings use uses[s] times: one inside each
+// region, bounded by segments and not reachable from outside them, that the rings enclose
+// an even number of times.
+std::vector<Point> even_region_points(const Pslg& pslg, const std::vector<int>& uses, TriangulateReport& report) {
   TriangulateOptions options;
   options.convex_hull = true;  // every triangle of the hull, so that parity can be counted from outside
   options.compute_neighbors = true;
   const TriMesh mesh = triangulate(pslg, options, &report);
-  std::unordered_map<std::uint64_t, int> segment_marker;  // pieces of segments, as the mesh has them
-  for (const Segment& s : mesh.segments) segment_marker.emplace(edge_key(s.a, s.b), s.marker);
+  // Per constrained edge: 1 when crossing it changes the count (used an odd number of times), else 2.
+  std::unordered_map<std::uint64_t, int> segment_marker = uses_of_pieces(pslg, uses, mesh);
+  for (auto& [key, count] : segment_marker) count = count % 2 ? 1 : 2;
   const auto edge = [&](std::size_t t, int i) {
     const auto& tri = mesh.triangles[t];
     return segment_marker.find(edge_key(tri[(i + 1) % 3], tri[(i + 2) % 3]));
@@ -152,12 +197,11 @@ Pslg pslg_from_rings(const std::string& file, const std::vector<PolygonRing>& ri
     }
   }
   pslg.has_segment_markers = true;
-  // The copy to triangulate says by its markers which segments change the count.
-  Pslg parity = pslg;
-  for (const auto& [key, use] : uses) parity.segments[use.segment].marker = use.count % 2 ? 1 : 2;
+  std::vector<int> use_counts(pslg.segments.size());
+  for (const auto& [key, use] : uses) use_counts[use.segment] = use.count;
   TriangulateReport report;
   try {
-    pslg.holes = even_region_points(parity, report);
+    pslg.holes = even_region_points(pslg, use_counts, report);
   } catch (const InputError& e) {
     throw InputError(file, 0, e.message());
   }
