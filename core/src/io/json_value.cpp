@@ -74,7 +74,8 @@ class Parser {
           fail("unexpected " + describe_here() + ": expected a member name in quotes");
         std::string key = string();
         if (!take(':')) fail("unexpected " + describe_here() + ": expected ':' after the member name");
-        v.members.emplace_back(std::move(key), value(depth + 1));
+        v.keys.push_back(std::move(key));
+        v.values.push_back(value(depth + 1));
       } while (take(','));
       if (!take('}')) fail("unexpected " + describe_here() + ": expected ',' or '}' in an object");
     } else if (c == '[') {
@@ -219,8 +220,8 @@ class Parser {
 }  // namespace
 
 const JsonValue* JsonValue::member(std::string_view key) const {
-  for (auto it = members.rbegin(); it != members.rend(); ++it)
-    if (it->first == key) return &it->second;
+  for (std::size_t i = keys.size(); i-- > 0;)
+    if (keys[i] == key) return &values[i];
   return nullptr;
 }
 

@@ -8,7 +8,6 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
-#include <utility>
 #include <vector>
 
 namespace meshstep::io::detail {
@@ -22,7 +21,10 @@ struct JsonValue {
   double number = 0.0;
   std::string text;                                        // a string's value
   std::vector<JsonValue> items;                            // an array's values
-  std::vector<std::pair<std::string, JsonValue>> members;  // an object's, in file order
+  // An object's members, in file order: keys[i] names values[i]. (Two vectors: a vector of
+  // pairs of this type, still incomplete here, is refused by clang's library checks.)
+  std::vector<std::string> keys;
+  std::vector<JsonValue> values;
   std::size_t line = 0;                                    // 1-based, where the value starts
 
   // The member named `key` (the last one, when a key repeats), or null.

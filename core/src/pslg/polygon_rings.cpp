@@ -36,6 +36,35 @@ PointKey key_of(Point p) {
   return k;
 }
 
+// The constrained edges of a mesh around each vertex, in compressed rows (a vertex has few:
+// a lookup is a scan of two or three entries, where a hash map cost half the reading time
+// of a million-vertex polygon), each with how many times the rings run along it.
+struct ConstrainedEdges {
+  std::vector<std::size_t> start;  // vertex v's entries: [start[v], start[v + 1])
+  std::vector<std::uint32_t> other;
+  std::vector<int> uses;
+
+  explicit ConstrainedEdges(const TriMesh& mesh) : start(mesh.points.size() + 1, 0) {
+    for (const Segment& s : mesh.segments) ++start[s.a + 1], ++start[s.b + 1];
+    for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
+    other.resize(start.back());
+    uses.assign(start.back(), 0);
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    for (const Segment& s : mesh.segments) other[next[s.a]++] = s.b, other[next[s.b]++] = s.a;
+  }
+  // The entry u -> v, or npos when u v is no constrained edge.
+  std::size_t find(std::uint32_t u, std::uint32_t v) const {
+    for (std::size_t k = start[u]; k < start[u + 1]; ++k)
+      if (other[k] == v) return k;
+    return npos;
+  }
+  void add(std::uint32_t u, std::uint32_t v, int n) {
+    uses[find(u, v)] += n;
+    uses[find(v, u)] += n;
+  }
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+};
+
 // How many times the rings run along each constrained edge of `mesh`, the triangulation of
 // `pslg` (whose segment s the rings use uses[s] times). The triangulation splits segments
 // where vertices lie on them and where they cross, and a spike that doubles back on itself
@@ -44,15 +73,8 @@ PointKey key_of(Point p) {
 // count. Each input segment is walked from end to end along the mesh's constrained edges,
 // each step to the neighbour that goes toward the far end most nearly along the segment
 // (a crossing's vertex is rounded, so off the line by a rounding).
-std::unordered_map<std::uint64_t, int> uses_of_pieces(const Pslg& pslg, const std::vector<int>& uses,
-                                                      const TriMesh& mesh) {
-  std::unordered_map<std::uint64_t, int> pieces;
-  std::vector<std::vector<std::uint32_t>> along(mesh.points.size());
-  for (const Segment& s : mesh.segments) {
-    along[s.a].push_back(s.b);
-    along[s.b].push_back(s.a);
-    pieces.emplace(edge_key(s.a, s.b), 0);
-  }
+ConstrainedEdges uses_of_pieces(const Pslg& pslg, const std::vector<int>& uses, const TriMesh& mesh) {
+  ConstrainedEdges edges(mesh);
   for (std::size_t s = 0; s < pslg.segments.size(); ++s) {
     const std::uint32_t a = pslg.segments[s].a, b = pslg.segments[s].b;
     const Point target = mesh.points[b];
@@ -62,7 +84,8 @@ std::unordered_map<std::uint64_t, int> uses_of_pieces(const Pslg& pslg, const st
       const double dx = target.x - from.x, dy = target.y - from.y, length2 = dx * dx + dy * dy;
       std::uint32_t best = kNoIndex;
       double best_sine = 1e-6;  // farther off the line than this: no piece of this segment
-      for (const std::uint32_t x : along[at]) {
+      for (std::size_t k = edges.start[at]; k < edges.start[at + 1]; ++k) {
+        const std::uint32_t x = edges.other[k];
         if (x == b) {
           best = b;
           break;
@@ -74,11 +97,11 @@ std::unordered_map<std::uint64_t, int> uses_of_pieces(const Pslg& pslg, const st
         if (sine < best_sine) best_sine = sine, best = x;
       }
       if (best == kNoIndex) break;  // not found: the pieces walked so far keep their counts
-      pieces[edge_key(at, best)] += uses[s];
+      edges.add(at, best, uses[s]);
       at = best;
     }
   }
-  return pieces;
+  return edges;
 }
 
 // The hole points of `pslg`, whose segment s the rings use uses[s] times: one inside each
@@ -89,12 +112,13 @@ std::vector<Point> even_region_points(const Pslg& pslg, const std::vector<int>& 
   options.convex_hull = true;  // every triangle of the hull, so that parity can be counted from outside
   options.compute_neighbors = true;
   const TriMesh mesh = triangulate(pslg, options, &report);
-  // Per constrained edge: 1 when crossing it changes the count (used an odd number of times), else 2.
-  std::unordered_map<std::uint64_t, int> segment_marker = uses_of_pieces(pslg, uses, mesh);
-  for (auto& [key, count] : segment_marker) count = count % 2 ? 1 : 2;
-  const auto edge = [&](std::size_t t, int i) {
+  const ConstrainedEdges edges = uses_of_pieces(pslg, uses, mesh);
+  // Edge i of triangle t: -1 no segment; else 1 when crossing it changes the count (the
+  // rings run along it an odd number of times), 0 when not.
+  const auto crossing = [&](std::size_t t, int i) {
     const auto& tri = mesh.triangles[t];
-    return segment_marker.find(edge_key(tri[(i + 1) % 3], tri[(i + 2) % 3]));
+    const std::size_t k = edges.find(tri[(i + 1) % 3], tri[(i + 2) % 3]);
+    return k == ConstrainedEdges::npos ? -1 : edges.uses[k] % 2;
   };
 
   // Parity: 0 outside everything; crossing a segment used an odd number of times flips it.
@@ -104,8 +128,7 @@ std::vector<Point> even_region_points(const Pslg& pslg, const std::vector<int>& 
   for (std::size_t t = 0; t < n; ++t)
     for (int i = 0; i < 3 && parity[t] < 0; ++i)
       if (mesh.neighbors[t][i] == kNoIndex) {
-        const auto e = edge(t, i);
-        parity[t] = e != segment_marker.end() && e->second == 1 ? 1 : 0;
+        parity[t] = crossing(t, i) == 1 ? 1 : 0;
         queue.push_back(t);
       }
   while (!queue.empty()) {
@@ -114,8 +137,7 @@ std::vector<Point> even_region_points(const Pslg& pslg, const std::vector<int>& 
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t u = mesh.neighbors[t][i];
       if (u == kNoIndex || parity[u] >= 0) continue;
-      const auto e = edge(t, i);
-      parity[u] = parity[t] ^ (e != segment_marker.end() && e->second == 1 ? 1 : 0);
+      parity[u] = parity[t] ^ (crossing(t, i) == 1 ? 1 : 0);
       queue.push_back(u);
     }
   }
@@ -132,7 +154,7 @@ std::vector<Point> even_region_points(const Pslg& pslg, const std::vector<int>& 
     for (std::size_t k = 0; k < members.size(); ++k) {
       const std::size_t t = members[k];
       for (int i = 0; i < 3; ++i) {
-        const bool segment = edge(t, i) != segment_marker.end();
+        const bool segment = crossing(t, i) >= 0;
         const std::uint32_t u = mesh.neighbors[t][i];
         if (u == kNoIndex) open_to_outside = open_to_outside || !segment;
         if (u == kNoIndex || segment || region[u] != kNoIndex) continue;
@@ -172,6 +194,10 @@ Pslg pslg_from_rings(const std::string& file, const std::vector<PolygonRing>& ri
     int count;
   };
   std::unordered_map<std::uint64_t, Use> uses;
+  std::size_t total = 0;
+  for (const PolygonRing& ring : rings) total += ring.points.size();
+  vertex_of.reserve(total);  // no rehashing on the way: a third of the time for large files
+  uses.reserve(total);
   for (const PolygonRing& ring : rings) {
     std::vector<std::uint32_t> chain;
     for (const Point& p : ring.points) {
