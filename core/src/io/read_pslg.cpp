@@ -25,7 +25,7 @@ Pslg read_pslg(const std::string& path, std::vector<std::string>* warnings) {
   // The polygon formats by the table (formats.hpp), in lower case as is_planar_input takes them.
   for (const FileFormat& f : file_formats())
     if (f.read_pslg && ends_with(f.extension)) return f.read_pslg(path, warnings);
-  throw InputError(path, 0, "unknown file type: expected a .node, .poly, .geojson or .wkt file");
+  throw InputError(path, 0, "unknown file type: expected a .node or .poly file, or .geojson or .wkt polygons");
 }
 
 }  // namespace meshstep::io
