@@ -186,6 +186,15 @@ TEST(PolygonIo, MalformedGeoJsonIsRefusedAtItsLine) {
       {"features.geojson", "{\"type\": \"FeatureCollection\", \"features\": [\n{\"type\": \"Polygon\"}]}", 2,
        "must be a Feature"},
       {"points.geojson", "{\"type\": \"Point\", \"coordinates\": [0, 0]}", 0, "no polygon"},
+      {"flat.geojson", "{\"type\": \"Polygon\",\n\"coordinates\": [0, 0, 1, 0, 0, 1]}", 2,
+       "expected an array of rings (arrays of positions), found an array of numbers"},
+      {"flat_ring.geojson", "{\"type\": \"Polygon\", \"coordinates\": [[0, 0, 1, 0, 0, 1]]}", 1,
+       "expected an array of positions [x, y], found an array of numbers"},
+      {"flat_multi.geojson", "{\"type\": \"MultiPolygon\", \"coordinates\": [1]}", 1, "found an array of numbers"},
+      {"flat_features.geojson", "{\"type\": \"FeatureCollection\", \"features\": [1, 2]}", 1,
+       "expected an array of Features"},
+      {"empty_position.geojson", "{\"type\": \"Polygon\", \"coordinates\": [[[0,0],[],[0,1]]]}", 1,
+       "two or more numbers"},
   };
   for (const Malformed& m : cases) expect_refused(m);
 }

@@ -85,6 +85,13 @@ class Parser {
       do v.items.push_back(value(depth + 1));
       while (take(','));
       if (!take(']')) fail("unexpected " + describe_here() + ": expected ',' or ']' in an array");
+      bool all_numbers = true;
+      for (const JsonValue& item : v.items) all_numbers = all_numbers && item.kind == JsonValue::Kind::number;
+      if (all_numbers) {
+        v.numbers.reserve(v.items.size());
+        for (const JsonValue& item : v.items) v.numbers.push_back(item.number);
+        std::vector<JsonValue>().swap(v.items);
+      }
     } else if (c == '"') {
       v.kind = JsonValue::Kind::string;
       v.text = string();

@@ -23,7 +23,7 @@ class GeoJsonReader {
       fail(v, std::string("expected a GeoJSON object, found ") + detail::json_kind_name(v.kind));
     const std::string& type = string_member(v, "type");
     if (type == "FeatureCollection") {
-      for (const JsonValue& f : array_member(v, "features").items) {
+      for (const JsonValue& f : items_of(array_member(v, "features"), "Features")) {
         if (f.kind != JsonValue::Kind::object || string_member(f, "type") != "Feature")
           fail(f, "each of a FeatureCollection's \"features\" must be a Feature");
         object(f, depth + 1);
@@ -35,11 +35,11 @@ class GeoJsonReader {
       else object(*g, depth + 1);
     } else if (type == "GeometryCollection") {
       if (depth > detail::kMaxJsonDepth) fail(v, "GeometryCollections nested too deep");
-      for (const JsonValue& g : array_member(v, "geometries").items) object(g, depth + 1);
+      for (const JsonValue& g : items_of(array_member(v, "geometries"), "geometries")) object(g, depth + 1);
     } else if (type == "Polygon") {
       polygon(array_member(v, "coordinates"));
     } else if (type == "MultiPolygon") {
-      for (const JsonValue& p : array_member(v, "coordinates").items) {
+      for (const JsonValue& p : items_of(array_member(v, "coordinates"), "polygons (arrays of rings)")) {
         if (p.kind != JsonValue::Kind::array)
           fail(p, std::string("a MultiPolygon's coordinates are polygons (arrays of rings), found ") +
                       detail::json_kind_name(p.kind));
@@ -70,6 +70,13 @@ class GeoJsonReader {
     return m->text;
   }
 
+  // An array's values, which must not be numbers (the parser keeps an array of numbers
+  // apart, in JsonValue::numbers).
+  const std::vector<JsonValue>& items_of(const JsonValue& array, const std::string& what) const {
+    if (!array.numbers.empty()) fail(array, "expected an array of " + what + ", found an array of numbers");
+    return array.items;
+  }
+
   const JsonValue& array_member(const JsonValue& v, std::string_view key) const {
     const JsonValue* m = v.member(key);
     if (!m) fail(v, "this " + v.member("type")->text + " has no \"" + std::string(key) + "\" member");
@@ -82,7 +89,7 @@ class GeoJsonReader {
   // (RFC 7946 allows empty coordinates) and skipped.
   void polygon(const JsonValue& coordinates) {
     bool first = true;
-    for (const JsonValue& r : coordinates.items) {
+    for (const JsonValue& r : items_of(coordinates, "rings (arrays of positions)")) {
       if (r.kind != JsonValue::Kind::array)
         fail(r, std::string("a polygon's coordinates are rings (arrays of positions), found ") +
                     detail::json_kind_name(r.kind));
@@ -90,13 +97,14 @@ class GeoJsonReader {
       ring.hole = !first;
       ring.line = r.line;
       first = false;
-      for (const JsonValue& p : r.items) {
-        if (p.kind != JsonValue::Kind::array || p.items.size() < 2)
-          fail(p, "a position is an array of two or more numbers [x, y]");
+      for (const JsonValue& p : items_of(r, "positions [x, y]")) {
+        // The parser keeps an array of numbers only in p.numbers: any item left is not one.
         for (const JsonValue& c : p.items)
           if (c.kind != JsonValue::Kind::number)
             fail(c, std::string("a position's coordinates are numbers, found ") + detail::json_kind_name(c.kind));
-        ring.points.push_back({p.items[0].number, p.items[1].number});
+        if (p.kind != JsonValue::Kind::array || p.numbers.size() < 2)
+          fail(p, "a position is an array of two or more numbers [x, y]");
+        ring.points.push_back({p.numbers[0], p.numbers[1]});
       }
       if (ring.points.size() >= 2 &&
           (ring.points.front().x != ring.points.back().x || ring.points.front().y != ring.points.back().y))
@@ -112,11 +120,13 @@ class GeoJsonReader {
 }  // namespace
 
 Pslg read_geojson(const std::string& path, std::vector<std::string>* warnings) {
-  const MappedFile bytes(path);
-  const detail::JsonValue root =
-      detail::parse_json(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   GeoJsonReader reader(path, warnings);
-  reader.object(root, 0);
+  {  // The file and its tree go before the rings are meshed for their holes.
+    const MappedFile bytes(path);
+    const detail::JsonValue root =
+        detail::parse_json(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    reader.object(root, 0);
+  }
   if (reader.rings.empty()) throw InputError(path, 0, "no polygon in the file (meshstep reads Polygon and MultiPolygon)");
   return pslg_from_rings(path, reader.rings, warnings);
 }

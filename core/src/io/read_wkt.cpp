@@ -200,9 +200,11 @@ class WktReader {
 }  // namespace
 
 Pslg read_wkt(const std::string& path, std::vector<std::string>* warnings) {
-  const MappedFile bytes(path);
-  WktReader reader(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), warnings);
-  const std::vector<PolygonRing> rings = reader.read();
+  std::vector<PolygonRing> rings;
+  {  // The file goes before the rings are meshed for their holes.
+    const MappedFile bytes(path);
+    rings = WktReader(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), warnings).read();
+  }
   if (rings.empty()) throw InputError(path, 0, "no polygon in the file (meshstep reads POLYGON and MULTIPOLYGON)");
   return pslg_from_rings(path, rings, warnings);
 }
