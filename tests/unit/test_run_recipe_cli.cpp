@@ -3,6 +3,7 @@
 // `meshstep refine` writes, and every bad line is refused as RECIPE:LINE before any work.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,65 @@ TEST_F(RunRecipeCli, AOneLineRecipeWritesWhatRefineWrites) {
       EXPECT_TRUE(fa == fb) << ext << " differs";
     }
   }
+}
+
+// The numbers after each `"to_step":` in `log info --json`'s operations, in order.
+std::vector<std::string> to_steps(const std::string& json) {
+  std::vector<std::string> steps;
+  const std::string key = "\"to_step\":";
+  for (std::size_t at = json.find(key); at != std::string::npos; at = json.find(key, at + 1)) {
+    const std::size_t from = at + key.size();
+    steps.push_back(json.substr(from, json.find_first_not_of("0123456789", from) - from));
+  }
+  return steps;
+}
+
+// One log for the whole recipe: `log info` lists its operations with their steps, and the
+// log's mesh at the end of each operation is, file for file, what the recipe cut after that
+// operation writes. The third operation runs in two phases (aspect, then angle) and the
+// second improves, so the phases of each must be counted right.
+TEST_F(RunRecipeCli, ARecipeIsRecordedInOneLogAndEachOperationEndsWhereItsRecipeWould) {
+  const std::string input = write("square.poly", kSquare);
+  const std::vector<std::string> lines = {
+      "refine --algorithm lepp-centroid --min-angle 25 --max-area 2",
+      "refine --algorithm offcenter --min-angle 28 --max-area 0.1 --improve --region 1,1,4,4",
+      "refine --algorithm combined --min-angle 30 --max-area 0.4",
+  };
+  std::string text;
+  for (const std::string& line : lines) text += line + "\n";
+  const std::string recipe = write("chain.recipe", text);
+  const std::string log = dir_.file("chain.mslog");
+  const CommandResult r = meshstep("run " + recipe + " " + input + " -q -o " + dir_.file("chain") + " --record " + log);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(meshstep("log verify " + log).status, 0);
+
+  const CommandResult info = meshstep("log info " + log + " --json");
+  ASSERT_EQ(info.status, 0) << info.err;
+  const std::vector<std::string> ends = to_steps(info.out);
+  ASSERT_EQ(ends.size(), lines.size()) << info.out;
+  EXPECT_EQ(std::count(info.out.begin(), info.out.end(), '['), 1) << info.out;
+  const CommandResult listed = meshstep("log info " + log);
+  EXPECT_TRUE(contains(listed.out, "operations: 3")) << listed.out;
+  EXPECT_TRUE(contains(listed.out, "2. refine --min-angle 28 --max-area 0.1 --improve")) << listed.out;
+
+  std::string cut;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    SCOPED_TRACE(lines[i]);
+    cut += lines[i] + "\n";
+    const std::string part = write("part" + std::to_string(i) + ".recipe", cut);
+    const std::string alone = dir_.file("alone" + std::to_string(i)), at = dir_.file("at" + std::to_string(i));
+    ASSERT_EQ(meshstep("run " + part + " " + input + " -q -o " + alone).status, 0);
+    const CommandResult m = meshstep("log mesh " + log + " --step " + ends[i] + " -o " + at);
+    ASSERT_EQ(m.status, 0) << m.err;
+    for (const char* ext : {".node", ".ele"}) {
+      const std::string fa = testing::slurp(alone + ext), fb = testing::slurp(at + ext);
+      EXPECT_FALSE(fa.empty()) << ext;
+      EXPECT_TRUE(fa == fb) << ext << " differs at the end of operation " << i + 1;
+    }
+  }
+  // The operations end one after the other, the last where the log does.
+  EXPECT_LT(std::stoull(ends[0]), std::stoull(ends[1]));
+  EXPECT_LT(std::stoull(ends[1]), std::stoull(ends[2]));
 }
 
 // Each bad line: RECIPE:LINE: what is wrong, exit status 1, nothing written.
