@@ -9,6 +9,9 @@
 
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/refine/region.hpp"
+#include "meshstep/replay/log_reader.hpp"
+#include "meshstep/replay/operations.hpp"
+#include "meshstep/scene/pseudocode.hpp"
 #include "run_cli.hpp"
 #include "temp_dir.hpp"
 
@@ -155,6 +158,31 @@ TEST_F(RunRecipeCli, ARecipeIsRecordedInOneLogAndEachOperationEndsWhereItsRecipe
   // The operations end one after the other, the last where the log does.
   EXPECT_LT(std::stoull(ends[0]), std::stoull(ends[1]));
   EXPECT_LT(std::stoull(ends[1]), std::stoull(ends[2]));
+}
+
+// In a recipe's log the pseudo-code panel follows the operation at the cursor: Lepp-centroid
+// in the first, off-centers in the second, and vertex removal in the second's improvement.
+TEST_F(RunRecipeCli, ThePseudoCodeFollowsTheOperationAtTheCursor) {
+  const std::string input = write("square.poly", kSquare);
+  const std::string recipe = write("two.recipe",
+                                   "refine --algorithm lepp-centroid --min-angle 25 --max-area 2\n"
+                                   "refine --algorithm offcenter --min-angle 28 --max-area 0.1 --improve\n");
+  const std::string log_path = dir_.file("two.mslog");
+  ASSERT_EQ(meshstep("run " + recipe + " " + input + " -q -o " + dir_.file("two") + " --record " + log_path).status, 0);
+  const replay::LogReader log(log_path);
+  const std::vector<replay::OperationSpan> spans = replay::operation_spans(log, log_path);
+  ASSERT_EQ(spans.size(), 2u);
+  ASSERT_LT(spans[0].from_step, spans[0].to_step);
+  ASSERT_LT(spans[1].from_step, spans[1].to_step);
+  std::vector<scene::Program> seen;
+  for (const replay::PhaseSpan& p : log.phases()) {
+    if (p.phase != replay::Phase::refine && p.phase != replay::Phase::improve) continue;
+    if (p.end == p.begin + 2) continue;  // an empty phase: its begin and end alone
+    seen.push_back(scene::pseudocode_at(log, p.begin + 2).program);
+  }
+  const std::vector<scene::Program> expected = {scene::Program::lepp_centroid, scene::Program::offcenter,
+                                                scene::Program::vertex_removal};
+  EXPECT_EQ(seen, expected);
 }
 
 // Each bad line: RECIPE:LINE: what is wrong, exit status 1, nothing written.

@@ -47,4 +47,20 @@ std::vector<OperationSpan> operation_spans(const LogReader& log, const std::stri
   return spans;
 }
 
+const Operation* operation_of(const LogReader& log, const PhaseSpan& span) {
+  const std::vector<Operation>& operations = log.run().operations;
+  if (operations.empty() || (span.phase != Phase::refine && span.phase != Phase::improve)) return nullptr;
+  std::size_t before = 0;  // the refinement phases before it
+  for (const PhaseSpan& p : log.phases()) {
+    if (p.begin >= span.begin) break;
+    before += p.phase == Phase::refine || p.phase == Phase::improve;
+  }
+  for (const Operation& op : operations) {
+    const std::size_t count = recorded_phases(op);
+    if (before < count) return &op;
+    before -= count;
+  }
+  return nullptr;
+}
+
 }  // namespace meshstep::replay

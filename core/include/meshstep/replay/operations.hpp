@@ -25,4 +25,8 @@ struct OperationSpan {
 // record: a log whose header does not describe its events.
 std::vector<OperationSpan> operation_spans(const LogReader& log, const std::string& path);
 
+// The recipe's operation that recorded a refinement or improvement phase of the log (one of
+// log.phases()); null for a run of one operation, and for the triangulation's phases.
+const Operation* operation_of(const LogReader& log, const PhaseSpan& span);
+
 }  // namespace meshstep::replay
