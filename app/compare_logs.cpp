@@ -1,0 +1,102 @@
+// Summaries of recorded runs for `meshstep compare` (compare_logs.hpp).
+#include "compare_logs.hpp"
+
+#include <cstdio>
+
+#include "meshstep/check/quality.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/refine/refine.hpp"
+#include "meshstep/replay/log_reader.hpp"
+#include "meshstep/replay/replay.hpp"
+#include "meshstep/replay/run_header.hpp"
+#include "meshstep/replay/verify.hpp"
+
+namespace meshstep::app {
+namespace {
+
+std::string short_number(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", v);
+  return buffer;
+}
+
+// The run description in a few words: the algorithm, its bounds, and the parts that are not
+// the defaults (a dcel, cavities), so that two columns say how their runs differ.
+std::string caption_of(const replay::LogHeader& h, const replay::RunHeader& run) {
+  std::string text = h.algorithm;
+  const auto add = [&text](const std::string& words) { text += ", " + words; };
+  if (run.min_angle) add("min angle " + short_number(*run.min_angle));
+  if (run.max_angle) add("max angle " + short_number(*run.max_angle));
+  if (run.max_aspect) add("max aspect " + short_number(*run.max_aspect));
+  if (run.max_area) add("max area " + short_number(*run.max_area));
+  if (run.size) add("size " + short_number(*run.size));
+  if (h.data_structure != "tds") add(h.data_structure);
+  const std::string insertion = run.insertion.empty() ? h.insertion : run.insertion;
+  if (insertion != "flip") add(insertion);
+  return text;
+}
+
+}  // namespace
+
+LoggedRun read_logged_run(const std::string& path) {
+  const replay::LogReader log(path);
+  // The same check and the same words as `log verify`: a log that does not describe one
+  // consistent run gives no numbers.
+  const replay::VerifyReport verified = replay::verify(log);
+  if (!verified.ok) throw InputError(path, 0, verified.problem);
+
+  const replay::LogHeader& h = log.header();
+  LoggedRun r;
+  r.path = path;
+  r.caption = caption_of(h, log.run());
+  r.input = h.input;
+  r.input_hash = h.input_hash;
+  r.algorithm = h.algorithm;
+  r.data_structure = h.data_structure;
+  r.insertion = log.run().insertion.empty() ? h.insertion : log.run().insertion;
+  r.steps = log.step_count();
+
+  replay::Replay cursor(log);
+  cursor.seek_event(log.event_count());
+  r.mesh = cursor.output_mesh();
+  r.triangles = r.mesh.triangles.size();
+  r.vertices = r.mesh.points.size();
+  const AngleStats angles = angle_stats(r.mesh);
+  r.min_angle = angles.min_angle_deg;
+  r.max_angle = angles.max_angle_deg;
+  // Steiner vertices: every vertex the run introduced past the input's (the refinement's,
+  // and segment crossings), as refine's report counts them; removed ones are not counted
+  // there either.
+  const std::uint64_t input_vertices = log.run().input_vertices;
+  for (std::size_t v = input_vertices; v < log.vertices().size(); ++v) {
+    const replay::VertexInfo& info = log.vertices()[v];
+    if (info.event == kNone || info.same_as != kNone) continue;
+    ++r.steiner;
+  }
+
+  for (const replay::PhaseSpan& span : log.phases()) {
+    const std::uint64_t end = span.end == replay::kNoEnd ? log.event_count() : span.end;
+    const std::uint64_t steps = log.completed_steps_at(end) - log.completed_steps_at(span.begin);
+    const std::string phase = replay::name(span.phase);
+    bool found = false;
+    for (auto& [name, count] : r.phase_steps)
+      if (name == phase) {
+        count += steps;
+        found = true;
+      }
+    if (!found) r.phase_steps.emplace_back(phase, steps);
+  }
+  return r;
+}
+
+std::string different_inputs_warning(const std::vector<LoggedRun>& runs) {
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    if (runs[i].input_hash == runs[0].input_hash) continue;
+    return runs[0].path + " and " + runs[i].path + " are runs on different inputs (" + runs[0].input + ", hash " +
+           runs[0].input_hash + "; " + runs[i].input + ", hash " + runs[i].input_hash +
+           "): compared anyway, but their numbers do not measure the algorithms alone";
+  }
+  return "";
+}
+
+}  // namespace meshstep::app
