@@ -25,11 +25,11 @@ std::string short_number(double v) {
 std::string caption_of(const replay::LogHeader& h, const replay::RunHeader& run) {
   std::string text = h.algorithm;
   const auto add = [&text](const std::string& words) { text += ", " + words; };
-  if (run.min_angle) add("min angle " + short_number(*run.min_angle));
-  if (run.max_angle) add("max angle " + short_number(*run.max_angle));
-  if (run.max_aspect) add("max aspect " + short_number(*run.max_aspect));
-  if (run.max_area) add("max area " + short_number(*run.max_area));
-  if (run.size) add("size " + short_number(*run.size));
+  if (run.min_angle && *run.min_angle > 0.0) add("min angle " + short_number(*run.min_angle));
+  if (run.max_angle && *run.max_angle < 180.0) add("max angle " + short_number(*run.max_angle));
+  if (run.max_aspect && *run.max_aspect > 0.0) add("max aspect " + short_number(*run.max_aspect));
+  if (run.max_area && *run.max_area > 0.0) add("max area " + short_number(*run.max_area));
+  if (run.size && *run.size > 0.0) add("size " + short_number(*run.size));
   if (h.data_structure != "tds") add(h.data_structure);
   const std::string insertion = run.insertion.empty() ? h.insertion : run.insertion;
   if (insertion != "flip") add(insertion);
@@ -64,13 +64,13 @@ LoggedRun read_logged_run(const std::string& path) {
   const AngleStats angles = angle_stats(r.mesh);
   r.min_angle = angles.min_angle_deg;
   r.max_angle = angles.max_angle_deg;
-  // Steiner vertices: every vertex the run introduced past the input's (the refinement's,
-  // and segment crossings), as refine's report counts them; removed ones are not counted
-  // there either.
+  // Steiner vertices as refine's report counts them: every vertex the run introduced past
+  // the input's and kept (one removed again, near a split segment or by improvement, is
+  // counted in removed_vertices instead).
   const std::uint64_t input_vertices = log.run().input_vertices;
   for (std::size_t v = input_vertices; v < log.vertices().size(); ++v) {
     const replay::VertexInfo& info = log.vertices()[v];
-    if (info.event == kNone || info.same_as != kNone) continue;
+    if (info.event == kNone || info.same_as != kNone || info.removed != UINT64_MAX) continue;
     ++r.steiner;
   }
 
