@@ -335,6 +335,7 @@ std::string plot_svg(const Matrix& m, const std::vector<MatrixRow>& rows, std::s
     p.x_label = "angle bound (degrees)";
     p.y_label = inputs > 1 ? "Steiner points (sum over " + std::to_string(inputs) + " inputs)" : "Steiner points";
     p.y_from_zero = true;
+    if (m.bounds.size() <= 12) p.x_ticks = m.bounds;  // every bound swept, labelled
     for (const std::string& label : m.labels) {
       PlotSeries s{label, {}, true};
       for (const double bound : m.bounds) {

@@ -93,8 +93,9 @@ std::pair<double, double> data_range(const PlotPanel& panel, bool x_axis) {
 std::string draw_panel(const PlotPanel& panel, std::size_t index, double left, double top, double width, double height) {
   std::string svg;
   const double x0 = left + kLeft, x1 = left + width - kRight, y0 = top + height - kBottom, y1 = top + kTop;
-  const std::pair<double, double> xr = panel.x_range.value_or(data_range(panel, true));
-  std::vector<double> x_ticks = nice_ticks(xr.first, xr.second);
+  const std::pair<double, double> xr = panel.x_range.value_or(
+      panel.x_ticks.size() > 1 ? std::pair{panel.x_ticks.front(), panel.x_ticks.back()} : data_range(panel, true));
+  std::vector<double> x_ticks = panel.x_ticks.size() > 1 ? panel.x_ticks : nice_ticks(xr.first, xr.second);
   std::pair<double, double> yr = panel.y_range.value_or(data_range(panel, false));
   std::vector<double> y_ticks = nice_ticks(yr.first, yr.second);
   // Automatic ranges end at the outer ticks, so that the axes end at labelled numbers.
