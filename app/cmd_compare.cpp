@@ -21,6 +21,8 @@
 #include "command.hpp"
 #include "compare_logs.hpp"
 #include "compare_matrix.hpp"
+#include "compare_picture.hpp"
+#include "draw_options.hpp"
 #include "compare_table.hpp"
 #include "console.hpp"
 #include "file_roles.hpp"
@@ -43,6 +45,9 @@ struct CompareArgs {
   std::string min_angle, max_angle, max_aspect, max_area, size, max_steiner, max_triangles, ds, insertion;
   bool json = false, csv = false;
   std::string plot;
+  std::string svg, png;  // logs side by side at one moment
+  long long step = -2;   // -2: not given
+  double fraction = -1;  // < 0: not given
   unsigned jobs = 2;
 };
 
@@ -91,6 +96,33 @@ int compare_logs(const CompareArgs& args) {
     print_error(std::string(args.csv ? "--csv" : "--plot") + " is for --algorithms or --recipes: logs compare as text or --json");
     return kExitUsage;
   }
+  if (!args.svg.empty() && !args.png.empty()) {
+    print_error("--svg and --png: one picture at a time");
+    return kExitUsage;
+  }
+  const std::string picture = args.svg.empty() ? args.png : args.svg;
+  if (args.step != -2 && args.fraction >= 0) {
+    print_error("--step and --fraction: one moment or the other");
+    return kExitUsage;
+  }
+  if ((args.step != -2 || args.fraction >= 0) && picture.empty()) {
+    print_error("--step and --fraction choose the moment of a picture (--svg OUT or --png OUT)");
+    return kExitUsage;
+  }
+  if (!args.svg.empty() && !args.svg.ends_with(".svg")) {
+    print_error("--svg " + args.svg + ": the picture's name must end in .svg");
+    return kExitUsage;
+  }
+  if (!args.png.empty() && !args.png.ends_with(".png")) {
+    print_error("--png " + args.png + ": the picture's name must end in .png");
+    return kExitUsage;
+  }
+  if (!picture.empty()) {
+    FileRoles files;
+    for (const std::string& log : args.files) files.reads(log);
+    files.writes(args.svg.empty() ? "--png" : "--svg", picture, "picture");
+    if (const int refused = refuse_overwrites(files)) return refused;
+  }
   // Each log is checked in full (as log verify does): two at a time.
   std::vector<std::optional<LoggedRun>> read(args.files.size());
   std::vector<std::string> problems(args.files.size());
@@ -130,6 +162,21 @@ int compare_logs(const CompareArgs& args) {
       if (name == phase) return steps;
     return std::nullopt;
   };
+
+  if (!picture.empty()) {
+    SideBySide side;
+    for (const LoggedRun& r : runs) {
+      side.logs.push_back(r.path);
+      side.captions.push_back(r.caption);
+    }
+    if (args.step != -2) side.step = args.step;
+    if (args.fraction >= 0) side.fraction = args.fraction;
+    const int status = with_picture_errors(" (an .svg picture needs no OpenGL)", [&] {
+      write_side_by_side(side, picture);
+      return kExitOk;
+    });
+    if (status != kExitOk) return status;
+  }
 
   if (args.json) {
     std::string out = "{\"runs\":[";
@@ -267,10 +314,14 @@ int build_matrix(const CompareArgs& args, Matrix& m) {
       print_error(input + ": compare refines planar inputs (.poly, .node or a mesh PREFIX), not a 3D surface");
       return kExitUsage;
     }
-    const bool readable = io::is_planar_input(input) ? std::ifstream(input).good()
-                                                     : std::ifstream(input + ".node").good();
-    if (!readable) {
-      print_error(input + ": cannot be read");
+    if (std::filesystem::is_regular_file(input) && io::is_replay_log(input)) {
+      print_error(input + ": a replay log is compared as it is, without --algorithms or --recipes (those run inputs)");
+      return kExitUsage;
+    }
+    if (io::is_planar_input(input) ? !std::ifstream(input).good() : !std::ifstream(input + ".node").good()) {
+      print_error(io::is_planar_input(input) ? input + ": cannot be read"
+                                             : input + ": neither a .poly or .node file nor a mesh PREFIX (no " +
+                                                   input + ".node)");
       return kExitBadInput;
     }
   }
@@ -521,10 +572,18 @@ Command add_compare_command(CLI::App& parent) {
                   "Write an SVG figure: the distribution of the triangles' smallest angles per\n"
                   "algorithm, and with a --min-angle sweep, Steiner points against the bound")
       ->type_name("OUT.svg");
+  cmd->add_option("--svg", args->svg, "Logs: draw the runs side by side at one moment, one scale for all (no display needed)")
+      ->type_name("OUT.svg");
+  cmd->add_option("--png", args->png, "Logs: the same picture as PNG (drawn by OpenGL, off screen)")->type_name("OUT.png");
+  cmd->add_option("--step", args->step, "The picture's moment: after K steps of each run (-1: the end, the default)")
+      ->type_name("K");
+  cmd->add_option("--fraction", args->fraction, "The picture's moment: at this fraction (0 to 1) of each run's steps")
+      ->type_name("F");
   cmd->add_option("-j,--jobs", args->jobs, "Runs at a time (default 2)")->check(CLI::Range(1u, 256u));
   cmd->footer(
       "Examples:\n"
       "  meshstep compare circumcenter.mslog offcenter.mslog --json\n"
+      "  meshstep compare circumcenter.mslog offcenter.mslog --fraction 0.5 --svg half.svg\n"
       "  meshstep compare --algorithms offcenter,circumcenter,lepp-centroid --min-angle 20:34:2 \\\n"
       "      assets/examples/lesson.poly assets/examples/plate.poly --plot sweep.svg\n"
       "Exit status: 0 done, 1 a log that is damaged (in log verify's words) or an input that\n"

@@ -3,12 +3,14 @@
 // runs end in), its summary and plot, and the errors for bad input. Through the real binary.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "meshstep/scene/image.hpp"
 #include "run_cli.hpp"
 #include "temp_dir.hpp"
 
@@ -271,6 +273,77 @@ TEST_F(CompareCli, RecipesRunAsMeshstepRunRunsThem) {
   ASSERT_EQ(run.status, 0) << run.err;
   for (const char* key : {"steiner", "triangles", "min_angle", "max_angle"})
     EXPECT_EQ(json_field(rows[0], key), json_field(stats_line(run.out), key)) << key;
+}
+
+}  // namespace
+}  // namespace meshstep
+
+namespace meshstep {
+namespace {
+
+// --svg: the runs side by side at one moment, each panel captioned with its run and step,
+// ids unique in the document; --png the same through OpenGL (skipped without it).
+TEST_F(CompareCli, SideBySidePictureAtOneMoment) {
+  const auto [circ, circ_stats] = record(asset("lesson.poly"), "circumcenter", "30", "circ");
+  const auto [off, off_stats] = record(asset("lesson.poly"), "offcenter", "30", "off");
+  const std::string svg_path = dir_.file("side.svg");
+  const CommandResult r = meshstep("compare " + circ + " " + off + " --step 10 --svg " + svg_path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string svg = slurp(svg_path);
+  EXPECT_TRUE(contains(svg, "<svg x=\"0\" y=\"0\"")) << svg.substr(0, 300);
+  EXPECT_TRUE(contains(svg, "<svg x=\"640\" y=\"0\""));
+  EXPECT_TRUE(contains(svg, "circumcenter, min angle 30 \u00b7 ")) << svg.substr(0, 300);
+  EXPECT_TRUE(contains(svg, "offcenter, min angle 30 \u00b7 "));
+  EXPECT_EQ(svg.find("step 10 of", svg.find("step 10 of") + 1) != std::string::npos, true);  // both panels
+  std::vector<std::string> ids;
+  for (std::size_t at = svg.find(" id=\""); at != std::string::npos; at = svg.find(" id=\"", at + 1))
+    ids.push_back(svg.substr(at + 5, svg.find('"', at + 5) - at - 5));
+  std::sort(ids.begin(), ids.end());
+  EXPECT_EQ(std::adjacent_find(ids.begin(), ids.end()), ids.end()) << "an id twice";
+
+  // The end of each run: its own step count.
+  const CommandResult end = meshstep("compare " + circ + " " + off + " --fraction 1 --svg " + svg_path);
+  ASSERT_EQ(end.status, 0) << end.err;
+  const std::string last = slurp(svg_path);
+  const CommandResult info_c = meshstep("log info " + circ + " --json");
+  const CommandResult info_o = meshstep("log info " + off + " --json");
+  for (const std::string& info : {info_c.out, info_o.out}) {
+    const std::string steps = json_field(info, "steps");
+    EXPECT_TRUE(contains(last, "step " + steps + " of " + steps)) << steps;
+  }
+
+  const std::string png_path = dir_.file("side.png");
+  const CommandResult png = meshstep("compare " + circ + " " + off + " --png " + png_path);
+  if (png.status != 0 && contains(png.err, "OpenGL")) GTEST_SKIP() << "no OpenGL: " << png.err;
+  ASSERT_EQ(png.status, 0) << png.err;
+  const scene::Image image = scene::read_png(png_path);
+  EXPECT_EQ(image.width, 1280);
+  EXPECT_EQ(image.height, 560);
+}
+
+TEST_F(CompareCli, PictureOptionsAreChecked) {
+  const auto [a, a_stats] = record(asset("lesson.poly"), "offcenter", "25", "a");
+  const auto [b, b_stats] = record(asset("lesson.poly"), "circumcenter", "25", "b");
+  const std::string logs = a + " " + b + " ";
+  struct Case {
+    std::string args, words;
+  };
+  const Case cases[] = {
+      {"--fraction 2 --svg " + dir_.file("x.svg"), "--fraction"},
+      {"--step 3", "--svg OUT or --png OUT"},
+      {"--step 3 --fraction 0.5 --svg " + dir_.file("x.svg"), "one moment or the other"},
+      {"--svg " + dir_.file("x.png"), "must end in .svg"},
+      {"--svg " + a, "--svg"},  // would replace a log
+      {"--algorithms offcenter", "a replay log is compared as it is"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    const CommandResult r = meshstep("compare " + logs + c.args);
+    EXPECT_NE(r.status, 0);
+    EXPECT_TRUE(contains(r.err, c.words)) << r.err;
+    EXPECT_FALSE(fs::exists(dir_.file("x.svg")));
+  }
+  EXPECT_EQ(meshstep("log verify -q " + a).status, 0);  // not replaced by a picture
 }
 
 }  // namespace
