@@ -5,6 +5,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <charconv>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -65,14 +66,12 @@ std::vector<std::string> split_list(const std::string& text) {
 
 std::string base_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
-// Shortest text that reads back as the same double (a bound as the command line gives it).
+// Shortest text that reads back as the same double (a bound as the command line gives it:
+// 30, 22.5, 1e-06).
 std::string bound_text(double v) {
   char buffer[32];
-  for (int digits = 1; digits <= 17; ++digits) {
-    std::snprintf(buffer, sizeof buffer, "%.*g", digits, v);
-    if (std::strtod(buffer, nullptr) == v) break;
-  }
-  return buffer;
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
+  return std::string(buffer, end);
 }
 
 std::string mib(std::size_t bytes) { return fixed(static_cast<double>(bytes) / 1048576.0, 1); }
@@ -477,11 +476,17 @@ int compare_algorithms(const CompareArgs& args) {
     std::printf("%s\n", out.c_str());
   } else {
     const bool swept = !m.bounds.empty();
+    // For people: short words; for programs (CSV): the JSON's keys.
     std::vector<std::string> header = {"algorithm", "input"};
-    if (swept) header.push_back("bound");
-    for (const char* h : {"Steiner", "triangles", "min angle", "max angle", "left bad", "at small input angles",
-                          "ms", "mesh MiB"})
-      header.push_back(h);
+    if (swept) header.push_back(args.csv ? "min_angle_bound" : "bound");
+    if (args.csv)
+      for (const char* h : {"steiner", "triangles", "min_angle", "max_angle", "bad_triangles",
+                            "bad_near_small_input_angle", "ms", "mesh_kib"})
+        header.push_back(h);
+    else
+      for (const char* h : {"Steiner", "triangles", "min angle", "max angle", "left bad", "at small input angles",
+                            "ms", "mesh KiB"})
+        header.push_back(h);
     TextTable table(header);
     for (std::size_t i = 0; i < rows.size(); ++i) {
       const RefineReport& r = rows[i].result.report;
@@ -495,21 +500,18 @@ int compare_algorithms(const CompareArgs& args) {
       cells.push_back(std::to_string(r.bad_triangles));
       cells.push_back(std::to_string(r.bad_near_small_input_angle));
       cells.push_back(fixed(run_ms(rows[i]), args.csv ? 3 : 1));
-      cells.push_back(args.csv ? std::to_string(r.triangulation.mesh_bytes / 1024) : mib(r.triangulation.mesh_bytes));
+      cells.push_back(std::to_string((r.triangulation.mesh_bytes + 1023) / 1024));
       table.add_row(std::move(cells));
     }
     if (args.csv) {
-      std::string csv = table.csv();
-      // (The CSV's last column is in KiB: say so in its name.)
-      csv.replace(csv.find("mesh MiB"), 8, "mesh KiB");
-      std::printf("%s", csv.c_str());
+      std::printf("%s", table.csv().c_str());
     } else {
       std::printf("%s", table.text().c_str());
       std::printf("\nSteiner points relative to %s (geometric mean of the ratios over the runs both finished):\n",
                   m.labels.front().c_str());
       for (std::size_t a = 0; a < m.labels.size(); ++a)
-        std::printf("  %-24s %s  (%zu runs)\n", m.labels[a].c_str(), fixed(ratios[a].first, 3).c_str(),
-                    ratios[a].second);
+        std::printf("  %-24s %s  (%zu run%s)\n", m.labels[a].c_str(), fixed(ratios[a].first, 3).c_str(),
+                    ratios[a].second, ratios[a].second == 1 ? "" : "s");
       std::printf("Peak resident memory of this process (all %zu runs, %u at a time): %s MiB\n", rows.size(),
                   std::max(args.jobs, 1u), mib(peak).c_str());
     }
