@@ -386,7 +386,10 @@ std::string plot_svg(const Matrix& m, const std::vector<MatrixRow>& rows, std::s
   std::vector<PlotPanel> panels;
   const bool swept = m.bounds.size() > 1;
   char letter = 'a';
-  const auto title = [&letter](const std::string& words) { return std::string("(") + letter++ + ") " + words; };
+  // Panels are lettered when there are two.
+  const auto title = [&letter, swept](const std::string& words) {
+    return swept ? std::string("(") + letter++ + ") " + words : words;
+  };
   if (swept) {
     PlotPanel p;
     p.title = title("Steiner points against the angle bound");

@@ -71,28 +71,36 @@ std::vector<unsigned long long> write_side_by_side(const SideBySide& p, const st
   // One camera for every panel: the union of the runs' points, fitted as each panel's
   // caption and legend allow (the panels are alike, so the fits are too).
   for (scene::Scene& s : scenes) s.bounds = world;
-  const scene::Camera camera = scene::fit_scene(scenes.front(), p.panel_width, p.panel_height);
+  // Tall enough for the box at the panel's width (less the fit's margins), plus the caption
+  // band: a wide input gets no empty band above and below.
+  int height = p.panel_height;
+  if (height <= 0) {
+    const double dx = world.hi.x - world.lo.x, dy = world.hi.y - world.lo.y;
+    const double wanted = dx > 0.0 ? (p.panel_width - 48.0) * dy / dx + 48.0 + 36.0 : 560.0;
+    height = static_cast<int>(std::clamp(std::ceil(wanted), 200.0, 1000.0));
+  }
+  const scene::Camera camera = scene::fit_scene(scenes.front(), p.panel_width, height);
 
   const int total = p.panel_width * static_cast<int>(scenes.size());
   if (out.ends_with(".svg")) {
     std::string doc = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
-                      std::to_string(total) + "\" height=\"" + std::to_string(p.panel_height) + "\" viewBox=\"0 0 " +
-                      std::to_string(total) + " " + std::to_string(p.panel_height) + "\">\n";
+                      std::to_string(total) + "\" height=\"" + std::to_string(height) + "\" viewBox=\"0 0 " +
+                      std::to_string(total) + " " + std::to_string(height) + "\">\n";
     for (std::size_t i = 0; i < scenes.size(); ++i)
       doc += nested_svg(scene::to_svg(scenes[i], camera), static_cast<double>(i) * p.panel_width,
                         "run" + std::to_string(i + 1) + "-");
     // A thin rule between panels.
     for (std::size_t i = 1; i < scenes.size(); ++i)
       doc += "<line x1=\"" + std::to_string(i * p.panel_width) + "\" y1=\"0\" x2=\"" + std::to_string(i * p.panel_width) +
-             "\" y2=\"" + std::to_string(p.panel_height) + "\" stroke=\"#888\" stroke-width=\"1\"/>\n";
+             "\" y2=\"" + std::to_string(height) + "\" stroke=\"#888\" stroke-width=\"1\"/>\n";
     io::write_file_atomically(out, doc + "</svg>\n");
     return shown;
   }
   Painter painter(draw.gl);
   scene::Image whole;
   whole.width = total;
-  whole.height = p.panel_height;
-  whole.rgba.assign(static_cast<std::size_t>(total) * p.panel_height * 4, 255);
+  whole.height = height;
+  whole.rgba.assign(static_cast<std::size_t>(total) * height * 4, 255);
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     const scene::Image panel = painter.paint(scenes[i], camera, draw.samples);
     for (int y = 0; y < std::min(panel.height, whole.height); ++y)

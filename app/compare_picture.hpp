@@ -16,7 +16,8 @@ struct SideBySide {
   // or at --fraction F of each run's steps; neither: the end.
   std::optional<long long> step;
   std::optional<double> fraction;
-  int panel_width = 640, panel_height = 560;
+  int panel_width = 640;
+  int panel_height = 0;  // 0: as the runs' box needs at that width (200 to 1000 pixels)
 };
 
 // Writes OUT (.svg, or .png through OpenGL) whole or not at all. Throws InputError for a

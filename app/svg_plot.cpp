@@ -14,7 +14,7 @@ namespace {
 // colour-vision deficiency. Black first: the reference algorithm.
 constexpr const char* kColours[] = {"#000000", "#E69F00", "#56B4E9", "#009E73", "#D55E00", "#0072B2", "#CC79A7",
                                     "#F0E442"};
-constexpr const char* kDashes[] = {"", "6,3", "2,2", "8,3,2,3", "4,4", "1,3", "10,4", "3,3,1,3"};
+constexpr const char* kDashes[] = {"", "7,3", "1.5,2.5", "9,3,2,3", "3,3", "12,3,2,3,2,3", "16,4", "5,2,1,2"};
 constexpr int kStyles = 8;
 
 // Plot-area margins within a panel: room for the tick labels and the axis titles.

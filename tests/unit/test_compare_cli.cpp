@@ -326,7 +326,10 @@ TEST_F(CompareCli, SideBySidePictureAtOneMoment) {
   ASSERT_EQ(png.status, 0) << png.err;
   const scene::Image image = scene::read_png(png_path);
   EXPECT_EQ(image.width, 1280);
-  EXPECT_EQ(image.height, 560);
+  // As tall as the SVG of the same runs.
+  const std::string doc = slurp(svg_path);
+  const std::size_t at = doc.find("height=\"") + 8;
+  EXPECT_EQ(image.height, std::stoi(doc.substr(at, doc.find('"', at) - at)));
 }
 
 TEST_F(CompareCli, PictureOptionsAreChecked) {
