@@ -48,6 +48,8 @@ struct CompareArgs {
   bool json = false, csv = false;
   std::string plot;
   std::string svg, png;  // logs side by side at one moment
+  std::string video;     // ... or at every step
+  double fps = 10.0;
   long long step = -2;   // -2: not given
   double fraction = -1;  // < 0: not given
   unsigned jobs = 2;
@@ -96,11 +98,16 @@ int compare_logs(const CompareArgs& args) {
     print_error(std::string(args.csv ? "--csv" : "--plot") + " is for --algorithms or --recipes: logs compare as text or --json");
     return kExitUsage;
   }
-  if (!args.svg.empty() && !args.png.empty()) {
-    print_error("--svg and --png: one picture at a time");
+  if (!args.svg.empty() + !args.png.empty() + !args.video.empty() > 1) {
+    print_error("--svg, --png and --video: one picture at a time");
     return kExitUsage;
   }
-  const std::string picture = args.svg.empty() ? args.png : args.svg;
+  if ((args.step != -2 || args.fraction >= 0) && !args.video.empty()) {
+    print_error("--step and --fraction choose a picture's moment; a --video shows every step");
+    return kExitUsage;
+  }
+  const std::string picture = !args.svg.empty() ? args.svg : !args.png.empty() ? args.png : args.video;
+  const std::string picture_option = !args.svg.empty() ? "--svg" : !args.png.empty() ? "--png" : "--video";
   if (args.step != -2 && args.fraction >= 0) {
     print_error("--step and --fraction: one moment or the other");
     return kExitUsage;
@@ -120,7 +127,7 @@ int compare_logs(const CompareArgs& args) {
   if (!picture.empty()) {
     FileRoles files;
     for (const std::string& log : args.files) files.reads(log);
-    files.writes(args.svg.empty() ? "--png" : "--svg", picture, "picture");
+    files.writes(picture_option, picture, args.video.empty() ? "picture" : "video");
     if (const int refused = refuse_overwrites(files)) return refused;
   }
   // Each log is checked in full (as log verify does): two at a time.
@@ -172,7 +179,8 @@ int compare_logs(const CompareArgs& args) {
     if (args.step != -2) side.step = args.step;
     if (args.fraction >= 0) side.fraction = args.fraction;
     const int status = with_picture_errors(" (an .svg picture needs no OpenGL)", [&] {
-      write_side_by_side(side, picture);
+      if (args.video.empty()) write_side_by_side(side, picture);
+      else write_side_by_side_video(side, picture, args.fps);
       return kExitOk;
     });
     if (status != kExitOk) return status;
@@ -588,6 +596,11 @@ Command add_compare_command(CLI::App& parent) {
   cmd->add_option("--svg", args->svg, "Logs: draw the runs side by side at one moment, one scale for all (no display needed)")
       ->type_name("OUT.svg");
   cmd->add_option("--png", args->png, "Logs: the same picture as PNG (drawn by OpenGL, off screen)")->type_name("OUT.png");
+  cmd->add_option("--video", args->video,
+                  "Logs: the runs side by side as a video, one frame per step of the longest run\n"
+                  "(.mp4, .webm or .gif; needs ffmpeg and OpenGL)")
+      ->type_name("OUT.mp4");
+  cmd->add_option("--fps", args->fps, "The video's frames per second (default 10)");
   cmd->add_option("--step", args->step, "The picture's moment: after K steps of each run (-1: the end, the default)")
       ->type_name("K");
   cmd->add_option("--fraction", args->fraction, "The picture's moment: at this fraction (0 to 1) of each run's steps")

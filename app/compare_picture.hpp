@@ -1,7 +1,8 @@
-// `meshstep compare A.mslog B.mslog --svg OUT / --png OUT`: the runs side by side at one
-// moment, one panel each, with one world scale for all (the union of every run's points, so
-// that the same length looks the same in every panel) and each panel's caption saying whose
-// run it is. SVG needs no display; PNG is drawn by the OpenGL renderer (painter.hpp).
+// `meshstep compare A.mslog B.mslog --svg OUT / --png OUT / --video OUT`: the runs side by
+// side at one moment (or at every step, as a video), one panel each, with one world scale
+// for all (the union of every run's points, so that the same length looks the same in
+// every panel) and each panel's caption saying whose run it is and at which step. SVG
+// needs no display; PNG and video are drawn by the OpenGL renderer (painter.hpp).
 #pragma once
 
 #include <optional>
@@ -24,5 +25,11 @@ struct SideBySide {
 // log that cannot be read, UsageError for a moment out of range, GlUnavailable for a PNG
 // without OpenGL. Returns the steps shown, one per log.
 std::vector<unsigned long long> write_side_by_side(const SideBySide& picture, const std::string& out);
+
+// The runs side by side as a video through ffmpeg (.mp4, .webm, .gif; video_pipe.hpp): one
+// frame per step of the longest run, frame k showing every run after k steps (a shorter
+// run stays at its end). Throws as write_side_by_side, and InputError without ffmpeg.
+// Returns the frames written.
+std::size_t write_side_by_side_video(const SideBySide& picture, const std::string& out, double fps);
 
 }  // namespace meshstep::app

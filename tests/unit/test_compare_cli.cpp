@@ -359,3 +359,32 @@ TEST_F(CompareCli, PictureOptionsAreChecked) {
 
 }  // namespace
 }  // namespace meshstep
+
+namespace meshstep {
+namespace {
+
+// --video: one frame per step of the longer run (ffprobe counts them), as wide as the panels.
+TEST_F(CompareCli, SideBySideVideoHasAFramePerStepOfTheLongerRun) {
+  if (!testing::ffmpeg_works()) GTEST_SKIP() << "ffmpeg or ffprobe does not start: skipped";
+  const auto [circ, circ_stats] = record(asset("lesson.poly"), "circumcenter", "30", "circ");
+  const auto [off, off_stats] = record(asset("lesson.poly"), "offcenter", "30", "off");
+  long long longest = 0;
+  for (const std::string& log : {circ, off})
+    longest = std::max(longest, std::stoll(json_field(meshstep("log info " + log + " --json").out, "steps")));
+  const std::string video = dir_.file("side.mp4");
+  const CommandResult r = meshstep("compare " + circ + " " + off + " --video " + video + " --fps 20");
+  if (r.status != 0 && contains(r.err, "OpenGL")) GTEST_SKIP() << "no OpenGL: " << r.err;
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string frames = dir_.file("frames.txt");
+  const std::string probe = "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                            "stream=width,nb_read_frames -of csv=p=0 " + video + " > " + frames;
+  ASSERT_EQ(std::system(probe.c_str()), 0);
+  EXPECT_EQ(slurp(frames), "1280," + std::to_string(longest) + "\n");
+  // A moment is a picture's: refused with a video.
+  const CommandResult moment = meshstep("compare " + circ + " " + off + " --step 3 --video " + dir_.file("x.mp4"));
+  EXPECT_EQ(moment.status, 2);
+  EXPECT_FALSE(fs::exists(dir_.file("x.mp4")));
+}
+
+}  // namespace
+}  // namespace meshstep
