@@ -5,15 +5,13 @@
 #include <sys/resource.h>
 
 #include <algorithm>
-#include <charconv>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <memory>
+#include <new>
 #include <optional>
 #include <string>
 #include <thread>
@@ -22,20 +20,17 @@
 #include "command.hpp"
 #include "compare_logs.hpp"
 #include "compare_matrix.hpp"
+#include "compare_matrix_report.hpp"
 #include "compare_picture.hpp"
-#include "draw_options.hpp"
-#include "compare_table.hpp"
 #include "console.hpp"
+#include "draw_options.hpp"
 #include "file_roles.hpp"
-#include "json_line.hpp"
-#include "memory_budget.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/atomic_file.hpp"
 #include "meshstep/io/formats.hpp"
 #include "meshstep/refine/registry.hpp"
 #include "meshstep/refine/run_spec.hpp"
 #include "recipe_file.hpp"
-#include "svg_plot.hpp"
 
 namespace meshstep::app {
 namespace {
@@ -66,18 +61,6 @@ std::vector<std::string> split_list(const std::string& text) {
   }
   return items;
 }
-
-std::string base_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
-
-// Shortest text that reads back as the same double (a bound as the command line gives it:
-// 30, 22.5, 1e-06).
-std::string bound_text(double v) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
-  return std::string(buffer, end);
-}
-
-std::string mib(std::size_t bytes) { return fixed(static_cast<double>(bytes) / 1048576.0, 1); }
 
 // The process's peak resident memory, in bytes (Linux gives kilobytes).
 std::size_t peak_rss_bytes() {
@@ -159,17 +142,6 @@ int compare_logs(const CompareArgs& args) {
   if (const std::string warning = different_inputs_warning(runs); !warning.empty())
     print_warning(Verbosity::normal, warning);
 
-  // Every phase any run has, in the order they first appear.
-  std::vector<std::string> phases;
-  for (const LoggedRun& r : runs)
-    for (const auto& [name, steps] : r.phase_steps)
-      if (std::find(phases.begin(), phases.end(), name) == phases.end()) phases.push_back(name);
-  const auto steps_in = [](const LoggedRun& r, const std::string& phase) -> std::optional<std::uint64_t> {
-    for (const auto& [name, steps] : r.phase_steps)
-      if (name == phase) return steps;
-    return std::nullopt;
-  };
-
   if (!picture.empty()) {
     SideBySide side;
     for (const LoggedRun& r : runs) {
@@ -186,70 +158,12 @@ int compare_logs(const CompareArgs& args) {
     if (status != kExitOk) return status;
   }
 
-  if (args.json) {
-    std::string out = "{\"runs\":[";
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-      const LoggedRun& r = runs[i];
-      JsonLine phase_steps;
-      for (const auto& [name, steps] : r.phase_steps) phase_steps.field(name, static_cast<std::size_t>(steps));
-      JsonLine j;
-      j.field("log", r.path)
-          .field("caption", r.caption)
-          .field("input", r.input)
-          .field("input_hash", r.input_hash)
-          .field("algorithm", r.algorithm)
-          .field("ds", r.data_structure)
-          .field("insertion", r.insertion)
-          .field("vertices", r.vertices)
-          .field("triangles", r.triangles)
-          .field("steiner", r.steiner)
-          .field("min_angle", r.min_angle)
-          .field("max_angle", r.max_angle)
-          .field("steps", static_cast<std::size_t>(r.steps))
-          .object("phase_steps", phase_steps)
-          // A log keeps no clock: its run's time is not known here (refine --stats json has it).
-          .field("ms", std::nan(""));
-      out += (i ? "," : "") + j.str();
-    }
-    out += std::string("],\"same_input\":") + (different_inputs_warning(runs).empty() ? "true" : "false") + "}";
-    std::printf("%s\n", out.c_str());
-    return kExitOk;
-  }
-
-  std::vector<std::string> header = {""};
-  for (const LoggedRun& r : runs) header.push_back(base_name(r.path));
-  TextTable table(header);
-  const auto row = [&](const std::string& name, auto cell) {
-    std::vector<std::string> cells = {name};
-    for (const LoggedRun& r : runs) cells.push_back(cell(r));
-    table.add_row(cells);
-  };
-  row("run", [](const LoggedRun& r) { return r.caption; });
-  row("input", [](const LoggedRun& r) { return base_name(r.input); });
-  row("Steiner points", [](const LoggedRun& r) { return std::to_string(r.steiner); });
-  row("triangles", [](const LoggedRun& r) { return std::to_string(r.triangles); });
-  row("smallest angle", [](const LoggedRun& r) { return fixed(r.min_angle, 2); });
-  row("largest angle", [](const LoggedRun& r) { return fixed(r.max_angle, 2); });
-  row("steps", [](const LoggedRun& r) { return std::to_string(r.steps); });
-  for (const std::string& phase : phases)
-    row("  " + phase, [&](const LoggedRun& r) {
-      const auto steps = steps_in(r, phase);
-      return steps ? std::to_string(*steps) : std::string("-");
-    });
-  row("time", [](const LoggedRun&) { return std::string("not in the log"); });
-  std::printf("%s", table.text().c_str());
+  std::printf("%s", (args.json ? logs_json(runs) + "\n" : logs_text(runs)).c_str());
   return kExitOk;
 }
 
 // ---------------------------------------------------------------------------------------
 // compare --algorithms A,B,... INPUT...
-
-// The runs of the matrix, or the exit status of the first problem (printed).
-struct Matrix {
-  std::vector<MatrixRun> runs;
-  std::vector<std::string> labels;  // in the command line's order; the first is the reference
-  std::vector<double> bounds;       // the sweep's (empty: --min-angle not swept)
-};
 
 int build_matrix(const CompareArgs& args, Matrix& m) {
   if (args.files.empty()) {
@@ -352,106 +266,6 @@ int build_matrix(const CompareArgs& args, Matrix& m) {
   return kExitOk;
 }
 
-// A run's peak memory as the run's own budget accounts for it (memory_budget.hpp: the
-// measured peak resident bytes per triangle of a refinement, rounded up): an estimate, the
-// same for every algorithm per triangle, since two runs at once share one process's memory.
-std::size_t memory_estimate(const MatrixRow& row) {
-  return static_cast<std::size_t>(kBytesPerTriangle) * row.smallest_angles.size();
-}
-
-double run_ms(const MatrixRow& row) { return row.result.report.triangulate_ms + row.result.report.refine_ms; }
-
-std::string json_rows(const Matrix& m, const std::vector<MatrixRow>& rows) {
-  std::string out = "[";
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const MatrixRun& run = m.runs[i];
-    const RefineReport& r = rows[i].result.report;
-    JsonLine ms;
-    ms.field("triangulate", r.triangulate_ms).field("refine", r.refine_ms);
-    JsonLine j;
-    j.field("algorithm", run.label).field("input", run.input);
-    if (!std::isnan(run.sweep_bound)) j.field("min_angle_bound", run.sweep_bound);
-    j.field("vertices", rows[i].vertices)
-        .field("triangles", rows[i].smallest_angles.size())
-        .field("steiner", r.steiner_vertices)
-        .field("min_angle", rows[i].result.angles.min_angle_deg)
-        .field("max_angle", rows[i].result.angles.max_angle_deg)
-        .field("below_min_angle", r.below_min_angle)
-        .field("bad_triangles", r.bad_triangles)
-        .field("bad_near_small_input_angle", r.bad_near_small_input_angle)
-        .field("bounds_met", r.bounds_met)
-        .field("stopped_by_cap", r.stopped_by_cap)
-        .field("memory_estimate_bytes", memory_estimate(rows[i]))
-        .object("ms", ms);
-    out += (i ? "," : "") + j.str();
-  }
-  return out + "]";
-}
-
-// Steiner points against the angle bound (summed over the inputs), and the distribution of
-// the triangles' smallest angles at the last bound (pooled over the inputs), per algorithm.
-std::string plot_svg(const Matrix& m, const std::vector<MatrixRow>& rows, std::size_t inputs) {
-  std::vector<PlotPanel> panels;
-  const bool swept = m.bounds.size() > 1;
-  char letter = 'a';
-  // Panels are lettered when there are two.
-  const auto title = [&letter, swept](const std::string& words) {
-    return swept ? std::string("(") + letter++ + ") " + words : words;
-  };
-  if (swept) {
-    PlotPanel p;
-    p.title = title("Steiner points against the angle bound");
-    p.x_label = "angle bound (degrees)";
-    p.y_label = inputs > 1 ? "Steiner points (sum over " + std::to_string(inputs) + " inputs)" : "Steiner points";
-    p.y_from_zero = true;
-    if (m.bounds.size() <= 12) p.x_ticks = m.bounds;  // every bound swept, labelled
-    for (const std::string& label : m.labels) {
-      PlotSeries s{label, {}, true};
-      for (const double bound : m.bounds) {
-        double total = 0;
-        for (std::size_t i = 0; i < rows.size(); ++i)
-          if (m.runs[i].label == label && m.runs[i].sweep_bound == bound)
-            total += static_cast<double>(rows[i].result.report.steiner_vertices);
-        s.points.emplace_back(bound, total);
-      }
-      p.series.push_back(std::move(s));
-    }
-    panels.push_back(std::move(p));
-  }
-  PlotPanel cdf;
-  const double last = m.bounds.empty() ? std::nan("") : m.bounds.back();
-  cdf.title = title(std::isnan(last) ? "Smallest angle of each triangle"
-                                     : "Smallest angle of each triangle, bound " + bound_text(last) + "\u00b0");
-  cdf.x_label = "smallest angle of a triangle (degrees)";
-  cdf.y_label = "fraction of triangles at or below";
-  cdf.y_range = std::pair{0.0, 1.0};
-  double low = 60.0;
-  for (const std::string& label : m.labels) {
-    std::vector<float> angles;
-    for (std::size_t i = 0; i < rows.size(); ++i)
-      if (m.runs[i].label == label && (std::isnan(last) || m.runs[i].sweep_bound == last))
-        angles.insert(angles.end(), rows[i].smallest_angles.begin(), rows[i].smallest_angles.end());
-    std::sort(angles.begin(), angles.end());
-    PlotSeries s{label, {}, false};
-    // The empirical CDF as a staircase, thinned to about 600 corners.
-    const std::size_t n = angles.size(), stride = std::max<std::size_t>(n / 600, 1);
-    for (std::size_t k = 0; k < n; k += stride) {
-      const double fraction_before = static_cast<double>(k) / static_cast<double>(n);
-      s.points.emplace_back(angles[k], fraction_before);
-      const std::size_t next = std::min(k + stride, n);
-      s.points.emplace_back(angles[k], static_cast<double>(next) / static_cast<double>(n));
-    }
-    if (n) {
-      low = std::min(low, static_cast<double>(angles.front()));
-      s.points.emplace_back(60.0, 1.0);
-    }
-    cdf.series.push_back(std::move(s));
-  }
-  cdf.x_range = std::pair{std::floor(low / 5.0) * 5.0, 60.0};
-  panels.push_back(std::move(cdf));
-  return svg_figure(panels);
-}
-
 int compare_algorithms(const CompareArgs& args) {
   if (args.json && args.csv) {
     print_error("--json and --csv: one or the other");
@@ -476,74 +290,20 @@ int compare_algorithms(const CompareArgs& args) {
                 " runs failed (their errors are above): no table");
     return kExitBadInput;
   }
+  const MatrixSummary summary = summarize(m, rows, peak_rss_bytes(), std::max(args.jobs, 1u));
 
-  // The summary: each algorithm's Steiner points over the first's, geometric mean.
-  std::vector<std::pair<double, std::size_t>> ratios;
-  for (const std::string& label : m.labels) {
-    std::size_t pairs = 0;
-    const double ratio = geometric_mean_steiner_ratio(m.runs, rows, label, m.labels.front(), &pairs);
-    ratios.emplace_back(ratio, pairs);
-  }
-  const std::size_t peak = peak_rss_bytes();
-
-  if (args.json) {
-    JsonLine summary;
-    for (std::size_t a = 0; a < m.labels.size(); ++a) summary.field(m.labels[a], ratios[a].first);
-    std::string out = "{\"rows\":" + json_rows(m, rows) + ",\"reference\":\"" + m.labels.front() +
-                      "\",\"steiner_ratio_geomean\":" + summary.str() + ",\"peak_rss_bytes\":" + std::to_string(peak) +
-                      "}";
-    std::printf("%s\n", out.c_str());
-  } else {
-    const bool swept = !m.bounds.empty();
-    // For people: short words; for programs (CSV): the JSON's keys.
-    std::vector<std::string> header = {"algorithm", "input"};
-    if (swept) header.push_back(args.csv ? "min_angle_bound" : "bound");
-    if (args.csv)
-      for (const char* h : {"steiner", "triangles", "min_angle", "max_angle", "bad_triangles",
-                            "bad_near_small_input_angle", "ms", "memory_estimate_kib"})
-        header.push_back(h);
-    else
-      for (const char* h : {"Steiner", "triangles", "min angle", "max angle", "left bad", "at small input angles",
-                            "ms", "est. KiB"})
-        header.push_back(h);
-    TextTable table(header);
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      const RefineReport& r = rows[i].result.report;
-      std::vector<std::string> cells = {m.runs[i].label, args.csv ? m.runs[i].input : base_name(m.runs[i].input)};
-      if (swept) cells.push_back(bound_text(m.runs[i].sweep_bound));
-      const int digits = args.csv ? 6 : 2;
-      cells.push_back(std::to_string(r.steiner_vertices));
-      cells.push_back(std::to_string(rows[i].smallest_angles.size()));
-      cells.push_back(fixed(rows[i].result.angles.min_angle_deg, digits));
-      cells.push_back(fixed(rows[i].result.angles.max_angle_deg, digits));
-      cells.push_back(std::to_string(r.bad_triangles));
-      cells.push_back(std::to_string(r.bad_near_small_input_angle));
-      cells.push_back(fixed(run_ms(rows[i]), args.csv ? 3 : 1));
-      cells.push_back(std::to_string((memory_estimate(rows[i]) + 1023) / 1024));
-      table.add_row(std::move(cells));
-    }
-    if (args.csv) {
-      std::printf("%s", table.csv().c_str());
-    } else {
-      std::printf("%s", table.text().c_str());
-      std::printf("\nSteiner points relative to %s (geometric mean of the ratios over the runs both finished):\n",
-                  m.labels.front().c_str());
-      for (std::size_t a = 0; a < m.labels.size(); ++a)
-        std::printf("  %-24s %s  (%zu run%s)\n", m.labels[a].c_str(), fixed(ratios[a].first, 3).c_str(),
-                    ratios[a].second, ratios[a].second == 1 ? "" : "s");
-      std::printf("Peak resident memory of this process (all %zu runs, %u at a time): %s MiB\n", rows.size(),
-                  std::max(args.jobs, 1u), mib(peak).c_str());
-    }
-  }
-
+  // The plot first: a plot that cannot be written fails the command before anything is printed.
   if (!args.plot.empty()) {
     try {
-      io::write_file_atomically(args.plot, plot_svg(m, rows, args.files.size()));
+      io::write_file_atomically(args.plot, matrix_plot_svg(m, rows, args.files.size()));
     } catch (const InputError& e) {
       print_error(e.what());
       return kExitBadInput;
     }
   }
+  if (args.json) std::printf("%s\n", matrix_json(m, rows, summary).c_str());
+  else if (args.csv) std::printf("%s", matrix_table(m, rows, true).c_str());
+  else std::printf("%s\n%s", matrix_table(m, rows, false).c_str(), matrix_summary_text(m, summary).c_str());
   return kExitOk;
 }
 
@@ -588,7 +348,7 @@ Command add_compare_command(CLI::App& parent) {
   cmd->add_option("--ds", args->ds, "Mesh data structure of every run: tds or dcel");
   cmd->add_option("--insertion", args->insertion, "Point insertion of every run: flip, cavity or bisection");
   cmd->add_flag("--json", args->json, "One JSON object instead of text");
-  cmd->add_flag("--csv", args->csv, "CSV instead of text (--algorithms: one line per run)");
+  cmd->add_flag("--csv", args->csv, "--algorithms, --recipes: CSV instead of text, one line per run");
   cmd->add_option("--plot", args->plot,
                   "Write an SVG figure: the distribution of the triangles' smallest angles per\n"
                   "algorithm, and with a --min-angle sweep, Steiner points against the bound")

@@ -1,8 +1,14 @@
 // Summaries of recorded runs for `meshstep compare` (compare_logs.hpp).
 #include "compare_logs.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <optional>
 
+#include "compare_table.hpp"
+#include "json_line.hpp"
 #include "meshstep/check/quality.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/refine/refine.hpp"
@@ -35,6 +41,8 @@ std::string caption_of(const replay::LogHeader& h, const replay::RunHeader& run)
   if (insertion != "flip") add(insertion);
   return text;
 }
+
+std::string log_file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 }  // namespace
 
@@ -97,6 +105,71 @@ std::string different_inputs_warning(const std::vector<LoggedRun>& runs) {
            "): compared anyway, but their numbers do not measure the algorithms alone";
   }
   return "";
+}
+
+std::string logs_json(const std::vector<LoggedRun>& runs) {
+  std::string out = "{\"runs\":[";
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const LoggedRun& r = runs[i];
+    JsonLine phase_steps;
+    for (const auto& [name, steps] : r.phase_steps) phase_steps.field(name, static_cast<std::size_t>(steps));
+    JsonLine j;
+    j.field("log", r.path)
+        .field("caption", r.caption)
+        .field("input", r.input)
+        .field("input_hash", r.input_hash)
+        .field("algorithm", r.algorithm)
+        .field("ds", r.data_structure)
+        .field("insertion", r.insertion)
+        .field("vertices", r.vertices)
+        .field("triangles", r.triangles)
+        .field("steiner", r.steiner)
+        .field("min_angle", r.min_angle)
+        .field("max_angle", r.max_angle)
+        .field("steps", static_cast<std::size_t>(r.steps))
+        .object("phase_steps", phase_steps)
+        // A log keeps no clock: its run's time is not known here (refine --stats json has it).
+        .field("ms", std::nan(""));
+    out += (i ? "," : "") + j.str();
+  }
+  out += std::string("],\"same_input\":") + (different_inputs_warning(runs).empty() ? "true" : "false") + "}";
+  return out;
+}
+
+std::string logs_text(const std::vector<LoggedRun>& runs) {
+  // Every phase any run has, in the order they first appear.
+  std::vector<std::string> phases;
+  for (const LoggedRun& r : runs)
+    for (const auto& [name, steps] : r.phase_steps)
+      if (std::find(phases.begin(), phases.end(), name) == phases.end()) phases.push_back(name);
+  const auto steps_in = [](const LoggedRun& r, const std::string& phase) -> std::optional<std::uint64_t> {
+    for (const auto& [name, steps] : r.phase_steps)
+      if (name == phase) return steps;
+    return std::nullopt;
+  };
+
+  std::vector<std::string> header = {""};
+  for (const LoggedRun& r : runs) header.push_back(log_file_name(r.path));
+  TextTable table(header);
+  const auto row = [&](const std::string& name, auto cell) {
+    std::vector<std::string> cells = {name};
+    for (const LoggedRun& r : runs) cells.push_back(cell(r));
+    table.add_row(cells);
+  };
+  row("run", [](const LoggedRun& r) { return r.caption; });
+  row("input", [](const LoggedRun& r) { return log_file_name(r.input); });
+  row("Steiner points", [](const LoggedRun& r) { return std::to_string(r.steiner); });
+  row("triangles", [](const LoggedRun& r) { return std::to_string(r.triangles); });
+  row("smallest angle", [](const LoggedRun& r) { return fixed(r.min_angle, 2); });
+  row("largest angle", [](const LoggedRun& r) { return fixed(r.max_angle, 2); });
+  row("steps", [](const LoggedRun& r) { return std::to_string(r.steps); });
+  for (const std::string& phase : phases)
+    row("  " + phase, [&](const LoggedRun& r) {
+      const auto steps = steps_in(r, phase);
+      return steps ? std::to_string(*steps) : std::string("-");
+    });
+  row("time", [](const LoggedRun&) { return std::string("not in the log"); });
+  return table.text();
 }
 
 }  // namespace meshstep::app

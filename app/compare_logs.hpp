@@ -30,6 +30,11 @@ struct LoggedRun {
 // ("PATH: the keyframe after event 40 differs ...") for a damaged or incomplete log.
 LoggedRun read_logged_run(const std::string& path);
 
+// The comparison as one JSON object ({"runs":[...],"same_input":...}; no newline), and as
+// text with a column per run.
+std::string logs_json(const std::vector<LoggedRun>& runs);
+std::string logs_text(const std::vector<LoggedRun>& runs);
+
 // The warning for logs of different inputs (by the input's hash), or "" when they agree.
 std::string different_inputs_warning(const std::vector<LoggedRun>& runs);
 

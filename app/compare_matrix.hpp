@@ -24,6 +24,14 @@ struct MatrixRun {
   std::string recipe;
 };
 
+// The matrix: its runs, the labels of its rows (the first is the reference the summary
+// divides by), and the bounds of a --min-angle sweep.
+struct Matrix {
+  std::vector<MatrixRun> runs;
+  std::vector<std::string> labels;  // in the command line's order; the first is the reference
+  std::vector<double> bounds;       // the sweep's (empty: --min-angle not swept)
+};
+
 struct MatrixRow {
   int status = 0;  // the runner's exit status (0: the run ended and the numbers are its)
   PlanarRefineResult result;
