@@ -471,6 +471,14 @@ int run_planar_refine(const PlanarRefineJob& job) {
         .object("ms", ms);
     std::printf("%s\n", stats.str().c_str());
   }
+  if (job.result) {
+    job.result->mesh = std::move(mesh);
+    job.result->report = std::move(report);
+    job.result->angles = angles;
+    job.result->input_vertices = input_vertices;
+    job.result->input_segments = input_segments;
+    job.result->read_ms = read_ms;
+  }
   return kExitOk;
 }
 
