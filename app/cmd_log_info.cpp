@@ -4,6 +4,7 @@
 
 #include "cmd_log.hpp"
 #include "json_line.hpp"
+#include "meshstep/replay/operations.hpp"
 #include "meshstep/replay/log_reader.hpp"
 
 namespace meshstep::app {
@@ -21,7 +22,17 @@ int run_info(const InfoArgs& args) {
     std::size_t keyframe_bytes = 0;
     for (const auto& k : log.keyframes()) keyframe_bytes += k.stored_size;
     const double per_event = log.event_count() ? static_cast<double>(log.file_size()) / log.event_count() : 0.0;
+    const std::vector<replay::OperationSpan> operations = replay::operation_spans(log, args.log);
     if (args.json) {
+      std::vector<JsonLine> listed;
+      for (const replay::OperationSpan& o : operations) {
+        listed.emplace_back();
+        listed.back()
+            .field("operation", print_operation(o.operation))
+            .field("from_step", static_cast<std::size_t>(o.from_step))
+            .field("to_step", static_cast<std::size_t>(o.to_step))
+            .field("complete", o.complete);
+      }
       JsonLine counts;
       for (std::size_t t = 0; t < replay::kEventTypeCount; ++t)
         counts.field(replay::name(static_cast<replay::EventType>(t)), static_cast<std::size_t>(log.counts_by_type()[t]));
@@ -45,6 +56,7 @@ int run_info(const InfoArgs& args) {
           .field("file_bytes", static_cast<std::size_t>(log.file_size()))
           .field("bytes_per_event", per_event)
           .object("events_by_type", counts);
+      if (!operations.empty()) j.array("operations", listed);
       if (!log.complete()) j.field("incomplete", log.incomplete_reason());
       std::printf("%s\n", j.str().c_str());
     } else {
@@ -53,6 +65,14 @@ int run_info(const InfoArgs& args) {
       std::printf("  run:        %s on %s (input hash %s)\n", h.algorithm.c_str(), h.input.c_str(),
                   h.input_hash.c_str());
       std::printf("  parameters: %s\n", h.parameters.c_str());
+      if (!operations.empty()) {
+        std::printf("  operations: %zu, one after the other on the one mesh\n", operations.size());
+        for (std::size_t i = 0; i < operations.size(); ++i)
+          std::printf("    %zu. %s (steps %llu to %llu%s)\n", i + 1, print_operation(operations[i].operation).c_str(),
+                      static_cast<unsigned long long>(operations[i].from_step),
+                      static_cast<unsigned long long>(operations[i].to_step),
+                      operations[i].complete ? "" : ", not finished in this log");
+      }
       std::printf("  mesh:       %s, insertion by %s\n", h.data_structure.c_str(), h.insertion.c_str());
       if (!h.regions.empty()) std::printf("  regions:    %zu region points (the input's)\n", h.regions.size());
       std::printf("  events:     %llu in %llu steps\n", static_cast<unsigned long long>(log.event_count()),

@@ -1,7 +1,6 @@
 // meshstep run RECIPE INPUT: the operations of a recipe file, one after the other on the same
 // mesh in one process (planar_refine.hpp). A recipe line is an operation in the command
 // line's own words (run_spec.hpp); every line is read and checked before any work.
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -12,6 +11,7 @@
 #include "meshstep/io/formats.hpp"
 #include "meshstep/refine/run_spec.hpp"
 #include "planar_refine.hpp"
+#include "recipe_file.hpp"
 #include "record_option.hpp"
 
 namespace meshstep::app {
@@ -22,64 +22,12 @@ struct RunArgs {
   bool quiet = false, verbose = false;
 };
 
-// A recipe's operations, each with the "RECIPE:LINE: " its errors start with; nothing after
-// printing the first bad line's error.
-struct Recipe {
-  std::vector<Operation> operations;
-  std::vector<std::string> origins;
-};
-
-std::string trimmed_line(const std::string& line) {
-  const std::string text = line.substr(0, line.find('#'));
-  const std::size_t first = text.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return "";
-  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
-}
-
-std::optional<Recipe> read_recipe(const RunArgs& args) {
-  std::ifstream in(args.recipe);
-  if (!in) {
-    print_error(args.recipe + ": cannot be read");
-    return std::nullopt;
-  }
-  Recipe recipe;
-  std::string line;
-  for (std::size_t number = 1; std::getline(in, line); ++number) {
-    const std::string text = trimmed_line(line);
-    if (text.empty()) continue;
-    const std::string origin = args.recipe + ":" + std::to_string(number) + ": ";
-    try {
-      Operation op = parse_operation(text);
-      if (op.kind != OperationKind::refine)
-        throw RunSpecError("a recipe's operations refine the mesh: 'refine ...' expected, not '" + text + "'");
-      if (op.flip_dihedral) throw RunSpecError("--flip-dihedral is for a 3D surface: a recipe refines a planar mesh");
-      // The command line's --ds and --insertion hold for every operation.
-      if (!args.ds.empty()) set_option(op, "ds", args.ds);
-      if (!args.insertion.empty()) set_option(op, "insertion", args.insertion);
-      recipe.operations.push_back(std::move(op));
-      recipe.origins.push_back(origin);
-    } catch (const RunSpecError& e) {
-      print_error(origin + e.what());
-      return std::nullopt;
-    }
-  }
-  if (in.bad()) {
-    print_error(args.recipe + ": cannot be read");
-    return std::nullopt;
-  }
-  if (recipe.operations.empty()) {
-    print_error(args.recipe + ": no operation in the recipe (one 'refine ...' line at least)");
-    return std::nullopt;
-  }
-  return recipe;
-}
-
 int run_recipe(const RunArgs& args) {
   if (io::is_surface(args.input)) {
     print_error(args.input + ": a recipe refines a planar input (.poly, .node or a mesh PREFIX), not a 3D surface");
     return kExitUsage;
   }
-  std::optional<Recipe> recipe = read_recipe(args);
+  std::optional<Recipe> recipe = read_recipe_file(args.recipe, args.ds, args.insertion);
   if (!recipe) return kExitBadInput;
   PlanarRefineJob job;
   job.input = args.input;

@@ -23,6 +23,7 @@ Command add_check_command(CLI::App& parent);
 Command add_log_command(CLI::App& parent);
 Command add_refine_command(CLI::App& parent);
 Command add_run_command(CLI::App& parent);
+Command add_compare_command(CLI::App& parent);
 Command add_list_command(CLI::App& parent);
 Command add_render_command(CLI::App& parent);
 Command add_export_command(CLI::App& parent);

@@ -1,10 +1,11 @@
-// A one-line JSON object writer for --stats json: flat fields and one level of nesting,
-// which is all the statistics need.
+// A one-line JSON object writer for --stats json: flat fields, nested objects and arrays
+// of objects, which is all the statistics need.
 #pragma once
 
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace meshstep::app {
 
@@ -45,6 +46,13 @@ class JsonLine {
   JsonLine& object(const std::string& key, const JsonLine& inner) {
     key_(key);
     text_ += inner.str();
+    return *this;
+  }
+  JsonLine& array(const std::string& key, const std::vector<JsonLine>& items) {
+    key_(key);
+    text_ += '[';
+    for (std::size_t i = 0; i < items.size(); ++i) text_ += (i ? "," : "") + items[i].str();
+    text_ += ']';
     return *this;
   }
   std::string str() const { return "{" + text_ + "}"; }

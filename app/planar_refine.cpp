@@ -243,12 +243,6 @@ int run_planar_refine(const PlanarRefineJob& job) {
   for (std::size_t i = 1; i < steps.size(); ++i)
     if (steps[i].no_bound) return refuse_without_bound(i);
 
-  if (steps.size() > 1 && !job.record.empty()) {
-    print_error("--record: a recipe of " + std::to_string(steps.size()) +
-                " operations cannot be recorded yet (one log per recipe is not done): record a one-operation recipe");
-    return kExitUsage;
-  }
-
   // (A mesh prefix has no extension to strip: box.1 becomes box.2, as with Triangle.)
   const std::string prefix =
       job.prefix.empty() ? default_output_prefix(re_refine ? job.input + ".node" : job.input) : job.prefix;
@@ -300,7 +294,8 @@ int run_planar_refine(const PlanarRefineJob& job) {
     for (const std::string& w : warnings) print_warning(verbosity, w);
     input_vertices = input.points.size();
     if (first_no_bound && !has_regional_area_bounds(input)) return refuse_without_bound(0);
-    std::unique_ptr<replay::LogWriter> log;
+    std::vector<RefineOptions> operations;
+    std::vector<bool> budget_capped(steps.size(), false);
     for (std::size_t i = 0; i < steps.size(); ++i) {
       RefineOptions& options = steps[i].options;
       RefineCriteria& step_criteria = options.criteria;
@@ -313,48 +308,57 @@ int run_planar_refine(const PlanarRefineJob& job) {
                                      std::to_string(cap) + " Steiner vertices (--max-steiner to change)");
       }
       // After the cap above, which a user's cap (and so the budget's) would have turned off.
-      const bool caps = budget_caps(step_criteria);
-      if (caps) step_criteria.max_triangles = budget_triangles;
-      note(verbosity, std::string(i == 0 ? "triangulating and refining " + std::to_string(input_vertices) +
-                                               " vertices, " + std::to_string(input_segments) + " segments: "
-                                         : origin(i) + "refining the mesh so far (" +
-                                               std::to_string(mesh.triangles.size()) + " triangles): ") +
-                          options.algorithm + " (selection " + to_string(options.selection) + ", " +
-                          to_string(options.order) + " order, " +
-                          (options.encroachment == Encroachment::lens ? "lens" : "circle") + " encroachment, " +
-                          to_string(options.triangulate.data_structure) + ", " + insertion_name(options) + "); " +
-                          steps[i].bounds_text);
+      budget_capped[i] = budget_caps(step_criteria);
+      if (budget_capped[i]) step_criteria.max_triangles = budget_triangles;
       if (verbosity != Verbosity::quiet) {
         options.progress = [](const RefineProgress& p) {
           std::fprintf(stderr, "meshstep: refining: %zu Steiner vertices, %zu triangles, %zu waiting (%.0f s)\n",
                        p.steiner_vertices, p.triangles, p.queued, p.seconds);
         };
       }
-      if (i == 0 && !job.record.empty()) {
-        log = open_log(job.record, re_refine ? job.input + ".node" : job.input, options.algorithm,
-                       replay::refine_parameters(options, steps[i].size_text, input_vertices, input.first_index) +
-                           (options.region ? " region=" + options.region->text() : ""),
-                       options.triangulate.data_structure, options.triangulate.insertion, &input);
-        options.triangulate.record = log.get();
-      }
-      RefineReport step_report;
-      if (i == 0) {
-        mesh = re_refine ? refine_mesh(old, options, &report) : refine(std::move(input), options, &report);
-        step_report.region_triangles = report.region_triangles;
-      } else {
-        mesh = refine_mesh(mesh, options, &step_report);
-        add_step_report(report, step_report, i + 1);
-      }
-      if (options.region && step_report.region_triangles == 0)
+      operations.push_back(options);
+    }
+    // One log for the whole run: the first operation's parameters, and a recipe's operations
+    // in its header, each running its phases after the one before (run_header.hpp).
+    std::unique_ptr<replay::LogWriter> log;
+    if (!job.record.empty()) {
+      std::string recipe_lines;
+      if (steps.size() > 1)
+        for (const Operation& op : job.operations) recipe_lines += print_operation(op) + "\n";
+      log = open_log(job.record, re_refine ? job.input + ".node" : job.input, operations[0].algorithm,
+                     replay::refine_parameters(operations[0], steps[0].size_text, input_vertices, input.first_index) +
+                         (operations[0].region ? " region=" + operations[0].region->text() : ""),
+                     operations[0].triangulate.data_structure, operations[0].triangulate.insertion, &input,
+                     recipe_lines);
+      operations[0].triangulate.record = log.get();
+    }
+    const auto announce = [&](std::size_t i) {
+      const RefineOptions& options = operations[i];
+      note(verbosity, std::string(i == 0 ? "triangulating and refining " + std::to_string(input_vertices) +
+                                               " vertices, " + std::to_string(input_segments) + " segments: "
+                                         : origin(i) + "refining the mesh so far: ") +
+                          options.algorithm + " (selection " + to_string(options.selection) + ", " +
+                          to_string(options.order) + " order, " +
+                          (options.encroachment == Encroachment::lens ? "lens" : "circle") + " encroachment, " +
+                          to_string(options.triangulate.data_structure) + ", " + insertion_name(options) + "); " +
+                          steps[i].bounds_text);
+    };
+    // Every operation on the one mesh, in one run (refine.hpp: refine_chain).
+    std::vector<RefineReport> reports(operations.size());
+    mesh = re_refine ? refine_mesh_chain(old, operations, reports, announce)
+                     : refine_chain(std::move(input), operations, reports, announce);
+    report = reports[0];
+    for (std::size_t i = 1; i < reports.size(); ++i) add_step_report(report, reports[i], i + 1);
+    for (std::size_t i = 0; i < reports.size(); ++i)
+      if (operations[i].region && reports[i].region_triangles == 0)
         print_warning(verbosity, origin(i) + job.input +
                                      ": no triangle has its centroid in the region, so none was refined: the region "
                                      "lies inside triangles larger than it (refine the whole more coarsely first)");
-      criteria = step_criteria;
-      clock.lap_ms();  // refine() times its own phases (report.triangulate_ms, refine_ms)
-      for (const std::string& w : report.triangulation.warnings) print_warning(verbosity, job.input + ": " + w);
-      stopped_by_budget = report.stopped_by_cap && caps && mesh.triangles.size() >= budget_triangles;
-      if (stopped_by_budget) break;
-    }
+    criteria = operations.back().criteria;
+    clock.lap_ms();  // refine_chain() times its own phases (report.triangulate_ms, refine_ms)
+    for (const std::string& w : report.triangulation.warnings) print_warning(verbosity, job.input + ": " + w);
+    for (std::size_t i = 0; i < reports.size(); ++i)
+      stopped_by_budget |= reports[i].stopped_by_cap && budget_capped[i] && mesh.triangles.size() >= budget_triangles;
     if (!job.no_output && (!stopped_by_budget || job.write_partial)) {
       print_progress(verbosity, "writing " + output.files());
       output.write(mesh);
@@ -471,6 +475,14 @@ int run_planar_refine(const PlanarRefineJob& job) {
         .field("insertion", insertion_name(options))
         .object("ms", ms);
     std::printf("%s\n", stats.str().c_str());
+  }
+  if (job.result) {
+    job.result->mesh = std::move(mesh);
+    job.result->report = std::move(report);
+    job.result->angles = angles;
+    job.result->input_vertices = input_vertices;
+    job.result->input_segments = input_segments;
+    job.result->read_ms = read_ms;
   }
   return kExitOk;
 }

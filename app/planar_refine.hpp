@@ -8,9 +8,22 @@
 
 #include "command.hpp"
 #include "console.hpp"
+#include "meshstep/check/quality.hpp"
+#include "meshstep/mesh/tri_mesh.hpp"
+#include "meshstep/refine/refine.hpp"
 #include "meshstep/refine/run_spec.hpp"
 
 namespace meshstep::app {
+
+// What a finished run made, for a caller that tabulates runs (meshstep compare): the same
+// values the run's --stats json prints.
+struct PlanarRefineResult {
+  TriMesh mesh;
+  RefineReport report;
+  AngleStats angles;
+  std::size_t input_vertices = 0, input_segments = 0;
+  double read_ms = 0.0;
+};
 
 struct PlanarRefineJob {
   std::string input;   // a .poly or .node, or a mesh PREFIX to refine again
@@ -26,6 +39,8 @@ struct PlanarRefineJob {
   std::vector<std::string> origins;
   std::string recipe;  // the recipe file, an input no output may overwrite (empty: none)
   int refusal_status = kExitUsage;  // the exit status for an operation that cannot be run
+  // Filled when the run ends with status 0 (none: only printed).
+  PlanarRefineResult* result = nullptr;
 };
 
 // Runs the job and reports as `meshstep refine` does; returns the exit status.

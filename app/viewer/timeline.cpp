@@ -104,13 +104,26 @@ void draw_timeline_picture(ImDrawList& draw, const replay::LogReader& log, Timel
   const float band_bottom = top + 0.45f * size.y;
   draw.AddRectFilled(origin, ImVec2(origin.x + size.x, bottom), IM_COL32(40, 40, 46, 255));
 
-  // Phases, with their names where they fit.
+  // Phases, with their names where they fit. In a recipe's log each refinement phase is
+  // named after its operation ("2: refine"), and a line marks where each operation begins
+  // (its phases follow from the operations alone: replay/operations.hpp).
+  const std::vector<Operation>& operations = log.run().operations;
+  std::size_t operation = 0, phases_left = operations.empty() ? 0 : recorded_phases(operations[0]);
   for (const replay::PhaseSpan& p : log.phases()) {
     const float x0 = x_of(p.begin), x1 = std::max(x0 + 1.0f, x_of(std::min(p.end, log.event_count())));
     const auto i = static_cast<std::size_t>(p.phase);
     draw.AddRectFilled(ImVec2(x0, top), ImVec2(x1, band_bottom), kPhaseColors[i % 5]);
     static constexpr const char* kLabels[] = {"insert vertices", "recover segments", "carve", "refine", "improve"};
     const char* label = i < 5 ? kLabels[i] : replay::name(p.phase);
+    char numbered[48];
+    const bool of_an_operation = p.phase == replay::Phase::refine || p.phase == replay::Phase::improve;
+    if (of_an_operation && operation < operations.size()) {
+      if (phases_left == recorded_phases(operations[operation]))
+        draw.AddLine(ImVec2(x0, top), ImVec2(x0, bottom), IM_COL32(255, 255, 255, 200), 2.0f);
+      std::snprintf(numbered, sizeof numbered, "%zu: %s", operation + 1, label);
+      label = numbered;
+      if (--phases_left == 0 && ++operation < operations.size()) phases_left = recorded_phases(operations[operation]);
+    }
     const ImVec2 text = ImGui::CalcTextSize(label);
     if (text.x + 8.0f < x1 - x0) draw.AddText(ImVec2(x0 + 4.0f, top + 2.0f), IM_COL32(255, 255, 255, 230), label);
   }

@@ -3,11 +3,15 @@
 // `meshstep refine` writes, and every bad line is refused as RECIPE:LINE before any work.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/refine/region.hpp"
+#include "meshstep/replay/log_reader.hpp"
+#include "meshstep/replay/operations.hpp"
+#include "meshstep/scene/pseudocode.hpp"
 #include "run_cli.hpp"
 #include "temp_dir.hpp"
 
@@ -95,6 +99,90 @@ TEST_F(RunRecipeCli, AOneLineRecipeWritesWhatRefineWrites) {
       EXPECT_TRUE(fa == fb) << ext << " differs";
     }
   }
+}
+
+// The numbers after each `"to_step":` in `log info --json`'s operations, in order.
+std::vector<std::string> to_steps(const std::string& json) {
+  std::vector<std::string> steps;
+  const std::string key = "\"to_step\":";
+  for (std::size_t at = json.find(key); at != std::string::npos; at = json.find(key, at + 1)) {
+    const std::size_t from = at + key.size();
+    steps.push_back(json.substr(from, json.find_first_not_of("0123456789", from) - from));
+  }
+  return steps;
+}
+
+// One log for the whole recipe: `log info` lists its operations with their steps, and the
+// log's mesh at the end of each operation is, file for file, what the recipe cut after that
+// operation writes. The third operation runs in two phases (aspect, then angle) and the
+// second improves, so the phases of each must be counted right.
+TEST_F(RunRecipeCli, ARecipeIsRecordedInOneLogAndEachOperationEndsWhereItsRecipeWould) {
+  const std::string input = write("square.poly", kSquare);
+  const std::vector<std::string> lines = {
+      "refine --algorithm lepp-centroid --min-angle 25 --max-area 2",
+      "refine --algorithm offcenter --min-angle 28 --max-area 0.1 --improve --region 1,1,4,4",
+      "refine --algorithm combined --min-angle 30 --max-area 0.4",
+  };
+  std::string text;
+  for (const std::string& line : lines) text += line + "\n";
+  const std::string recipe = write("chain.recipe", text);
+  const std::string log = dir_.file("chain.mslog");
+  const CommandResult r = meshstep("run " + recipe + " " + input + " -q -o " + dir_.file("chain") + " --record " + log);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(meshstep("log verify " + log).status, 0);
+
+  const CommandResult info = meshstep("log info " + log + " --json");
+  ASSERT_EQ(info.status, 0) << info.err;
+  const std::vector<std::string> ends = to_steps(info.out);
+  ASSERT_EQ(ends.size(), lines.size()) << info.out;
+  EXPECT_EQ(std::count(info.out.begin(), info.out.end(), '['), 1) << info.out;
+  const CommandResult listed = meshstep("log info " + log);
+  EXPECT_TRUE(contains(listed.out, "operations: 3")) << listed.out;
+  EXPECT_TRUE(contains(listed.out, "2. refine --min-angle 28 --max-area 0.1 --improve")) << listed.out;
+
+  std::string cut;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    SCOPED_TRACE(lines[i]);
+    cut += lines[i] + "\n";
+    const std::string part = write("part" + std::to_string(i) + ".recipe", cut);
+    const std::string alone = dir_.file("alone" + std::to_string(i)), at = dir_.file("at" + std::to_string(i));
+    ASSERT_EQ(meshstep("run " + part + " " + input + " -q -o " + alone).status, 0);
+    const CommandResult m = meshstep("log mesh " + log + " --step " + ends[i] + " -o " + at);
+    ASSERT_EQ(m.status, 0) << m.err;
+    for (const char* ext : {".node", ".ele"}) {
+      const std::string fa = testing::slurp(alone + ext), fb = testing::slurp(at + ext);
+      EXPECT_FALSE(fa.empty()) << ext;
+      EXPECT_TRUE(fa == fb) << ext << " differs at the end of operation " << i + 1;
+    }
+  }
+  // The operations end one after the other, the last where the log does.
+  EXPECT_LT(std::stoull(ends[0]), std::stoull(ends[1]));
+  EXPECT_LT(std::stoull(ends[1]), std::stoull(ends[2]));
+}
+
+// In a recipe's log the pseudo-code panel follows the operation at the cursor: Lepp-centroid
+// in the first, off-centers in the second, and vertex removal in the second's improvement.
+TEST_F(RunRecipeCli, ThePseudoCodeFollowsTheOperationAtTheCursor) {
+  const std::string input = write("square.poly", kSquare);
+  const std::string recipe = write("two.recipe",
+                                   "refine --algorithm lepp-centroid --min-angle 25 --max-area 2\n"
+                                   "refine --algorithm offcenter --min-angle 28 --max-area 0.1 --improve\n");
+  const std::string log_path = dir_.file("two.mslog");
+  ASSERT_EQ(meshstep("run " + recipe + " " + input + " -q -o " + dir_.file("two") + " --record " + log_path).status, 0);
+  const replay::LogReader log(log_path);
+  const std::vector<replay::OperationSpan> spans = replay::operation_spans(log, log_path);
+  ASSERT_EQ(spans.size(), 2u);
+  ASSERT_LT(spans[0].from_step, spans[0].to_step);
+  ASSERT_LT(spans[1].from_step, spans[1].to_step);
+  std::vector<scene::Program> seen;
+  for (const replay::PhaseSpan& p : log.phases()) {
+    if (p.phase != replay::Phase::refine && p.phase != replay::Phase::improve) continue;
+    if (p.end == p.begin + 2) continue;  // an empty phase: its begin and end alone
+    seen.push_back(scene::pseudocode_at(log, p.begin + 2).program);
+  }
+  const std::vector<scene::Program> expected = {scene::Program::lepp_centroid, scene::Program::offcenter,
+                                                scene::Program::vertex_removal};
+  EXPECT_EQ(seen, expected);
 }
 
 // Each bad line: RECIPE:LINE: what is wrong, exit status 1, nothing written.

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <span>
+#include <stdexcept>
 #include <string>
 
 #include "../delaunay/builder.hpp"
@@ -78,50 +80,84 @@ detail::ScaledCriteria scaled(const RefineCriteria& c, int exponent, const Trian
   return s;
 }
 
+template <class Rec>
+void record_empty_phase(Rec& rec, replay::Phase phase) {
+  rec.phase_begin(phase);
+  rec.phase_end(phase);
+}
+
 double ms_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
 }
 
 template <TriangleMesh Mesh, class Rec>
-TriMesh refine_with(Pslg& input, const RefineOptions& options, RefineReport& report, Rec rec) {
+TriMesh refine_with(Pslg& input, std::span<const RefineOptions> operations, std::span<RefineReport> reports,
+                    const std::function<void(std::size_t)>& before, Rec rec) {
+  const RefineOptions& first = operations.front();
   const auto start = std::chrono::steady_clock::now();
-  detail::Builder<Mesh, Rec> builder(input, options.triangulate, report.triangulation, std::move(rec));
+  detail::Builder<Mesh, Rec> builder(input, first.triangulate, reports.front().triangulation, std::move(rec));
   builder.build();
-  report.triangulate_ms = ms_since(start);
-  const auto refine_start = std::chrono::steady_clock::now();
+  reports.front().triangulate_ms = ms_since(start);
   TriangleField regions;  // the regions' own area bounds, on the starting mesh
-  if (options.regional_max_area) builder.region_area_field(regions);
-  const std::vector<RefinePhase> phases =
-      options.phases.empty() ? std::vector<RefinePhase>{{"refine", options.criteria}} : options.phases;
-  // One algorithm object for every phase: what it knows of the boundary (which segment each
-  // split vertex lies on, the small input angles) carries over.
-  const auto refine_by = [&]<class Algorithm>(std::type_identity<Algorithm>) {
-    Algorithm algorithm(builder.triangulation(), builder.boundary_segments(), builder.input_count(), options);
-    for (const RefinePhase& phase : phases) {
-      const auto phase_start = std::chrono::steady_clock::now();
-      algorithm.set_criteria(scaled(phase.criteria, builder.exponent(), regions, options.region));
-      algorithm.run(report);
-      report.phase_ms.emplace_back(phase.name, ms_since(phase_start));
-      if (report.stopped_by_cap) break;
-    }
-    builder.set_boundary_segments(algorithm.boundary());
+  if (first.regional_max_area) builder.region_area_field(regions);
+  const TriangleField no_regions;
+  const auto steiner_so_far = [&] {
+    return builder.triangulation().points().size() - builder.input_count() -
+           builder.triangulation().removed_vertices().size();
   };
-  if (options.insertion == RefineInsertion::bisection) refine_by(std::type_identity<detail::LeppBisector<Mesh, Rec>>{});
-  else refine_by(std::type_identity<detail::Refiner<Mesh, Rec>>{});
+  for (std::size_t i = 0; i < operations.size(); ++i) {
+    const RefineOptions& options = operations[i];
+    RefineReport& report = reports[i];
+    if (before) before(i);
+    const auto refine_start = std::chrono::steady_clock::now();
+    // The first operation counts the triangulation's own Steiner vertices (segment crossings).
+    const std::size_t steiner_before = i == 0 ? 0 : steiner_so_far();
+    const std::vector<RefinePhase> phases =
+        options.phases.empty() ? std::vector<RefinePhase>{{"refine", options.criteria}} : options.phases;
+    // One algorithm object for every phase of an operation: what it knows of the boundary
+    // (which segment each split vertex lies on, the small input angles) carries over. The
+    // next operation starts from the boundary this one left, each subsegment a segment.
+    const auto refine_by = [&]<class Algorithm>(std::type_identity<Algorithm>) {
+      Algorithm algorithm(builder.triangulation(), builder.boundary_segments(), builder.input_count(), options);
+      for (const RefinePhase& phase : phases) {
+        if (report.stopped_by_cap) {
+          // The phases a cap cut off are recorded empty, so that a log's phases follow
+          // from its operations alone (replay/run_header.hpp).
+          record_empty_phase(builder.triangulation().recorder(), replay::Phase::refine);
+          if (options.improve) record_empty_phase(builder.triangulation().recorder(), replay::Phase::improve);
+          continue;
+        }
+        const auto phase_start = std::chrono::steady_clock::now();
+        algorithm.set_criteria(
+            scaled(phase.criteria, builder.exponent(), options.regional_max_area ? regions : no_regions, options.region));
+        algorithm.run(report);
+        report.phase_ms.emplace_back(phase.name, ms_since(phase_start));
+      }
+      builder.set_boundary_segments(algorithm.boundary());
+    };
+    if (options.insertion == RefineInsertion::bisection)
+      refine_by(std::type_identity<detail::LeppBisector<Mesh, Rec>>{});
+    else
+      refine_by(std::type_identity<detail::Refiner<Mesh, Rec>>{});
+    // What this operation added, net of what it removed again.
+    report.steiner_vertices = steiner_so_far() - steiner_before;
+    report.refine_ms = ms_since(refine_start);
+  }
   builder.reassign_regions();
-  report.steiner_vertices = builder.triangulation().points().size() - builder.input_count() -
-                            builder.triangulation().removed_vertices().size();
+  const auto finish_start = std::chrono::steady_clock::now();
   TriMesh out = builder.finish();
-  report.refine_ms = ms_since(refine_start);
+  reports.back().refine_ms += ms_since(finish_start);
   return out;
 }
 
 template <TriangleMesh Mesh>
-TriMesh run(Pslg& input, const RefineOptions& options, RefineReport& report) {
-  if (!options.triangulate.record) return refine_with<Mesh>(input, options, report, replay::NullRecorder{});
-  replay::Recorder recorder(*options.triangulate.record);
-  if (options.triangulate.observe_steps) recorder.observe_steps(options.triangulate.observe_steps);
-  return refine_with<Mesh>(input, options, report, std::move(recorder));
+TriMesh run(Pslg& input, std::span<const RefineOptions> operations, std::span<RefineReport> reports,
+            const std::function<void(std::size_t)>& before) {
+  const TriangulateOptions& t = operations.front().triangulate;
+  if (!t.record) return refine_with<Mesh>(input, operations, reports, before, replay::NullRecorder{});
+  replay::Recorder recorder(*t.record);
+  if (t.observe_steps) recorder.observe_steps(t.observe_steps);
+  return refine_with<Mesh>(input, operations, reports, before, std::move(recorder));
 }
 
 // Every set of criteria a run will use: its phases', or its one.
@@ -145,19 +181,28 @@ void check_bisection(const RefineOptions& o, const RefineCriteria& c, const Pslg
 
 }  // namespace
 
-TriMesh refine(Pslg input, const RefineOptions& options, RefineReport* report) {
-  for (const RefineCriteria* c : criteria_of(options)) {
-    check(*c);
-    if (options.insertion == RefineInsertion::bisection) check_bisection(options, *c, input);
-  }
+TriMesh refine_chain(Pslg input, std::span<const RefineOptions> operations, std::span<RefineReport> reports,
+                     const std::function<void(std::size_t)>& before) {
+  if (operations.empty()) throw InputError("a refinement needs at least one operation");
+  if (reports.size() != operations.size()) throw std::invalid_argument("refine_chain: one report per operation");
+  for (const RefineOptions& options : operations)
+    for (const RefineCriteria* c : criteria_of(options)) {
+      check(*c);
+      if (options.insertion == RefineInsertion::bisection) check_bisection(options, *c, input);
+    }
   detail::validate(input);
-  RefineReport local;
-  RefineReport& r = report ? *report : local;
-  switch (options.triangulate.data_structure) {
-    case DataStructure::tds: return run<Tds>(input, options, r);
-    case DataStructure::dcel: return run<Dcel>(input, options, r);
+  for (RefineReport& r : reports) r = RefineReport{};  // a caller's report may hold an earlier run's
+  switch (operations.front().triangulate.data_structure) {
+    case DataStructure::tds: return run<Tds>(input, operations, reports, before);
+    case DataStructure::dcel: return run<Dcel>(input, operations, reports, before);
   }
   throw std::logic_error("unknown data structure");
+}
+
+TriMesh refine(Pslg input, const RefineOptions& options, RefineReport* report) {
+  RefineReport local;
+  return refine_chain(std::move(input), std::span<const RefineOptions>(&options, 1),
+                      std::span<RefineReport>(report ? report : &local, 1));
 }
 
 // Its record's name (refine/registry.hpp), which is a literal: the pointer stays valid.

@@ -55,8 +55,11 @@ Pslg pslg_of(const TriMesh& mesh) {
 
 }  // namespace
 
-TriMesh refine_mesh(const TriMesh& mesh, RefineOptions options, RefineReport* report) {
+TriMesh refine_mesh_chain(const TriMesh& mesh, std::vector<RefineOptions> operations, std::span<RefineReport> reports,
+                          const std::function<void(std::size_t)>& before) {
   if (mesh.triangles.empty()) throw InputError("the mesh has no triangles to refine");
+  if (operations.empty()) throw InputError("a refinement needs at least one operation");
+  RefineOptions& options = operations.front();
   Pslg in = pslg_of(mesh);
   // Holes: the segments enclose the domain, but a hole inside it needs a point. Every
   // triangle of the domain's CDT whose centroid lies in no old triangle is in a hole.
@@ -68,6 +71,7 @@ TriMesh refine_mesh(const TriMesh& mesh, RefineOptions options, RefineReport* re
     for (std::size_t t = 0; t < cdt.triangles.size(); ++t)
       if (inside.at(centroid(cdt, t), 0.0) == 0.0) in.holes.push_back(centroid(cdt, t));
   }
+  // The old triangles' areas bound the first operation, as Triangle's -r -a does.
   const bool has_areas = std::any_of(mesh.triangle_max_area.begin(), mesh.triangle_max_area.end(),
                                      [](double a) { return a > 0.0; });
   if (has_areas && mesh.triangle_max_area.size() == mesh.triangles.size()) {
@@ -80,7 +84,12 @@ TriMesh refine_mesh(const TriMesh& mesh, RefineOptions options, RefineReport* re
       return own > 0.0 ? own : theirs;
     };
   }
-  return refine(std::move(in), options, report);
+  return refine_chain(std::move(in), operations, reports, before);
+}
+
+TriMesh refine_mesh(const TriMesh& mesh, RefineOptions options, RefineReport* report) {
+  RefineReport local;
+  return refine_mesh_chain(mesh, {std::move(options)}, std::span<RefineReport>(report ? report : &local, 1));
 }
 
 }  // namespace meshstep

@@ -96,10 +96,16 @@ class Refiner {
       fix(c);
     }
     rec.phase_end(replay::Phase::refine);
-    if (options_.improve && !capped())
+    if (options_.improve && !capped()) {
       removed_ += remove_steiner_vertices(tri_, input_count_, [&](const auto& before, const auto& after) {
         return removal_improves(before, after);
       });
+    } else if (options_.improve) {
+      // Capped: no improvement, but its phase all the same (empty), so that a log's phases
+      // follow from its operations alone (replay/run_header.hpp).
+      rec.phase_begin(replay::Phase::improve);
+      rec.phase_end(replay::Phase::improve);
+    }
     report.removed_vertices = removed_;
     report.segment_splits = segment_splits_;
     report.triangles_split = triangles_split_;

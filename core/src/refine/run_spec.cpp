@@ -339,6 +339,14 @@ RefineOptions refine_options(const Operation& op, std::function<double(const Poi
   return o;
 }
 
+std::size_t recorded_phases(const Operation& op) {
+  const AlgorithmInfo* algorithm = find_algorithm(op.algorithm);
+  if (!algorithm) return 1;
+  const std::size_t refinements = algorithm->aspect_then_angle ? 2 : 1;
+  const bool improves = op.improve || algorithm->improve;
+  return refinements * (improves ? 2 : 1);
+}
+
 std::string insertion_name(const RefineOptions& options) {
   return options.insertion == RefineInsertion::bisection ? "bisection" : to_string(options.triangulate.insertion);
 }

@@ -94,7 +94,7 @@ void LogReader::read_header() {
       {"program_version", &header_.program_version}, {"input", &header_.input},
       {"input_hash", &header_.input_hash},           {"algorithm", &header_.algorithm},
       {"parameters", &header_.parameters},           {"data_structure", &header_.data_structure},
-      {"insertion", &header_.insertion}};
+      {"insertion", &header_.insertion},             {"operations", &header_.operations}};
   const std::uint8_t* p = file_.data() + 16;
   const std::uint8_t* end = p + length;
   while (p < end) {

@@ -107,6 +107,7 @@ struct LogWriter::Impl {
     put_field(fields, "parameters", header.parameters);
     put_field(fields, "data_structure", header.data_structure);
     put_field(fields, "insertion", header.insertion);
+    if (!header.operations.empty()) put_field(fields, "operations", header.operations);
     if (!header.regions.empty()) put_field(fields, "regions", regions_field(header.regions));
     if (!header.holes.empty()) put_field(fields, "holes", holes_field(header.holes));
     if (!header.vertex_markers.empty()) put_field(fields, "vertex_markers", vertex_markers_field(header.vertex_markers));

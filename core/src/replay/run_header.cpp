@@ -9,6 +9,7 @@
 #include "meshstep/error.hpp"
 #include "meshstep/io/shortest_text.hpp"
 #include "meshstep/refine/registry.hpp"
+#include "meshstep/refine/run_spec.hpp"
 
 namespace meshstep::replay {
 namespace {
@@ -105,6 +106,17 @@ RunHeader read_run_header(const LogHeader& header, const std::string& path) {
       run.region = RefineRegion::parse_text(r);
     } catch (const InputError& e) {
       throw InputError(path, 0, "the header's parameter region=" + r + ": " + e.message());
+    }
+  }
+  // A recipe's operations, one a line, each read by the recipe's own parser.
+  std::istringstream lines(header.operations);
+  std::size_t number = 0;
+  for (std::string line; std::getline(lines, line);) {
+    ++number;
+    try {
+      run.operations.push_back(parse_operation(line));
+    } catch (const std::invalid_argument& e) {
+      throw InputError(path, 0, "the header's operation " + std::to_string(number) + " (" + line + "): " + e.what());
     }
   }
   return run;

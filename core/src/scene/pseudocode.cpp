@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "meshstep/refine/registry.hpp"
+#include "meshstep/replay/operations.hpp"
 
 namespace meshstep::scene {
 
@@ -390,12 +391,15 @@ Insertion refinement_insertion(const replay::LogReader& log) {
 // The refinement program: by the point selection the header names (an algorithm's own or
 // --select's), the bisection insertion first; by the algorithm's registered selection when
 // the header does not say.
-Program refinement_program(const replay::LogReader& log) {
-  const AlgorithmInfo* algorithm = find_algorithm(log.header().algorithm);
-  if (log.run().insertion == "bisection" || (algorithm && algorithm->insertion == RefineInsertion::bisection))
-    return Program::lepp_bisection;
+// In a recipe's log, by the operation that recorded the phase.
+Program refinement_program(const replay::LogReader& log, const replay::PhaseSpan* span) {
+  const Operation* op = span ? replay::operation_of(log, *span) : nullptr;
+  const AlgorithmInfo* algorithm = find_algorithm(op ? op->algorithm : log.header().algorithm);
+  const bool bisection = op ? op->insertion == PointInsertion::bisection : log.run().insertion == "bisection";
+  if (bisection || (algorithm && algorithm->insertion == RefineInsertion::bisection)) return Program::lepp_bisection;
+  const std::optional<Selection> named = op ? op->selection : log.run().selection;
   const std::optional<Selection> selection =
-      log.run().selection ? log.run().selection : algorithm ? std::optional(algorithm->selection) : std::nullopt;
+      named ? named : algorithm ? std::optional(algorithm->selection) : std::nullopt;
   switch (selection.value_or(Selection::circumcenter)) {
     case Selection::offcenter: return Program::offcenter;
     case Selection::lepp_midpoint: return Program::lepp_midpoint;
@@ -435,7 +439,7 @@ Choice program_for(const replay::LogReader& log, const replay::PhaseSpan* span) 
   switch (phase) {
     case Phase::recover_segments:
     case Phase::carve: return {Program::segment_recovery, Insertion::flips};
-    case Phase::refine: return {refinement_program(log), refinement_insertion(log)};
+    case Phase::refine: return {refinement_program(log, span), refinement_insertion(log)};
     case Phase::improve: return {Program::vertex_removal, Insertion::flips};
     default: {
       const Insertion insertion = triangulation_insertion(log);

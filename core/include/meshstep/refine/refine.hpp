@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -162,6 +163,20 @@ TriMesh refine(Pslg input, const RefineOptions& options, RefineReport* report = 
 // from PREFIX.area) bounds the new triangles whose centroid lies in it, together with
 // options.criteria. Throws InputError for a mesh with no triangles.
 TriMesh refine_mesh(const TriMesh& mesh, RefineOptions options, RefineReport* report = nullptr);
+
+// A chain of refinements on one mesh, in one run (a recipe's operations): the input is
+// triangulated once, with the first operation's triangulation options (data structure,
+// insertion, and the log it records to), then each operation's algorithm runs in turn on
+// the mesh the one before left, starting from the boundary it left (each subsegment a
+// segment), and records its phases into the same log. One report per operation (the same
+// count): its own counts, and its own assessment of the mesh at its end; the first also
+// holds the triangulation's. `before`, when set, is called with each operation's index as
+// it begins. Throws as refine() does, for any operation's criteria, before any work.
+TriMesh refine_chain(Pslg input, std::span<const RefineOptions> operations, std::span<RefineReport> reports,
+                     const std::function<void(std::size_t)>& before = {});
+// The same on an existing mesh, as refine_mesh (its .area bounds the first operation).
+TriMesh refine_mesh_chain(const TriMesh& mesh, std::vector<RefineOptions> operations,
+                          std::span<RefineReport> reports, const std::function<void(std::size_t)>& before = {});
 
 // The angle apb from which a point p encroaches on segment ab under Encroachment::lens:
 // 180 - 2 theta for the angle bound theta, no more than the largest angle the other shape

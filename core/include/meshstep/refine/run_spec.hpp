@@ -107,6 +107,12 @@ RefineOptions refine_options(const Operation& op, std::function<double(const Poi
 // triangulation's "flip" or "cavity".
 std::string insertion_name(const RefineOptions& options);
 
+// The phases an operation records in a log, capped or not: one refinement phase per phase
+// of its algorithm (two for aspect-then-angle), each followed by an improvement phase when
+// it improves. A recipe's log holds its operations' phases in order after the
+// triangulation's, so that this count says where each operation begins and ends.
+std::size_t recorded_phases(const Operation& op);
+
 // The region an operation names, or none: the box as parsed, or the polygon its --region-poly
 // file's segments make. Throws InputError ("FILE: a region polygon's segment 1 and ...") for
 // a file that cannot be read or makes no simple polygon.

@@ -31,6 +31,9 @@ struct LogHeader {
   std::string parameters;       // "key=value" pairs separated by spaces
   std::string data_structure;   // "tds" or "dcel"
   std::string insertion;        // "flip" or "cavity"
+  // A recipe's operations, one a line in the recipe's words (run_spec.hpp: print_operation),
+  // when the run had more than one; each runs its phases after the one before.
+  std::string operations;
   // What the run's output carries from its input beyond the geometry the events hold, so
   // that a moment's mesh can be written as the run writes it (Replay::output_mesh). In
   // input coordinates (the log's), each number exact to the last bit. Fields (text, one

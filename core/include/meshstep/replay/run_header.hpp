@@ -5,9 +5,11 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "meshstep/refine/refine.hpp"
 #include "meshstep/refine/region.hpp"
+#include "meshstep/refine/run_spec.hpp"
 #include "meshstep/replay/log_writer.hpp"
 
 namespace meshstep::replay {
@@ -27,6 +29,10 @@ struct RunHeader {
   std::optional<double> min_angle, max_angle, max_aspect, max_area, size, max_error;
   // The part of the plane the refinement was limited to (region=box:... or polygon:...).
   std::optional<RefineRegion> region;
+  // A recipe's operations in the order they ran (empty: a run of one, described above).
+  // Each ran its phases after the one before: refine_phases(op) refinement phases, then an
+  // improvement phase when it improves and was not capped.
+  std::vector<Operation> operations;
 };
 
 // Reads the header's run description. Throws InputError ("PATH: the header's parameter
