@@ -211,6 +211,8 @@ TEST(PolygonIo, MalformedWktIsRefusedAtItsLine) {
       {"modifier.wkt", "POLYGON Q ((0 0, 1 0, 1 1, 0 0))", 1, "unexpected 'Q'"},
       {"nothing.wkt", "POLYGON", 1, "expected '(' to open a polygon"},
       {"open.wkt", "LINESTRING (0 0, 1 1", 1, "never closed"},
+      // fuzz_polygons' first finding: two spikes, no area.
+      {"spikes.wkt", "\nPOLYGON ((0 1,1  3 1, 0 1, 1 1))", 2, "runs back over itself: it has only 2 distinct segments"},
   };
   for (const Malformed& m : cases) expect_refused(m);
 }

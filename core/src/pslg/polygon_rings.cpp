@@ -215,6 +215,15 @@ Pslg pslg_from_rings(const std::string& file, const std::vector<PolygonRing>& ri
       throw InputError(file, ring.line,
                        std::string(ring.hole ? "a hole" : "a polygon") +
                            " ring needs at least 3 distinct vertices; this one has " + std::to_string(distinct.size()));
+    // A ring that only runs out and back ("0 1, 1 3, 0 1, 1 1": two spikes) encloses nothing.
+    std::vector<std::uint64_t> own;
+    for (std::size_t i = 0; i < chain.size(); ++i) own.push_back(edge_key(chain[i], chain[(i + 1) % chain.size()]));
+    std::sort(own.begin(), own.end());
+    own.erase(std::unique(own.begin(), own.end()), own.end());
+    if (own.size() < 3)
+      throw InputError(file, ring.line,
+                       "this ring runs back over itself: it has only " + std::to_string(own.size()) +
+                           " distinct segments, and encloses nothing");
     for (std::size_t i = 0; i < chain.size(); ++i) {
       const std::uint32_t a = chain[i], b = chain[(i + 1) % chain.size()];
       const auto [it, added] = uses.emplace(edge_key(a, b), Use{pslg.segments.size(), 0});
