@@ -1,0 +1,4 @@
+#include "bindings.hpp"
+namespace meshstep::python {
+void bind_log(py::module_&) {}
+}
