@@ -1,2 +1,19 @@
-"""meshstep: 2D Delaunay triangulation and refinement (placeholder)."""
-from ._meshstep import triangulate, read_poly, __version__
+"""meshstep: 2D Delaunay triangulation and quality refinement, with replayable runs.
+
+Two ways in:
+
+* ``triangulate(tri, opts)`` speaks the ``triangle`` package's language (its dict keys and
+  Triangle's switch letters), so a script written for ``triangle`` runs after changing its
+  import;
+* ``refine(vertices, segments, ...)`` is the Pythonic front of meshstep's run description:
+  an algorithm, its bounds, a region, a recipe, a replay log, and a ``Mesh`` of numpy arrays
+  back.
+
+Bad input raises ``ValueError`` with the core's message; long runs release the GIL and stop
+with ``KeyboardInterrupt`` on Ctrl+C.
+"""
+from ._meshstep import __version__
+from ._triangle import triangulate, read_poly
+from ._refine import Mesh, refine, algorithms
+
+__all__ = ["triangulate", "read_poly", "refine", "Mesh", "algorithms", "__version__"]
