@@ -30,13 +30,11 @@ std::size_t check_shape(const Array& a, std::size_t columns, const std::string& 
 
 template <class Array>
 Array as_array(const py::handle& value, const std::string& what, const char* kind) {
-  try {
-    Array a = Array::ensure(value);
-    if (!a) throw py::error_already_set();
-    return a;
-  } catch (py::error_already_set&) {
-    throw py::value_error(what + ": expected an array of " + kind);
-  }
+  // ensure() clears numpy's own error and returns an empty handle when it cannot convert.
+  Array a = Array::ensure(value);
+  if (!a) throw py::value_error(what + ": expected an array of " + kind + ", got " +
+                                py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+  return a;
 }
 
 std::size_t rows_of(const py::array& a) { return a.ndim() == 0 ? 0 : static_cast<std::size_t>(a.shape(0)); }
