@@ -7,7 +7,9 @@ Two ways in:
   import;
 * ``refine(vertices, segments, ...)`` is the Pythonic front of meshstep's run description:
   an algorithm, its bounds, a region, a recipe, a replay log, and a ``Mesh`` of numpy arrays
-  back.
+  back;
+* ``Log(path)`` reads a recorded run: its steps, the mesh after any step, its events, and
+  the explanation of each step.
 
 Bad input raises ``ValueError`` with the core's message; long runs release the GIL and stop
 with ``KeyboardInterrupt`` on Ctrl+C.
@@ -15,5 +17,6 @@ with ``KeyboardInterrupt`` on Ctrl+C.
 from ._meshstep import __version__
 from ._triangle import triangulate, read_poly
 from ._refine import Mesh, refine, algorithms
+from ._log import Log, Svg
 
-__all__ = ["triangulate", "read_poly", "refine", "Mesh", "algorithms", "__version__"]
+__all__ = ["triangulate", "read_poly", "refine", "Mesh", "algorithms", "Log", "Svg", "__version__"]
