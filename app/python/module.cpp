@@ -23,4 +23,5 @@ PYBIND11_MODULE(_meshstep, m) {
   meshstep::python::bind_triangulate(m);
   meshstep::python::bind_refine(m);
   meshstep::python::bind_log(m);
+  meshstep::python::bind_terrain(m);
 }

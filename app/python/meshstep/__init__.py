@@ -18,5 +18,6 @@ from ._meshstep import __version__
 from ._triangle import triangulate, read_poly
 from ._refine import Mesh, refine, algorithms
 from ._log import Log, Svg
+from ._terrain import terrain_tiles
 
-__all__ = ["triangulate", "read_poly", "refine", "Mesh", "algorithms", "Log", "Svg", "__version__"]
+__all__ = ["triangulate", "read_poly", "refine", "Mesh", "algorithms", "Log", "Svg", "terrain_tiles", "__version__"]
