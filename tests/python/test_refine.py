@@ -111,6 +111,8 @@ def test_a_box_region_is_refined_alone():
     inside = (c[:, 0] <= 0.5) & (c[:, 1] <= 0.5)
     assert areas[inside].max() <= 1e-3
     assert areas[~inside].max() > 1e-3
+    as_list = meshstep.refine(SQUARE, SQUARE_SEGMENTS, max_area=1e-3, region=[0.0, 0.0, 0.5, 0.5])
+    assert (as_list.triangles == mesh.triangles).all()
 
 
 def test_a_polygon_region():

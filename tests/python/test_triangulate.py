@@ -205,3 +205,28 @@ def test_angle_out_of_range_is_the_cores_message():
 def test_switch_number_errors():
     with pytest.raises(ValueError, match="switch 'a'"):
         meshstep.triangulate(dict(vertices=SQUARE), "a1..2")
+
+
+def test_delaunay_and_convex_hull_as_the_triangle_package_has_them():
+    rng = np.random.default_rng(3)
+    points = rng.random((200, 2))
+    triangles = meshstep.delaunay(points)
+    assert (signed_areas(points, triangles) > 0).all()
+    # Empty circumcircles: no point strictly inside any triangle's circumcircle.
+    a, b, c = (points[triangles[:, k]] for k in range(3))
+    bx, by, cx, cy = b[:, 0] - a[:, 0], b[:, 1] - a[:, 1], c[:, 0] - a[:, 0], c[:, 1] - a[:, 1]
+    d = 2 * (bx * cy - by * cx)
+    ux = (cy * (bx ** 2 + by ** 2) - by * (cx ** 2 + cy ** 2)) / d
+    uy = (bx * (cx ** 2 + cy ** 2) - cx * (bx ** 2 + by ** 2)) / d
+    centers = a + np.column_stack([ux, uy])
+    radius2 = ux ** 2 + uy ** 2
+    for center, r2 in zip(centers, radius2):
+        assert ((points - center) ** 2).sum(1).min() >= r2 * (1 - 1e-9)
+    hull = meshstep.convex_hull(points)
+    on_hull = set(hull.ravel().tolist())
+    # Every point is left of (or on) every hull edge.
+    for i, j in hull:
+        e = points[j] - points[i]
+        side = e[0] * (points[:, 1] - points[i, 1]) - e[1] * (points[:, 0] - points[i, 0])
+        assert side.min() >= -1e-12
+    assert len(hull) == len(on_hull)

@@ -15,9 +15,9 @@ Bad input raises ``ValueError`` with the core's message; long runs release the G
 with ``KeyboardInterrupt`` on Ctrl+C.
 """
 from ._meshstep import __version__
-from ._triangle import triangulate, read_poly
+from ._triangle import triangulate, delaunay, convex_hull, read_poly
 from ._refine import Mesh, refine, algorithms
 from ._log import Log, Svg
 from ._terrain import terrain_tiles
 
-__all__ = ["triangulate", "read_poly", "refine", "Mesh", "algorithms", "Log", "Svg", "terrain_tiles", "__version__"]
+__all__ = ["triangulate", "delaunay", "convex_hull", "read_poly", "refine", "Mesh", "algorithms", "Log", "Svg", "terrain_tiles", "__version__"]

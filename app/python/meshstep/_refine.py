@@ -134,7 +134,8 @@ def refine(vertices: ArrayLike,
         line, '#' comments) or a ``pathlib.Path`` to a recipe file; the operations run one
         after the other on the same mesh (docs/recipes.md).
     record: write every step of the run to this replay log (``meshstep log``, ``Log``).
-    ds: the mesh data structure, ``tds`` or ``dcel`` (the same mesh either way).
+    ds: the mesh data structure, ``tds`` or ``dcel`` (the same vertices and triangles either
+        way; a triangle may be listed from another corner).
     segment_markers, vertex_markers: (m,) and (n,) integers carried to the output.
     is_bad: meshpy's ``refinement_func``: ``is_bad(vertices, area)`` gets a triangle's (3, 2)
         corners and its area and returns True to have it refined, besides the bounds.
@@ -174,7 +175,7 @@ def refine(vertices: ArrayLike,
         words += ["--algorithm", algorithm]
         words += _option_words("min_angle", min_angle) + _option_words("max_area", max_area)
         if region is not None:
-            if isinstance(region, tuple) and len(region) == 4:
+            if np.ndim(region) == 1 and len(region) == 4:  # four numbers: a box
                 words += ["--region", ",".join(_number(v, "region") for v in region)]
             else:
                 region_polygon = region

@@ -8,7 +8,7 @@ import numpy as np
 
 from . import _meshstep
 
-__all__ = ["triangulate", "read_poly"]
+__all__ = ["triangulate", "delaunay", "convex_hull", "read_poly"]
 
 
 def triangulate(tri: Mapping[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
@@ -61,3 +61,23 @@ def read_poly(path: Union[str, "os.PathLike[str]"]) -> Dict[str, np.ndarray]:
     ``FILE:LINE: what is wrong`` for a malformed file.
     """
     return _meshstep.read_poly(os.fspath(path))
+
+
+def delaunay(pts: Any) -> np.ndarray:
+    """The Delaunay triangulation of (n, 2) points, as the triangle package's ``delaunay``:
+    (t, 3) vertex indices, counterclockwise. Duplicate points are used once."""
+    return triangulate({"vertices": pts}, "")["triangles"]
+
+
+def convex_hull(pts: Any) -> np.ndarray:
+    """The convex hull of (n, 2) points, as the triangle package's ``convex_hull``: its edges,
+    (h, 2) vertex indices, each directed counterclockwise (the points on its left)."""
+    points = np.asarray(pts, dtype=float)
+    t = triangulate({"vertices": points}, "")
+    edges = t["segments"].copy()
+    # Direct each edge so that a point inside (the centroid of the hull's corners) is on its left.
+    inside = points[np.unique(edges)].mean(axis=0)
+    a, b = points[edges[:, 0]], points[edges[:, 1]]
+    left = (b[:, 0] - a[:, 0]) * (inside[1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (inside[0] - a[:, 0])
+    edges[left < 0] = edges[left < 0][:, ::-1]
+    return edges
