@@ -37,7 +37,7 @@ py::dict triangulate_dict(const py::object& given, const std::string& opts) {
   }
   // S or S0: no Steiner point at all, so no refinement (crossing segments still meet at
   // their crossing: the CDT needs that vertex).
-  const bool no_steiner = s.max_steiner && (s.max_steiner->empty() || std::stod(*s.max_steiner) == 0.0);
+  const bool no_steiner = s.max_steiner && s.max_steiner->find_first_not_of('0') == std::string::npos;
   const bool refines = !no_steiner && (s.quality || !s.max_area.empty() || s.regional_area || s.conforming ||
                                        s.refine_mesh || (s.max_steiner && !no_steiner));
 

@@ -205,6 +205,10 @@ def test_angle_out_of_range_is_the_cores_message():
 def test_switch_number_errors():
     with pytest.raises(ValueError, match="switch 'a'"):
         meshstep.triangulate(dict(vertices=SQUARE), "a1..2")
+    with pytest.raises(ValueError, match="switch 'S'"):
+        meshstep.triangulate(dict(vertices=SQUARE), "qS1.5")
+    with pytest.raises(ValueError, match="switch 'S'"):
+        meshstep.triangulate(dict(vertices=SQUARE), "qS.")
 
 
 def test_delaunay_and_convex_hull_as_the_triangle_package_has_them():
