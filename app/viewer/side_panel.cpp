@@ -101,6 +101,9 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
     bool dark = session_->options().theme == scene::Theme::dark;
     if (ImGui::Checkbox("dark theme (T)", &dark)) session_->set_theme(dark ? scene::Theme::dark : scene::Theme::light);
     ImGui::SameLine();
+    bool contrast = session_->options().theme == scene::Theme::high_contrast;
+    if (ImGui::Checkbox("high contrast (Shift+T)", &contrast)) toggle_high_contrast();
+    ImGui::SameLine();
     ImGui::Checkbox("follow (L)", &follow);
     for (std::size_t i = 0; i < scene::kLayerCount; ++i) {
       const auto layer = static_cast<scene::Layer>(i);

@@ -8,6 +8,7 @@
 #include "keys.hpp"
 #include "meshstep/scene/layout.hpp"
 #include "panel_style.hpp"
+#include "ui_look.hpp"
 
 namespace meshstep::viewer {
 
@@ -67,6 +68,7 @@ void Viewer::apply(const Settings& s) {
   layers_open_ = s.layers_open;
   stats_open_ = s.stats_open;
   code_open_ = s.code_open;
+  ui_scale = s.ui_scale;
   view3d_.set_orbit(s.orbit);
   prefer_3d_ = s.view_3d;
   // Quietly: the settings ask for 3D whenever a terrain's run is open.
@@ -86,6 +88,7 @@ void Viewer::capture(Settings& s) const {
   s.layers_open = layers_open_;
   s.stats_open = stats_open_;
   s.code_open = code_open_;
+  s.ui_scale = ui_scale;
   // A run without heights says nothing about the 3D view: the wish is kept for the next.
   s.view_3d = view3d_.available() ? view3d_.on() : prefer_3d_;
   s.orbit = view3d_.orbit();
@@ -179,6 +182,19 @@ void Viewer::say(const char* text) {
   notice_seconds_ = 4.0;
 }
 
+void Viewer::notify(const std::string& text) { say(text.c_str()); }
+
+void Viewer::scale_ui(int steps) {
+  const float next = step_ui_scale(ui_scale, steps);
+  if (next == ui_scale) say(steps > 0 ? "UI scale: 3 is the largest" : "UI scale: 0.75 is the smallest");
+  ui_scale = next;
+}
+
+void Viewer::toggle_high_contrast() {
+  session_->set_theme(session_->options().theme == scene::Theme::high_contrast ? scene::Theme::light
+                                                                               : scene::Theme::high_contrast);
+}
+
 void Viewer::cycle_color_by(int direction) {
   if (view3d_.on()) say("in 3D the surface is coloured by its heights: the colouring shows in 2D (V)");
   const int n = static_cast<int>(scene::ColorBy::count_);
@@ -242,13 +258,18 @@ void Viewer::frame(int width, int height, double seconds) {
   session_->advance(seconds);
   notice_seconds_ = std::max(0.0, notice_seconds_ - seconds);
 
-  const float side = std::min(side_panel_width_, 0.4f * static_cast<float>(width));
-  const float timeline = session_->has_timeline() ? kTimelineHeight : 0.0f;
+  window_width_ = width;
+  window_height_ = height;
+  // The panels grow with the UI scale, as their text does; hidden (Tab), the canvas is the
+  // whole window.
+  const float side = panels_hidden ? 0.0f : std::min(side_panel_width_ * ui_scale, 0.4f * static_cast<float>(width));
+  const bool timeline_shown = session_->has_timeline() && !panels_hidden;
+  const float timeline = timeline_shown ? std::min(kTimelineHeight * ui_scale, 0.4f * static_cast<float>(height)) : 0.0f;
   const float canvas_w = std::max(1.0f, static_cast<float>(width) - side);
   const float canvas_h = std::max(1.0f, static_cast<float>(height) - timeline);
   draw_canvas(0, 0, canvas_w, canvas_h);
-  draw_side_panel(canvas_w, 0, side, static_cast<float>(height));
-  if (session_->has_timeline()) draw_timeline(0, canvas_h, canvas_w, timeline);
+  if (!panels_hidden) draw_side_panel(canvas_w, 0, side, static_cast<float>(height));
+  if (timeline_shown) draw_timeline(0, canvas_h, canvas_w, timeline);
   if (help_open) draw_help();
 }
 
