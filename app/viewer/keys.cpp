@@ -64,7 +64,7 @@ std::vector<KeyAction> make_actions() {
   // Presentation: the UI scale (fonts rasterised again at the new size), full screen, and
   // the canvas alone. F11 is full screen as in most programs; the legend's layer is on F12.
   add({GLFW_KEY_EQUAL, false, true}, "Ctrl+=", "larger UI (text and panels)", [](Viewer& v) { v.scale_ui(+1); });
-  add({GLFW_KEY_EQUAL, true, true}, "Ctrl++", nullptr, [](Viewer& v) { v.scale_ui(+1); });
+  add({GLFW_KEY_EQUAL, true, true}, "Ctrl+Shift+=", nullptr, [](Viewer& v) { v.scale_ui(+1); });
   add({GLFW_KEY_MINUS, false, true}, "Ctrl+-", "smaller UI", [](Viewer& v) { v.scale_ui(-1); });
   add({GLFW_KEY_F11}, "F11", "full screen / window", [](Viewer& v) { v.full_screen = !v.full_screen; });
   add({GLFW_KEY_TAB}, "Tab", "hide / show the panels (the canvas fills the window)",
