@@ -76,7 +76,14 @@ void high_contrast_colors(ImGuiStyle& style) {
 
 }  // namespace
 
+namespace {
+UiLook g_look;  // the UI thread's: ImGui has one context, used from that thread only
+}  // namespace
+
+const UiLook& current_ui_look() { return g_look; }
+
 void apply_ui_look(const UiLook& look) {
+  g_look = look;
   ImGuiIO& io = ImGui::GetIO();
   io.Fonts->Clear();
   const std::string_view font = render::embedded_file("DejaVuSans.ttf");

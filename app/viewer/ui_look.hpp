@@ -40,5 +40,7 @@ struct UiLook {
 // Call outside a frame (not between ImGui::NewFrame and ImGui::Render), then upload the
 // atlas again.
 void apply_ui_look(const UiLook& look);
+// The look apply_ui_look set last (the panels pick their own colours by its theme).
+const UiLook& current_ui_look();
 
 }  // namespace meshstep::viewer

@@ -260,6 +260,11 @@ void Viewer::frame(int width, int height, double seconds) {
 
   window_width_ = width;
   window_height_ = height;
+  // The canvas's words grow with the panels'; the fit leaves them their room again.
+  if (session_->options().text_scale != ui_scale) {
+    session_->set_text_scale(ui_scale);
+    if (!camera_moved_) fit_pending_ = true;
+  }
   // The panels grow with the UI scale, as their text does; hidden (Tab), the canvas is the
   // whole window.
   const float side = panels_hidden ? 0.0f : std::min(side_panel_width_ * ui_scale, 0.4f * static_cast<float>(width));
@@ -280,6 +285,7 @@ void Viewer::post_canvas_request() {
   wanted.color_by = o.color_by;
   wanted.theme = o.theme;
   wanted.layers = o.layers;
+  wanted.text_scale = o.text_scale;
   wanted.center = camera_.center();
   wanted.pixels_per_unit = camera_.pixels_per_unit();
   wanted.width = camera_.width();
@@ -360,7 +366,7 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
   } else {
     const scene::Scene& shown = shown_scene();
     const Drawn now{session_->scene_builds(), shown.visible.bits(), camera_.center().x, camera_.center().y,
-                    camera_.pixels_per_unit(), width, height, view3d_.on(), view3d_.orbit()};
+                    camera_.pixels_per_unit(), width, height, view3d_.on(), view3d_.orbit(), shown.text_scale};
     if (!(now == drawn_)) {
       renderer_.render(shown, camera_);
       drawn_ = now;
@@ -465,7 +471,7 @@ void Viewer::draw_help() {
       if (!a.what) continue;  // one line stands for a family (bookmarks 1-9)
       ImGui::TableNextColumn();
       const bool digit = a.chord.key >= '1' && a.chord.key <= '9';
-      ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", digit ? (a.chord.ctrl ? "Ctrl+1..9" : "1..9") : a.keys);
+      ImGui::TextColored(heading_color(), "%s", digit ? (a.chord.ctrl ? "Ctrl+1..9" : "1..9") : a.keys);
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(a.what);
     }

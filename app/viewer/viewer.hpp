@@ -185,6 +185,7 @@ class Viewer {
     int width = 0, height = 0;
     bool in_3d = false;
     Orbit orbit;
+    float text_scale = 1.0f;
     friend bool operator==(const Drawn&, const Drawn&) = default;
   } drawn_;
   std::size_t canvas_renders_ = 0;

@@ -157,6 +157,9 @@ struct Scene {
   Rgba caption_color;
   std::optional<Legend> legend;
   LayerSet visible = LayerSet::all();
+  // The caption, the legend and the labels drawn this many times their size (the viewer's
+  // UI scale, so that the canvas's words read as far as its panels' do). 1 in a file.
+  float text_scale = 1.0f;
 
   // Indices in mesh.triangles of the faces the current step made or changed.
   std::vector<std::uint32_t> highlighted;
