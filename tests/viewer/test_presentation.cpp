@@ -9,6 +9,7 @@
 
 #include "golden_runs.hpp"
 #include "meshstep/scene/image.hpp"
+#include "meshstep/scene/layout.hpp"
 #include "program_support.hpp"
 #include "ui_look.hpp"
 
@@ -42,6 +43,23 @@ TEST(UiScale, ValidScalesAreQuarterStepsFromThreeQuartersToThree) {
   for (const scene::Theme t : {scene::Theme::light, scene::Theme::dark, scene::Theme::high_contrast})
     EXPECT_EQ(parse_theme(theme_name(t)), t);
   EXPECT_FALSE(parse_theme("contrast"));
+}
+
+TEST(CanvasTextScale, TheCaptionAndLegendGrowAndTheFitLeavesThemRoom) {
+  scene::Scene s;
+  s.caption = "refine \u00B7 step 30 of 50";
+  s.legend = scene::Legend{};
+  s.legend->title = "smallest angle";
+  const scene::Layout one = scene::layout(s, 1280, 720);
+  s.text_scale = 2.0f;
+  const scene::Layout two = scene::layout(s, 1280, 720);
+  ASSERT_TRUE(one.caption_band && two.caption_band && one.legend && two.legend);
+  EXPECT_DOUBLE_EQ(two.caption.size_px, 2 * one.caption.size_px);
+  EXPECT_DOUBLE_EQ(two.caption_band->h, 2 * one.caption_band->h);
+  EXPECT_DOUBLE_EQ(two.legend->title.size_px, 2 * one.legend->title.size_px);
+  EXPECT_DOUBLE_EQ(two.margins.top, 2 * one.margins.top);
+  EXPECT_DOUBLE_EQ(two.margins.right, 2 * one.margins.right);
+  EXPECT_GT(two.legend->panel.w, one.legend->panel.w);
 }
 
 class Presentation : public testing::ScriptedViewer {
@@ -78,6 +96,28 @@ TEST_P(Presentation, TheUiScaleRasterisesTheFontsAgainAtTheScaledSize) {
   // never more than 40% of the window (409.6 px of 1024), which the canvas keeps.
   EXPECT_EQ(inner(sa, "canvas_rect", "width"), 1024 - 380);
   EXPECT_FLOAT_EQ(inner(sb, "canvas_rect", "width"), 1024 - 0.4f * 1024);
+}
+
+// The canvas's caption band: its ink grows with the UI scale (the words are drawn larger,
+// not only the panels).
+std::size_t dark_pixels_in_rows(const scene::Image& image, int rows) {
+  std::size_t n = 0;
+  for (int y = 0; y < rows && y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const std::size_t i = (static_cast<std::size_t>(y) * image.width + x) * 4;
+      if (image.rgba[i] < 100 && image.rgba[i + 1] < 100 && image.rgba[i + 2] < 100) ++n;
+    }
+  return n;
+}
+
+TEST_P(Presentation, TheCanvasWordsGrowWithTheUiScale) {
+  const std::string one = path("one.png"), two = path("two.png");
+  VIEW_OR_SKIP(r, "seek step 30\nframes 2\ncanvas " + one + "\nui-scale 2\nframes 2\ncanvas " + two + "\nquit\n");
+  const scene::Image a = scene::read_png(one), b = scene::read_png(two);
+  // The caption band is 30 px high at scale 1 and 60 at 2: the same words, twice as large,
+  // leave about four times the ink.
+  EXPECT_GT(dark_pixels_in_rows(b, 60), 2 * dark_pixels_in_rows(a, 30))
+      << dark_pixels_in_rows(b, 60) << " vs " << dark_pixels_in_rows(a, 30);
 }
 
 TEST_P(Presentation, TabHidesThePanelsAndTheCanvasFillsTheWindow) {
