@@ -260,9 +260,15 @@ void Viewer::frame(int width, int height, double seconds) {
 
   window_width_ = width;
   window_height_ = height;
-  // The canvas's words grow with the panels'; the fit leaves them their room again.
+  // The canvas's words grow with the panels'; the fit leaves them their room again. A
+  // canvas that grew to the window (Tab, F11) is filled again too, unless the person moved
+  // the camera.
   if (session_->options().text_scale != ui_scale) {
     session_->set_text_scale(ui_scale);
+    if (!camera_moved_) fit_pending_ = true;
+  }
+  if (fitted_for_ != std::pair(panels_hidden, full_screen)) {
+    fitted_for_ = {panels_hidden, full_screen};
     if (!camera_moved_) fit_pending_ = true;
   }
   // The panels grow with the UI scale, as their text does; hidden (Tab), the canvas is the

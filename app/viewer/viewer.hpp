@@ -176,6 +176,7 @@ class Viewer {
   bool fit_pending_ = true;
   ImVec4 canvas_rect_{0, 0, 0, 0};
   int window_width_ = 0, window_height_ = 0;
+  std::pair<bool, bool> fitted_for_{false, false};  // panels hidden, full screen: at the last fit
 
   // What the canvas texture shows, to draw it again only when something changed.
   struct Drawn {

@@ -138,6 +138,8 @@ TEST_P(Presentation, TabHidesThePanelsAndTheCanvasFillsTheWindow) {
     EXPECT_EQ(inner(*s, "canvas_rect", "height"), 640) << *s;
   }
   EXPECT_EQ(inner(sc, "canvas_rect", "width"), inner(sa, "canvas_rect", "width")) << "Tab again brings them back";
+  // The run is fitted again to the larger canvas (the camera was not moved by hand).
+  EXPECT_GT(inner(sb, "camera", "pixels_per_unit"), 1.2 * inner(sa, "camera", "pixels_per_unit")) << sb;
 }
 
 // The canvas's pixels that are nearly black: mesh lines and segments (and text).
