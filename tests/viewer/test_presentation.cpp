@@ -4,7 +4,10 @@
 // window under xvfb-run, as test_viewer_program.cpp.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "golden_runs.hpp"
@@ -203,6 +206,33 @@ TEST_P(Presentation, TheUiScaleOptionIsCheckedAndReachesTheViewer) {
     EXPECT_EQ(refused.status, 2) << bad << ": " << refused.output;
     EXPECT_TRUE(has(refused.output, std::string("--ui-scale ") + bad + ": expected 0.75 to 3")) << refused.output;
   }
+}
+
+// A person's viewer (no script) keeps --ui-scale in its settings file when it closes (here
+// by SIGTERM, as Ctrl+C in the terminal), and starts from it the next time.
+TEST(PresentationSettings, TheUiScaleIsKeptInTheSettingsFile) {
+  if (testing::run("command -v xvfb-run").status != 0) GTEST_SKIP() << "xvfb-run is not installed";
+  const replay::LogReader* log = golden::lesson_run("--algorithm offcenter --min-angle 30");
+  ASSERT_NE(log, nullptr);
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("viewer_presentation_settings_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string ini = (dir / "viewer.ini").string();
+  const auto close_after_a_while = [&](const std::string& extra) {
+    return testing::run("MESHSTEP_VIEWER_CONFIG='" + ini + "' xvfb-run -a -s '-screen 0 1280x800x24' sh -c '" +
+                        MESHSTEP_VIEW_BINARY + " " + log->path() + " --size 800x600 -q " + extra +
+                        " & pid=$!; sleep 2; kill -TERM $pid; wait $pid'");
+  };
+  const Result first = close_after_a_while("--ui-scale 1.75");
+  if (testing::has(first.output, "cannot open a window")) GTEST_SKIP() << first.output;
+  ASSERT_EQ(first.status, 0) << first.output;
+  EXPECT_TRUE(has(read_text(ini), "\nui_scale = 1.75\n")) << read_text(ini);
+  // Without the option, the file's scale is the one used and kept.
+  const Result second = close_after_a_while("");
+  ASSERT_EQ(second.status, 0) << second.output;
+  EXPECT_TRUE(has(read_text(ini), "\nui_scale = 1.75\n")) << read_text(ini);
+  std::error_code ec;
+  std::filesystem::remove_all(dir, ec);
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, Presentation, ::testing::Values("egl", "osmesa", "window"),
