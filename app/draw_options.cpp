@@ -102,7 +102,7 @@ void add_draw_options(CLI::App* cmd, DrawArgs& args) {
                   "holes, labels, caption, legend (exactly those), or changes to all of them\n"
                   "(-caption,-legend); 'all' and 'none' too")
       ->default_str("all");
-  cmd->add_option("--theme", args.theme, "light (print, projector) or dark (screen)")->default_str("light");
+  cmd->add_option("--theme", args.theme, "light (print), dark (screen) or high-contrast (projector)")->default_str("light");
   cmd->add_option("--gl", args.gl,
                   "OpenGL context for PNG pictures: auto (EGL, then OSMesa), egl or osmesa (the\n"
                   "environment variable MESHSTEP_GL says the same)")
@@ -126,7 +126,8 @@ DrawSettings parse_draw_args(const DrawArgs& args) {
   s.scene.layers = parse_layers(args.layers);
   if (args.theme == "light") s.scene.theme = scene::Theme::light;
   else if (args.theme == "dark") s.scene.theme = scene::Theme::dark;
-  else throw UsageError("--theme " + args.theme + ": expected light or dark");
+  else if (args.theme == "high-contrast") s.scene.theme = scene::Theme::high_contrast;
+  else throw UsageError("--theme " + args.theme + ": expected light, dark or high-contrast");
   if (args.gl != "auto" && args.gl != "egl" && args.gl != "osmesa")
     throw UsageError("--gl " + args.gl + ": expected auto, egl or osmesa");
   s.gl = args.gl;

@@ -94,9 +94,10 @@ void add_labels(const scene::Scene& s, const scene::Camera& camera, FontCache& f
   for (const scene::Label& label : s.labels) {
     if (label.text.empty()) continue;
     const Point at = camera.to_screen(label.at);
-    const double x = at.x + label.dx_px, baseline = at.y + label.dy_px;
+    // Scene::text_scale: the label and its offset from its point grow together.
+    const double x = at.x + label.dx_px * s.text_scale, baseline = at.y + label.dy_px * s.text_scale;
     if (!(std::abs(x) < 1e6 && std::abs(baseline) < 1e6)) continue;  // far off, or not finite
-    const FontAtlas& font = fonts.at(label.size_px);
+    const FontAtlas& font = fonts.at(label.size_px * s.text_scale);
     // Whole pixels: text drawn texel for pixel.
     const float left = std::round(f(x)), base = std::round(f(baseline));
     const float right = left + text_width(font, label.text);

@@ -84,6 +84,7 @@ void CanvasWorker::draw(const CanvasRequest& wanted, Session& session, View3d& v
   }
   out.stats = stats_;
   out.moment.scene.visible = wanted.layers;
+  out.moment.scene.text_scale = wanted.text_scale;
   out.request = wanted;
   // In 3D the picture is the lifted scene, handed back with the planar moment (whose words
   // and mesh the inspector reads). The lift is kept while only the camera changes; the copy
@@ -93,6 +94,7 @@ void CanvasWorker::draw(const CanvasRequest& wanted, Session& session, View3d& v
     view.set_orbit(wanted.orbit);
     out.lifted = view.lifted(out.moment.scene, out.moment.serial, max_vertex_markers_for(wanted.width, wanted.height));
     out.lifted.visible = wanted.layers;
+    out.lifted.text_scale = wanted.text_scale;
   }
   const scene::Scene& drawn = in_3d ? out.lifted : out.moment.scene;
   const scene::Camera camera =

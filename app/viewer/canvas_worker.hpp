@@ -37,6 +37,7 @@ struct CanvasRequest {
   scene::ColorBy color_by = scene::ColorBy::none;
   scene::Theme theme = scene::Theme::light;
   scene::LayerSet layers = scene::LayerSet::all();
+  float text_scale = 1.0f;  // Scene::text_scale
   Point center{0, 0};
   double pixels_per_unit = 1.0;
   int width = 0, height = 0;

@@ -7,28 +7,17 @@
 #include <utility>
 
 #include "imgui_gl.hpp"
-#include "render/embedded_files.hpp"
 #include "render/framebuffer.hpp"
 #include "render/gl_context.hpp"
 #include "render/glfw_context.hpp"
 
 namespace meshstep::viewer {
 
-void setup_imgui_style() {
+void setup_imgui_style(const UiLook& look) {
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // the viewer keeps its own settings
   io.ConfigInputTextCursorBlink = false;
-  const std::string_view font = render::embedded_file("DejaVuSans.ttf");
-  ImFontConfig config;
-  config.FontDataOwnedByAtlas = false;  // the bytes live in the program
-  static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x2190, 0x2193, 0x00B0, 0x00B7, 0};
-  io.Fonts->AddFontFromMemoryTTF(const_cast<char*>(font.data()), static_cast<int>(font.size()), 16.0f, &config,
-                                 kRanges);
-  ImGui::StyleColorsDark();
-  ImGuiStyle& style = ImGui::GetStyle();
-  style.WindowRounding = 0.0f;
-  style.FrameRounding = 3.0f;
-  style.ItemSpacing = ImVec2(8, 5);
+  apply_ui_look(look);
 }
 
 namespace {
@@ -80,6 +69,27 @@ class WindowHost final : public Host {
   std::string describe() const override { return "GLFW window: " + context_->describe(); }
   bool interactive() const override { return true; }
   std::string take_dropped() override { return std::exchange(dropped_path(), std::string()); }
+  void reload_fonts() override { gl_->upload_fonts(); }
+
+  bool full_screen() const override { return glfwGetWindowMonitor(context_->window()) != nullptr; }
+  bool set_full_screen(bool on) override {
+    GLFWwindow* window = context_->window();
+    if (on == full_screen()) return true;
+    if (!on) {
+      glfwSetWindowMonitor(window, nullptr, saved_[0], saved_[1], saved_[2], saved_[3], 0);
+      return true;
+    }
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    if (!mode) return false;
+    // The rectangle to come back to.
+    glfwGetWindowPos(window, &saved_[0], &saved_[1]);
+    glfwGetWindowSize(window, &saved_[2], &saved_[3]);
+    glfwSetWindowMonitor(window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+    return true;
+  }
+  int windowed_width() const override { return full_screen() ? saved_[2] : width_; }
+  int windowed_height() const override { return full_screen() ? saved_[3] : height_; }
 
  private:
   // The back buffer, bottom row first: flipped into an image's order.
@@ -101,6 +111,7 @@ class WindowHost final : public Host {
   std::unique_ptr<render::GlfwContext> context_;
   std::unique_ptr<ImGuiGl> gl_;
   int width_ = 0, height_ = 0;
+  int saved_[4] = {0, 0, 0, 0};  // the window's x, y, width, height before full screen
 };
 
 class OffscreenHost final : public Host {
@@ -152,6 +163,7 @@ class OffscreenHost final : public Host {
   int height() const override { return height_; }
   std::string describe() const override { return std::string(context_->name()) + " (off screen): " + context_->describe(); }
   bool interactive() const override { return false; }
+  void reload_fonts() override { gl_->upload_fonts(); }
   std::string gl_library() const override { return context_->name() == std::string("OSMesa") ? "osmesa" : "egl"; }
 
  private:

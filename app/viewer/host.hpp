@@ -7,6 +7,7 @@
 #include <string>
 
 #include "meshstep/scene/image.hpp"
+#include "ui_look.hpp"
 
 struct GLFWwindow;
 
@@ -31,6 +32,15 @@ class Host {
   virtual bool interactive() const = 0;
   // The last file dropped on the window since the last call ("" if none).
   virtual std::string take_dropped() { return {}; }
+  // Uploads ImGui's font atlas again, after apply_ui_look (ui_look.hpp) rebuilt it.
+  virtual void reload_fonts() = 0;
+  // Full screen on the primary monitor, in its video mode, and back to the window's last
+  // rectangle. False when it cannot be (off screen: there is no window; no monitor).
+  virtual bool set_full_screen(bool on) { return !on; }
+  virtual bool full_screen() const { return false; }
+  // The window's size when not full screen (what the settings keep).
+  virtual int windowed_width() const { return width(); }
+  virtual int windowed_height() const { return height(); }
 };
 
 // Throws render::GlUnavailable when there is no display or no GL. The ImGui context must
@@ -38,7 +48,8 @@ class Host {
 std::unique_ptr<Host> make_window_host(int width, int height, const std::string& title);
 std::unique_ptr<Host> make_offscreen_host(int width, int height, const std::string& backend);
 
-// The fonts and style every host uses: DejaVu Sans (embedded) at a size that reads at 720p.
-void setup_imgui_style();
+// The fonts and style every host uses: DejaVu Sans (embedded) at a size that reads at 720p,
+// at the UI scale and for the theme of `look` (ui_look.hpp).
+void setup_imgui_style(const UiLook& look = {});
 
 }  // namespace meshstep::viewer

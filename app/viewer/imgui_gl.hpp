@@ -27,6 +27,9 @@ class ImGuiGl {
   // first row is the picture's top (an off-screen target read back as an image); false for
   // a window, whose first row is the bottom.
   void draw(const ImDrawData& data, int width, int height, bool y_down);
+  // Uploads the current context's font atlas again (after apply_ui_look rebuilt it at
+  // another size): the texture takes the atlas's new width and height.
+  void upload_fonts();
 
  private:
   void upload(GLenum target, const void* data, std::size_t bytes, std::size_t& capacity);

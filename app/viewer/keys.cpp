@@ -60,6 +60,15 @@ std::vector<KeyAction> make_actions() {
     Session& s = v.session();
     s.set_theme(s.options().theme == scene::Theme::light ? scene::Theme::dark : scene::Theme::light);
   });
+  add({GLFW_KEY_T, true}, "Shift+T", "high-contrast theme (a projector) / light", [](Viewer& v) { v.toggle_high_contrast(); });
+  // Presentation: the UI scale (fonts rasterised again at the new size), full screen, and
+  // the canvas alone. F11 is full screen as in most programs; the legend's layer is on F12.
+  add({GLFW_KEY_EQUAL, false, true}, "Ctrl+=", "larger UI (text and panels)", [](Viewer& v) { v.scale_ui(+1); });
+  add({GLFW_KEY_EQUAL, true, true}, "Ctrl+Shift+=", nullptr, [](Viewer& v) { v.scale_ui(+1); });
+  add({GLFW_KEY_MINUS, false, true}, "Ctrl+-", "smaller UI", [](Viewer& v) { v.scale_ui(-1); });
+  add({GLFW_KEY_F11}, "F11", "full screen / window", [](Viewer& v) { v.full_screen = !v.full_screen; });
+  add({GLFW_KEY_TAB}, "Tab", "hide / show the panels (the canvas fills the window)",
+      [](Viewer& v) { v.panels_hidden = !v.panels_hidden; });
   // The 3D view of a terrain's run (view_3d.hpp). Ctrl and the arrows turn it (the arrows
   // alone step through the run); Z stretches the heights, as terrain is often flat.
   add({GLFW_KEY_V}, "V", "2D / 3D view (a terrain's run)", [](Viewer& v) { v.set_view_3d(!v.view_3d()); });
@@ -70,9 +79,9 @@ std::vector<KeyAction> make_actions() {
   add({GLFW_KEY_DOWN, false, true}, "Ctrl+Down", "3D: elevation -5\u00B0", [](Viewer& v) { v.turn_orbit(0.0, -5.0); });
   add({GLFW_KEY_Z}, "Z", "3D: heights twice as high", [](Viewer& v) { v.scale_heights(2.0); });
   add({GLFW_KEY_Z, true}, "Shift+Z", "3D: heights half as high", [](Viewer& v) { v.scale_heights(0.5); });
-  // Layers on F2..F11, in the scene's layer order.
+  // Layers on F2..F10 and F12 (F11 is full screen), in the scene's layer order.
   static constexpr std::array<const char*, scene::kLayerCount> kLayerKeys = {"F2", "F3", "F4", "F5", "F6",
-                                                                              "F7", "F8", "F9", "F10", "F11"};
+                                                                              "F7", "F8", "F9", "F10", "F12"};
   static const std::array<std::string, scene::kLayerCount> kLayerTexts = [] {
     std::array<std::string, scene::kLayerCount> t;
     for (std::size_t i = 0; i < scene::kLayerCount; ++i) t[i] = std::string("layer: ") + scene::name(Layer(i));
@@ -80,7 +89,7 @@ std::vector<KeyAction> make_actions() {
   }();
   for (std::size_t i = 0; i < scene::kLayerCount; ++i) {
     const auto layer = static_cast<Layer>(i);
-    add({GLFW_KEY_F2 + static_cast<int>(i)}, kLayerKeys[i], kLayerTexts[i].c_str(),
+    add({GLFW_KEY_F2 + static_cast<int>(i) + (i >= 9 ? 1 : 0)}, kLayerKeys[i], kLayerTexts[i].c_str(),
         [layer](Viewer& v) { v.toggle_layer(layer); });
   }
   static constexpr std::array<const char*, 9> kDigits = {"1", "2", "3", "4", "5", "6", "7", "8", "9"};

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "open_input.hpp"
 #include "run.hpp"
 #include "settings.hpp"
+#include "ui_look.hpp"
 
 namespace {
 
@@ -27,6 +29,7 @@ struct Args {
   std::string script, size = "1280x800", gl = "auto";
   bool offscreen = false, quiet = false;
   std::string frame_log, canvas = "auto";
+  std::string ui_scale;  // "" when not given
   // Of an input, as `meshstep refine` takes them (--size is the window's here).
   std::string algorithm, min_angle, max_angle, max_area, max_aspect, max_memory;
 };
@@ -80,6 +83,9 @@ int main(int argc, char** argv) {
   app.add_option("--max-memory", a.max_memory,
                  "Refine an input: stop at this memory budget (8G, 500M; default a quarter of the\n"
                  "machine's, as meshstep refine), and show the run as far as it went");
+  app.add_option("--ui-scale", a.ui_scale,
+                 "Scale every font and panel by S (0.75 to 3, in steps of 0.25; Ctrl+= and Ctrl+- in the\n"
+                 "viewer), for a projector or a high-resolution screen; kept in the settings");
   app.add_flag("-q,--quiet", a.quiet, "Print only errors");
   app.add_option("--canvas", a.canvas,
                  "Who draws the canvas: auto (a thread of its own for runs of more than 20,000 vertices, so\n"
@@ -90,7 +96,8 @@ int main(int argc, char** argv) {
                  "Write each frame's time and allocations to this file (for benchmarks)");
   app.footer(
       "Keys: Space play/pause, Left/Right a step, Shift+Left/Right an event, Page Up/Down a phase,\n"
-      "Home/End, +/- speed, F fit, L follow, C colouring, F2-F11 layers, 1-9 bookmarks (Ctrl+1-9 set),\n"
+      "Home/End, +/- speed, F fit, L follow, C colouring, F2-F10 and F12 layers, 1-9 bookmarks (Ctrl+1-9\n"
+      "set), presenting: Ctrl+=/Ctrl+- UI scale, F11 full screen, Tab hide the panels, Shift+T high contrast,\n"
       "V 2D/3D (a terrain's run: Ctrl+arrows turn it, Z/Shift+Z stretch the heights, drag to turn),\n"
       "? all keys.\n"
       "Examples:\n"
@@ -120,6 +127,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "meshstep view: %s\n", clash->c_str());
     return kExitUsage;
   }
+  std::optional<float> ui_scale;
+  if (!a.ui_scale.empty() && !(ui_scale = viewer::parse_ui_scale(a.ui_scale))) {
+    std::fprintf(stderr, "meshstep view: --ui-scale %s: expected 0.75 to 3, in steps of 0.25 (1.25, 1.5, 2...)\n",
+                 a.ui_scale.c_str());
+    return kExitUsage;
+  }
+  if (ui_scale) options.ui_scale = *ui_scale;
   options.offscreen = a.offscreen;
   options.gl = a.gl;
   options.quiet = a.quiet;
@@ -139,6 +153,7 @@ int main(int argc, char** argv) {
       options.width = settings.window_width;
       options.height = settings.window_height;
     }
+    if (ui_scale) settings.ui_scale = *ui_scale;  // asked for: kept for the next time too
     options.settings = &settings;
   }
   viewer::Opener opener;

@@ -17,6 +17,7 @@
 #include "allocations.hpp"
 #include "file_dialog.hpp"
 #include "host.hpp"
+#include "ui_look.hpp"
 #include "start_page.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/atomic_file.hpp"
@@ -64,7 +65,12 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   struct ContextGuard {
     ~ContextGuard() { ImGui::DestroyContext(); }
   } guard;
-  setup_imgui_style();
+  // The look the fonts were last rasterised for: the run's loop makes them again, between
+  // frames, when the viewer's scale or theme changes (Ctrl+=, Shift+T, a script).
+  UiLook look;
+  if (options.settings) look = {options.settings->ui_scale, options.settings->theme};
+  if (options.ui_scale > 0.0f) look.scale = options.ui_scale;
+  setup_imgui_style(look);
 
   const std::string title = session ? session->title() : "start";
   std::unique_ptr<Host> host = options.offscreen ? make_offscreen_host(options.width, options.height, options.gl)
@@ -78,6 +84,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   bool stopped_run = false;  // `problem` says why the run shown stopped short
   const auto show = [&](std::unique_ptr<Session> next) {
     Settings carried = options.settings ? *options.settings : Settings{};
+    if (options.ui_scale > 0.0f) carried.ui_scale = options.ui_scale;
     if (viewer) viewer->capture(carried);
     const std::string path = next->title();
     viewer = std::make_unique<Viewer>(std::move(next), CanvasOptions{options.canvas, host->gl_library()});
@@ -182,6 +189,21 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
       picked.clear();
       picked_refine = {};
     }
+    // Presentation: a new UI scale or theme rasterises the fonts again and uploads them
+    // before the frame that uses them; full screen is the window's.
+    if (viewer) {
+      const UiLook wanted{viewer->ui_scale, viewer->session().options().theme};
+      if (wanted != look) {
+        look = wanted;
+        apply_ui_look(look);
+        host->reload_fonts();
+      }
+      if (viewer->full_screen != host->full_screen() && !host->set_full_screen(viewer->full_screen)) {
+        viewer->full_screen = host->full_screen();
+        viewer->notify(host->interactive() ? "full screen: the window system has no monitor to fill"
+                                           : "full screen: off screen there is no window to fill the screen with");
+      }
+    }
     ImGui::NewFrame();
     if (live) draw_live_page(*live, host->width(), host->height());
     else if (viewer) viewer->frame(host->width(), host->height(), seconds);
@@ -218,8 +240,9 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   }
   if (options.settings) {
     if (viewer) viewer->capture(*options.settings);
-    options.settings->window_width = host->width();
-    options.settings->window_height = host->height();
+    // The window's own size, not the screen's it may fill.
+    options.settings->window_width = host->windowed_width();
+    options.settings->window_height = host->windowed_height();
   }
   if (!options.frame_log.empty()) {
     std::string text = "# frame end_ms frame_ms allocations position shown\n";

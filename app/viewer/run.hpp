@@ -34,6 +34,8 @@ struct RunOptions {
   std::int64_t start_step = -1, start_event = -1;
   // Who draws the canvas (viewer.hpp): automatic, this thread or a worker.
   CanvasMode canvas = CanvasMode::automatic;
+  // The UI scale to start at (--ui-scale; 0: the settings', else 1).
+  float ui_scale = 0.0f;
   // Options to start from and to keep (nullptr: the defaults, nothing kept: scripts).
   Settings* settings = nullptr;
   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();

@@ -9,6 +9,7 @@
 #include "meshstep/error.hpp"
 #include "meshstep/scene/scene.hpp"
 #include "timeline_marks.hpp"
+#include "ui_look.hpp"
 
 namespace meshstep::viewer {
 
@@ -74,6 +75,22 @@ std::string check(const ScriptAction& a) {
   if (v == "z-scale") {
     if (n == 1 && is_number(a.args[0], false, true) && std::strtod(a.args[0].c_str(), nullptr) > 0.0) return "";
     return "expected: z-scale K (a number > 0)";
+  }
+  if (v == "ui-scale") {
+    if (n == 1 && parse_ui_scale(a.args[0])) return "";
+    return "expected: ui-scale S (0.75 to 3, in steps of 0.25)";
+  }
+  if (v == "theme") {
+    if (n == 1 && parse_theme(a.args[0])) return "";
+    return "expected: theme light|dark|high-contrast";
+  }
+  if (v == "panels") {
+    if (n == 1 && (a.args[0] == "show" || a.args[0] == "hide")) return "";
+    return "expected: panels show|hide";
+  }
+  if (v == "full-screen") {
+    if (n == 1 && (a.args[0] == "on" || a.args[0] == "off")) return "";
+    return "expected: full-screen on|off";
   }
   if (v == "select") {
     if (n == 2 && is_number(a.args[0], true, true) && is_number(a.args[1], true, true)) return "";

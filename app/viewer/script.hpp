@@ -17,6 +17,11 @@
 //                       any other the script stops, saying why)
 //   orbit AZ EL         the 3D view's azimuth and elevation, in degrees (elevation -90..90)
 //   z-scale K           the 3D view's heights multiplied by K (> 0)
+//   ui-scale S          every font and panel scaled by S (0.75 to 3, in steps of 0.25), as
+//                       Ctrl+= / Ctrl+- do; takes a frame (the fonts are rasterised again)
+//   theme NAME          light, dark or high-contrast (Shift+T: high contrast / light)
+//   panels show|hide    the side panel and the timeline (Tab); hidden, the canvas is the window
+//   full-screen on|off  as F11 (off screen there is no window: the notice says so)
 //   mouse X Y           move the pointer to pixel X, Y of the window
 //   click               press and release the left button where the pointer is
 //   select X Y          select what is at world point X, Y, as a click there does (in 3D too,

@@ -19,6 +19,7 @@
 #include "meshstep/scene/svg.hpp"
 #include "script.hpp"
 #include "state_json.hpp"
+#include "ui_look.hpp"
 #include "viewer.hpp"
 
 namespace meshstep::viewer {
@@ -292,6 +293,27 @@ class ScriptPlayer {
       }
       viewer->set_orbit(orbit);
       return false;
+    }
+    if (v == "ui-scale") {
+      viewer->ui_scale = *parse_ui_scale(a.args[0]);
+      pending_.push_back({});  // the frame drawn with the new fonts
+      return true;
+    }
+    if (v == "theme") {
+      viewer->session().set_theme(*parse_theme(a.args[0]));
+      pending_.push_back({});  // the panels' colours change with it
+      return true;
+    }
+    if (v == "panels") {
+      viewer->panels_hidden = a.args[0] == "hide";
+      pending_.push_back({});  // the frame laid out without them
+      return true;
+    }
+    if (v == "full-screen") {
+      viewer->full_screen = a.args[0] == "on";
+      pending_.push_back({});
+      pending_.push_back({});  // the window system answers with the new size a frame later
+      return true;
     }
     if (v == "select") {
       viewer->select_at({std::strtod(a.args[0].c_str(), nullptr), std::strtod(a.args[1].c_str(), nullptr)});

@@ -213,6 +213,11 @@ void Session::set_theme(scene::Theme theme) {
   scene_stale_ = true;
 }
 
+void Session::set_text_scale(float scale) {
+  options_.text_scale = scale;
+  scene_.text_scale = scale;  // a scale changed needs no new scene
+}
+
 void Session::set_layer(scene::Layer layer, bool on) {
   options_.layers.set(layer, on);
   scene_.visible = options_.layers;  // a layer switched needs no new scene
@@ -263,6 +268,7 @@ void Session::adopt(Moment& moment) {
   std::swap(explanation_, moment.explanation);
   shown_position_ = moment.position;
   scene_.visible = options_.layers;
+  scene_.text_scale = options_.text_scale;
   ++scene_builds_;
 }
 

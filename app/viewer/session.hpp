@@ -93,6 +93,8 @@ class Session {
   const scene::SceneOptions& options() const { return options_; }
   void set_color_by(scene::ColorBy color_by);
   void set_theme(scene::Theme theme);
+  // The canvas's words this many times their size (Scene::text_scale; the UI scale).
+  void set_text_scale(float scale);
   void set_layer(scene::Layer layer, bool on);
   bool layer(scene::Layer layer) const { return options_.layers.has(layer); }
 

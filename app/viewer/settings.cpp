@@ -18,6 +18,7 @@
 
 #include "meshstep/error.hpp"
 #include "meshstep/io/atomic_file.hpp"
+#include "ui_look.hpp"
 
 namespace meshstep::viewer {
 namespace {
@@ -88,8 +89,6 @@ std::string shown(std::string_view s) {
   }
   return out;
 }
-
-const char* name(scene::Theme theme) { return theme == scene::Theme::dark ? "dark" : "light"; }
 
 // The word the file (and the viewer's scripts) use for a unit.
 const char* file_name(Unit unit) {
@@ -304,13 +303,15 @@ Problem apply(Settings& s, std::string_view key, std::string_view value) {
     return std::nullopt;
   }
   if (key == "theme") {
-    if (value == "light") {
-      s.theme = scene::Theme::light;
-    } else if (value == "dark") {
-      s.theme = scene::Theme::dark;
-    } else {
-      return "theme: unknown theme '" + shown(value) + "' (light, dark)";
-    }
+    const std::optional<scene::Theme> theme = parse_theme(value);
+    if (!theme) return "theme: unknown theme '" + shown(value) + "' (light, dark, high-contrast)";
+    s.theme = *theme;
+    return std::nullopt;
+  }
+  if (key == "ui_scale") {
+    const std::optional<float> scale = parse_ui_scale(value);
+    if (!scale) return "ui_scale: '" + shown(value) + "' is not a UI scale (0.75 to 3, in steps of 0.25)";
+    s.ui_scale = *scale;
     return std::nullopt;
   }
   if (key == "unit") {
@@ -463,13 +464,14 @@ std::string format_settings(const Settings& s) {
   line("window_width", std::to_string(s.window_width));
   line("window_height", std::to_string(s.window_height));
   line("side_panel_width", format_real(s.side_panel_width));
+  line("ui_scale", format_ui_scale(s.ui_scale));
   line("explain_open", boolean(s.explain_open));
   line("layers_open", boolean(s.layers_open));
   line("stats_open", boolean(s.stats_open));
   line("code_open", boolean(s.code_open));
   line("plots_open", boolean(s.plots_open));
   line("color_by", scene::name(s.color_by));
-  line("theme", name(s.theme));
+  line("theme", theme_name(s.theme));
   line("layers", format_layers(s.layers));
   line("speed", format_real(s.speed));
   line("unit", file_name(s.unit));

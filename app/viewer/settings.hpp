@@ -8,10 +8,11 @@
 //   window_width = 1280
 //   window_height = 800
 //   side_panel_width = 380
+//   ui_scale = 1.5
 //   explain_open = true
 //   ...
 //   color_by = quality
-//   theme = dark
+//   theme = dark            (light, dark, high-contrast)
 //   layers = fill, edges, segments
 //   speed = 4
 //   unit = step
@@ -47,7 +48,8 @@ struct Settings {
   static constexpr std::size_t kMaxRecent = 10;
 
   int window_width = 1280, window_height = 800;
-  float side_panel_width = 380.0f;  // layout
+  float side_panel_width = 380.0f;  // layout, at UI scale 1
+  float ui_scale = 1.0f;            // kMinUiScale..kMaxUiScale in steps of kUiScaleStep (ui_look.hpp)
   // Which panels are open.
   bool explain_open = true, layers_open = true, stats_open = true, code_open = true, plots_open = false;
   scene::ColorBy color_by = scene::ColorBy::none;

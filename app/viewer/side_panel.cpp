@@ -79,7 +79,7 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
   ImGui::SetNextItemOpen(explain_open_);
   if ((explain_open_ = ImGui::CollapsingHeader("Why this step?"))) {
     const scene::Explanation& e = session_->explanation();
-    ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", e.heading.c_str());
+    ImGui::TextColored(heading_color(), "%s", e.heading.c_str());
     for (const std::string& line : e.lines) ImGui::TextWrapped("%s", line.c_str());
   }
 
@@ -100,6 +100,9 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
     ImGui::EndDisabled();
     bool dark = session_->options().theme == scene::Theme::dark;
     if (ImGui::Checkbox("dark theme (T)", &dark)) session_->set_theme(dark ? scene::Theme::dark : scene::Theme::light);
+    ImGui::SameLine();
+    bool contrast = session_->options().theme == scene::Theme::high_contrast;
+    if (ImGui::Checkbox("high contrast (Shift+T)", &contrast)) toggle_high_contrast();
     ImGui::SameLine();
     ImGui::Checkbox("follow (L)", &follow);
     for (std::size_t i = 0; i < scene::kLayerCount; ++i) {
@@ -174,8 +177,8 @@ void Viewer::draw_pseudocode() {
     code_position_ = at;
   }
   if (!code_.code) return;
-  ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", code_.code->title.c_str());
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.6f, 0.6f, 0.6f, 1.0f));
+  ImGui::TextColored(heading_color(), "%s", code_.code->title.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, quiet_text_color());
   ImGui::TextWrapped("%s", code_.code->reference.c_str());
   ImGui::PopStyleColor();
   // Lines wrap at the panel's edge, their continuation indented under their text; the

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "meshstep/scene/pseudocode.hpp"
+#include "ui_look.hpp"
 #include "viewer.hpp"
 
 namespace meshstep::viewer {
@@ -78,7 +79,7 @@ std::string state_json(Viewer& v) {
   field("speed", number(p.speed));
   field("unit", quoted(name(p.unit)));
   field("color_by", quoted(scene::name(s.options().color_by)));
-  field("theme", quoted(s.options().theme == scene::Theme::dark ? "dark" : "light"));
+  field("theme", quoted(theme_name(s.options().theme)));
   std::string layers = "[";
   for (std::size_t i = 0; i < scene::kLayerCount; ++i)
     if (s.layer(static_cast<scene::Layer>(i)))
@@ -163,6 +164,20 @@ std::string state_json(Viewer& v) {
     }
     field("timeline_marks", marks_shown + "}");
   }
+  // Presentation: the UI scale, the font atlas it was rasterised into (its texture's
+  // height grows with the scale), the panels hidden or not, full screen, the window and the
+  // canvas's rectangle. Last: tests of older fields find the camera's by its first "x".
+  field("ui_scale", format_ui_scale(v.ui_scale));
+  field("font_pixels", number(ImGui::GetIO().Fonts->Fonts.empty() ? 0.0 : ImGui::GetIO().Fonts->Fonts[0]->FontSize));
+  field("font_atlas", "{\"width\": " + std::to_string(ImGui::GetIO().Fonts->TexWidth) +
+                          ", \"height\": " + std::to_string(ImGui::GetIO().Fonts->TexHeight) + "}");
+  field("panels_hidden", v.panels_hidden ? "true" : "false");
+  field("full_screen", v.full_screen ? "true" : "false");
+  field("window", "{\"width\": " + std::to_string(v.window_width()) + ", \"height\": " +
+                      std::to_string(v.window_height()) + "}");
+  const ImVec4 r = v.canvas_rect();
+  field("canvas_rect", "{\"x\": " + number(r.x) + ", \"y\": " + number(r.y) + ", \"width\": " + number(r.z) +
+                           ", \"height\": " + number(r.w) + "}");
   field("scene_builds", std::to_string(s.scene_builds()));
   out += "  \"canvas_renders\": " + std::to_string(v.canvas_renders()) + "\n}\n";
   return out;

@@ -42,39 +42,46 @@ void draw_marks_choice(MarkSet& shown, const TimelineCache& cache) {
 void Viewer::draw_transport() {
   Session& s = *session_;
   const CursorInfo c = s.cursor_info();
+  // Widths grow with the UI scale, as the text in them does; an item that would be cut at
+  // the panel's edge (a large scale, a narrow window) goes to the next row instead.
+  const float k = ui_scale;
+  const auto next_to_last = [](float width) {
+    const float right = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width;
+    if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+  };
   if (ImGui::Button("|<")) s.to_start();
   ImGui::SameLine();
   if (ImGui::Button("<<")) s.move(Unit::phase, -1);
   ImGui::SameLine();
   if (ImGui::Button("<")) s.move(Unit::step, -1);
   ImGui::SameLine();
-  if (ImGui::Button(s.playback().playing ? "pause" : "play", ImVec2(56, 0))) s.toggle_play();
+  if (ImGui::Button(s.playback().playing ? "pause" : "play", ImVec2(56 * k, 0))) s.toggle_play();
   ImGui::SameLine();
   if (ImGui::Button(">")) s.move(Unit::step, +1);
   ImGui::SameLine();
   if (ImGui::Button(">>")) s.move(Unit::phase, +1);
   ImGui::SameLine();
   if (ImGui::Button(">|")) s.to_end();
-  ImGui::SameLine();
   // Narrow enough for the row to hold the marks button in a 1024-pixel window.
-  ImGui::SetNextItemWidth(112);
+  next_to_last(112 * k);
+  ImGui::SetNextItemWidth(112 * k);
   float speed = static_cast<float>(s.playback().speed);
   if (ImGui::SliderFloat("##speed", &speed, static_cast<float>(Playback::kMinSpeed),
                          static_cast<float>(Playback::kMaxSpeed), "%.2f /s", ImGuiSliderFlags_Logarithmic))
     s.playback().speed = speed;
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(84);
+  next_to_last(84 * k);
+  ImGui::SetNextItemWidth(84 * k);
   int unit = static_cast<int>(s.playback().unit);
   static const char* const kUnits[] = {"events", "steps", "phases"};
   if (ImGui::Combo("##unit", &unit, kUnits, 3)) s.playback().unit = static_cast<Unit>(unit);
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(80);
+  next_to_last(80 * k);
+  ImGui::SetNextItemWidth(80 * k);
   if (ImGui::InputTextWithHint("##goto", "go to step", goto_text_, sizeof goto_text_,
                                ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsDecimal)) {
     s.seek_step(std::strtoull(goto_text_, nullptr, 10));
     goto_text_[0] = '\0';
   }
-  ImGui::SameLine();
+  next_to_last(ImGui::CalcTextSize("marks").x + 2 * ImGui::GetStyle().FramePadding.x);
   draw_marks_choice(timeline_marks, timeline_cache_);
   (void)c;  // the bar itself says where the cursor is (timeline.cpp)
 }

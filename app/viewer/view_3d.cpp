@@ -84,6 +84,7 @@ scene::Scene& View3d::lifted(const scene::Scene& planar, std::size_t serial, std
     lifted_orbit_ = orbit_;
     lifted_markers_ = max_vertex_markers;
   }
+  lifted_.text_scale = planar.text_scale;  // a view's property, changed without a new lift
   return lifted_;
 }
 

@@ -8,6 +8,7 @@
 #include "keys.hpp"
 #include "meshstep/scene/layout.hpp"
 #include "panel_style.hpp"
+#include "ui_look.hpp"
 
 namespace meshstep::viewer {
 
@@ -67,6 +68,7 @@ void Viewer::apply(const Settings& s) {
   layers_open_ = s.layers_open;
   stats_open_ = s.stats_open;
   code_open_ = s.code_open;
+  ui_scale = s.ui_scale;
   view3d_.set_orbit(s.orbit);
   prefer_3d_ = s.view_3d;
   // Quietly: the settings ask for 3D whenever a terrain's run is open.
@@ -86,6 +88,7 @@ void Viewer::capture(Settings& s) const {
   s.layers_open = layers_open_;
   s.stats_open = stats_open_;
   s.code_open = code_open_;
+  s.ui_scale = ui_scale;
   // A run without heights says nothing about the 3D view: the wish is kept for the next.
   s.view_3d = view3d_.available() ? view3d_.on() : prefer_3d_;
   s.orbit = view3d_.orbit();
@@ -179,6 +182,19 @@ void Viewer::say(const char* text) {
   notice_seconds_ = 4.0;
 }
 
+void Viewer::notify(const std::string& text) { say(text.c_str()); }
+
+void Viewer::scale_ui(int steps) {
+  const float next = step_ui_scale(ui_scale, steps);
+  if (next == ui_scale) say(steps > 0 ? "UI scale: 3 is the largest" : "UI scale: 0.75 is the smallest");
+  ui_scale = next;
+}
+
+void Viewer::toggle_high_contrast() {
+  session_->set_theme(session_->options().theme == scene::Theme::high_contrast ? scene::Theme::light
+                                                                               : scene::Theme::high_contrast);
+}
+
 void Viewer::cycle_color_by(int direction) {
   if (view3d_.on()) say("in 3D the surface is coloured by its heights: the colouring shows in 2D (V)");
   const int n = static_cast<int>(scene::ColorBy::count_);
@@ -242,13 +258,29 @@ void Viewer::frame(int width, int height, double seconds) {
   session_->advance(seconds);
   notice_seconds_ = std::max(0.0, notice_seconds_ - seconds);
 
-  const float side = std::min(side_panel_width_, 0.4f * static_cast<float>(width));
-  const float timeline = session_->has_timeline() ? kTimelineHeight : 0.0f;
+  window_width_ = width;
+  window_height_ = height;
+  // The canvas's words grow with the panels'; the fit leaves them their room again. A
+  // canvas that grew to the window (Tab, F11) is filled again too, unless the person moved
+  // the camera.
+  if (session_->options().text_scale != ui_scale) {
+    session_->set_text_scale(ui_scale);
+    if (!camera_moved_) fit_pending_ = true;
+  }
+  if (fitted_for_ != std::pair(panels_hidden, full_screen)) {
+    fitted_for_ = {panels_hidden, full_screen};
+    if (!camera_moved_) fit_pending_ = true;
+  }
+  // The panels grow with the UI scale, as their text does; hidden (Tab), the canvas is the
+  // whole window.
+  const float side = panels_hidden ? 0.0f : std::min(side_panel_width_ * ui_scale, 0.4f * static_cast<float>(width));
+  const bool timeline_shown = session_->has_timeline() && !panels_hidden;
+  const float timeline = timeline_shown ? std::min(kTimelineHeight * ui_scale, 0.4f * static_cast<float>(height)) : 0.0f;
   const float canvas_w = std::max(1.0f, static_cast<float>(width) - side);
   const float canvas_h = std::max(1.0f, static_cast<float>(height) - timeline);
   draw_canvas(0, 0, canvas_w, canvas_h);
-  draw_side_panel(canvas_w, 0, side, static_cast<float>(height));
-  if (session_->has_timeline()) draw_timeline(0, canvas_h, canvas_w, timeline);
+  if (!panels_hidden) draw_side_panel(canvas_w, 0, side, static_cast<float>(height));
+  if (timeline_shown) draw_timeline(0, canvas_h, canvas_w, timeline);
   if (help_open) draw_help();
 }
 
@@ -259,6 +291,7 @@ void Viewer::post_canvas_request() {
   wanted.color_by = o.color_by;
   wanted.theme = o.theme;
   wanted.layers = o.layers;
+  wanted.text_scale = o.text_scale;
   wanted.center = camera_.center();
   wanted.pixels_per_unit = camera_.pixels_per_unit();
   wanted.width = camera_.width();
@@ -339,7 +372,7 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
   } else {
     const scene::Scene& shown = shown_scene();
     const Drawn now{session_->scene_builds(), shown.visible.bits(), camera_.center().x, camera_.center().y,
-                    camera_.pixels_per_unit(), width, height, view3d_.on(), view3d_.orbit()};
+                    camera_.pixels_per_unit(), width, height, view3d_.on(), view3d_.orbit(), shown.text_scale};
     if (!(now == drawn_)) {
       renderer_.render(shown, camera_);
       drawn_ = now;
@@ -444,7 +477,7 @@ void Viewer::draw_help() {
       if (!a.what) continue;  // one line stands for a family (bookmarks 1-9)
       ImGui::TableNextColumn();
       const bool digit = a.chord.key >= '1' && a.chord.key <= '9';
-      ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", digit ? (a.chord.ctrl ? "Ctrl+1..9" : "1..9") : a.keys);
+      ImGui::TextColored(heading_color(), "%s", digit ? (a.chord.ctrl ? "Ctrl+1..9" : "1..9") : a.keys);
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(a.what);
     }

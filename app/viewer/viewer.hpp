@@ -70,6 +70,21 @@ class Viewer {
   bool quit_requested = false;
   MarkSet timeline_marks = MarkSet::defaults();  // the kinds the timeline marks
   void request_fit() { fit_pending_ = true; }
+  // Presentation (ui_look.hpp): the UI scale the next frame is drawn at (the run's loop
+  // rasterises the fonts again between frames), the panels hidden so that the canvas fills
+  // the window (Tab), and full screen asked for (F11; the loop asks the host, and says here
+  // when it cannot be).
+  float ui_scale = 1.0f;
+  bool panels_hidden = false;
+  bool full_screen = false;
+  void scale_ui(int steps);
+  // The high-contrast theme on, or back to the light one (Shift+T).
+  void toggle_high_contrast();
+  // A line on the canvas for a few seconds: why something asked for did not happen.
+  void notify(const std::string& text);
+  // The window's size, as the last frame had it.
+  int window_width() const { return window_width_; }
+  int window_height() const { return window_height_; }
   void cycle_color_by(int direction);
   void toggle_layer(scene::Layer layer);
 
@@ -160,6 +175,8 @@ class Viewer {
   scene::Camera camera_;
   bool fit_pending_ = true;
   ImVec4 canvas_rect_{0, 0, 0, 0};
+  int window_width_ = 0, window_height_ = 0;
+  std::pair<bool, bool> fitted_for_{false, false};  // panels hidden, full screen: at the last fit
 
   // What the canvas texture shows, to draw it again only when something changed.
   struct Drawn {
@@ -169,6 +186,7 @@ class Viewer {
     int width = 0, height = 0;
     bool in_3d = false;
     Orbit orbit;
+    float text_scale = 1.0f;
     friend bool operator==(const Drawn&, const Drawn&) = default;
   } drawn_;
   std::size_t canvas_renders_ = 0;

@@ -91,6 +91,7 @@ Settings unusual() {
   s.window_width = 1917;
   s.window_height = 1063;
   s.side_panel_width = 432.75f;
+  s.ui_scale = 1.75f;
   s.explain_open = false;
   s.layers_open = false;
   s.stats_open = false;
@@ -126,6 +127,7 @@ TEST_F(ViewerSettings, EveryFieldRoundTrips) {
   EXPECT_NE(s.window_width, d.window_width);
   EXPECT_NE(s.window_height, d.window_height);
   EXPECT_NE(s.side_panel_width, d.side_panel_width);
+  EXPECT_NE(s.ui_scale, d.ui_scale);
   EXPECT_NE(s.explain_open, d.explain_open);
   EXPECT_NE(s.layers_open, d.layers_open);
   EXPECT_NE(s.stats_open, d.stats_open);
@@ -152,6 +154,7 @@ TEST_F(ViewerSettings, EveryFieldRoundTrips) {
   EXPECT_EQ(back.window_width, s.window_width);
   EXPECT_EQ(back.window_height, s.window_height);
   EXPECT_EQ(back.side_panel_width, s.side_panel_width);
+  EXPECT_EQ(back.ui_scale, s.ui_scale);
   EXPECT_EQ(back.explain_open, s.explain_open);
   EXPECT_EQ(back.layers_open, s.layers_open);
   EXPECT_EQ(back.stats_open, s.stats_open);
@@ -174,13 +177,14 @@ TEST_F(ViewerSettings, EveryFieldRoundTrips) {
   EXPECT_TRUE(starts_with(text, "#")) << text;
   EXPECT_NE(text.find("\ncolor_by = quality\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\ntheme = dark\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nui_scale = 1.75\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nunit = phase\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nlayers = fill, edges, overlay, segments, vertices, holes, caption\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\ntimeline_marks = rejected, flips, triangulate\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nview_3d = true\nazimuth = -123.5\nelevation = 12.25\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nrecent = /home/me/runs/square with spaces.msl\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nrecent = /ünïcödé/ðata.msl\n"), std::string::npos) << text;
-  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 20 + 6) << text;  // one line each
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 21 + 6) << text;  // one line each
 
   // Saving what was loaded gives the same file.
   save_settings(back, p);
@@ -194,7 +198,7 @@ TEST_F(ViewerSettings, EachUnitThemeColouringAndLayerRoundTrips) {
       Settings s;
       s.unit = unit;
       s.color_by = static_cast<scene::ColorBy>(c);
-      s.theme = c % 2 ? scene::Theme::dark : scene::Theme::light;
+      s.theme = static_cast<scene::Theme>(c % 3);  // light, dark, high_contrast
       save_settings(s, p);
       std::vector<std::string> warnings;
       EXPECT_TRUE(load_settings(p, warnings) == s) << read(p);
@@ -305,6 +309,10 @@ TEST_F(ViewerSettings, EveryKindOfBadValueFallsBackToTheDefault) {
       "view_3d = 3d",                 "azimuth = 180.5",
       "elevation = -90.01",           "elevation = nan",
       "z_scale = 0",                  "z_scale = 1001",
+      "ui_scale = 0.5",               "ui_scale = 3.25",
+      "ui_scale = 1.3",               "ui_scale = 1,5",
+      "ui_scale = nan",               "ui_scale =",
+      "theme = high contrast",
   };
   for (const char* line : bad) {
     const std::string p = write("viewer.ini", std::string("# header\n") + line + "\n");
@@ -326,6 +334,8 @@ TEST_F(ViewerSettings, EveryKindOfBadValueFallsBackToTheDefault) {
                               "azimuth = -180\n"
                               "elevation = 90\n"
                               "z_scale = 0.01\n"
+                              "ui_scale = 3\n"
+                              "theme = high-contrast\n"
                               "recent =   /spaced out/path.msl   \n");
   std::vector<std::string> warnings;
   const Settings s = load_settings(p, warnings);
@@ -338,6 +348,8 @@ TEST_F(ViewerSettings, EveryKindOfBadValueFallsBackToTheDefault) {
   EXPECT_EQ(s.layers, LayerSet::none());
   EXPECT_EQ(s.timeline_marks, MarkSet::none());  // no marks at all is a choice too
   EXPECT_EQ(s.orbit, (Orbit{-180.0, 90.0, 0.01}));
+  EXPECT_EQ(s.ui_scale, 3.0f);
+  EXPECT_EQ(s.theme, scene::Theme::high_contrast);
   EXPECT_EQ(s.recent_files, std::vector<std::string>{"/spaced out/path.msl"});
 }
 

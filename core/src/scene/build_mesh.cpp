@@ -40,6 +40,7 @@ Scene start_scene(const SceneOptions& options) {
   scene.background = base_style(options.theme).background;
   scene.caption_color = base_style(options.theme).text;
   scene.visible = options.layers;
+  scene.text_scale = options.text_scale;
   const BaseStyle& base = base_style(options.theme);
   scene.mesh.edge_color = base.edge;
   scene.mesh.edge_width_px = base.edge_width_px;

@@ -1,4 +1,4 @@
-// The two themes' colours (see style.hpp for what each hue means).
+// The themes' colours (see style.hpp for what each hue means).
 #include "style.hpp"
 
 namespace meshstep::scene::detail {
@@ -49,6 +49,23 @@ constexpr BaseStyle kDarkBase{
     .hole = kPaper,
     .region_point = kGreenOnDark,
     .text = kPaper,
+};
+
+// A projector washes out grey and thin lines: opaque black edges at twice the width, and
+// segments and vertices that stay visible from the back of a room.
+constexpr BaseStyle kHighContrastBase{
+    .background = kWhite,
+    .neutral_fill = kWhite,
+    .edge = {0, 0, 0, 255},
+    .edge_width_px = 2.0f,
+    .segment = {0, 0, 0, 255},
+    .segment_width_px = 4.5f,
+    .input_vertex = {0, 0, 0, 255},
+    .steiner_vertex = blue,
+    .vertex_outline = kWhite,
+    .hole = {0, 0, 0, 255},
+    .region_point = bluish_green,
+    .text = {0, 0, 0, 255},
 };
 
 // Translucent fills: strong enough to tint any colour map, weak enough to read it through.
@@ -120,7 +137,15 @@ constexpr OverlayStyle kDarkOverlay{
 
 }  // namespace
 
-const BaseStyle& base_style(Theme theme) { return theme == Theme::dark ? kDarkBase : kLightBase; }
+const BaseStyle& base_style(Theme theme) {
+  switch (theme) {
+    case Theme::dark: return kDarkBase;
+    case Theme::high_contrast: return kHighContrastBase;
+    case Theme::light: break;
+  }
+  return kLightBase;
+}
+// The light theme's overlay colours are the strong ones on white already.
 const OverlayStyle& overlay_style(Theme theme) { return theme == Theme::dark ? kDarkOverlay : kLightOverlay; }
 
 }  // namespace meshstep::scene::detail

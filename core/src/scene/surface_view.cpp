@@ -65,7 +65,7 @@ Scene surface_scene(const io::Surface& surface, const SurfaceView& view, Theme t
   SceneOptions options;
   options.theme = theme;
   Scene scene = detail::start_scene(options);
-  scene.mesh.edge_color = theme == Theme::light ? kWireLight : kWireDark;
+  scene.mesh.edge_color = theme == Theme::dark ? kWireDark : kWireLight;
   scene.mesh.edge_width_px = 1.0f;
   scene.mesh.painter_order = true;
 

@@ -102,16 +102,18 @@ void write_labels(SvgContext& c) {
   for (const Label& label : c.scene.labels) {
     if (label.text.empty()) continue;
     const Point at = c.to_screen(label.at);
-    const double x = at.x + label.dx_px, baseline = at.y + label.dy_px;
+    // Scene::text_scale: the label and its offset from its point grow together.
+    const double k = c.scene.text_scale, size = label.size_px * k;
+    const double x = at.x + label.dx_px * k, baseline = at.y + label.dy_px * k;
     if (!(std::abs(x) < 1e6 && std::abs(baseline) < 1e6)) continue;  // far off, or not finite
     // Whole pixels, as the GL renderer places text.
     const double left = std::round(x), base = std::round(baseline);
-    const double right = left + estimated_text_width(label.text, label.size_px);
-    const double top = base - std::ceil(kAscentEm * label.size_px), bottom = base + std::ceil(kDescentEm * label.size_px);
+    const double right = left + estimated_text_width(label.text, size);
+    const double top = base - std::ceil(kAscentEm * size), bottom = base + std::ceil(kDescentEm * size);
     if (!c.view.overlaps({left - 2.0, top}, {right + 2.0, bottom})) continue;
     // A translucent box behind the text, so that it reads over the mesh.
     write_rect(c.out, left - 2.0, top, right - left + 4.0, bottom - top, halo);
-    write_text(c.out, {left, base}, label.size_px, false, label.color, label.text);
+    write_text(c.out, {left, base}, size, false, label.color, label.text);
   }
 }
 

@@ -29,6 +29,8 @@ struct SceneOptions {
   double min_angle_bound = 0.0;
   // Vertex markers are left out above this many vertices (they would cover the mesh).
   std::size_t max_vertex_markers = 20000;
+  // Scene::text_scale: the caption, legend and labels this many times their size.
+  float text_scale = 1.0f;
 };
 
 // The age of every face slot: the step that last wrote a live face into it. Kept up to

@@ -72,7 +72,9 @@ enum class ColorBy : std::uint8_t { none, angle, quality, area, region, age, hei
 const char* name(ColorBy c);
 std::optional<ColorBy> parse_color_by(std::string_view text);
 
-enum class Theme : std::uint8_t { light, dark };
+// high_contrast: for a projector (white, opaque black lines thick enough to see from the
+// back of a room, the light theme's strong overlay colours).
+enum class Theme : std::uint8_t { light, dark, high_contrast };
 
 // The numbers behind the colours: a bar of colour stops (continuous) or swatches
 // (categorical), with labelled ticks.
@@ -155,6 +157,9 @@ struct Scene {
   Rgba caption_color;
   std::optional<Legend> legend;
   LayerSet visible = LayerSet::all();
+  // The caption, the legend and the labels drawn this many times their size (the viewer's
+  // UI scale, so that the canvas's words read as far as its panels' do). 1 in a file.
+  float text_scale = 1.0f;
 
   // Indices in mesh.triangles of the faces the current step made or changed.
   std::vector<std::uint32_t> highlighted;
