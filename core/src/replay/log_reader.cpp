@@ -43,6 +43,7 @@ LogReader::LogReader(const std::string& path, std::uint64_t keep_writes_bytes)
   read_header();
   scan_blocks();
   read_input_fields();
+  number_vertices();
 }
 
 // The fields that describe the input, once the parameters are known: the input's vertex
