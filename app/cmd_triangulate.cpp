@@ -8,6 +8,7 @@
 #include "json_line.hpp"
 #include "meshstep/check/quality.hpp"
 #include "meshstep/delaunay/triangulate.hpp"
+#include "meshstep/delaunay/voronoi.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/replay/log_writer.hpp"
@@ -29,6 +30,7 @@ struct TriangulateArgs {
   bool no_output = false;
   bool edges = false;
   bool neighbors = false;
+  bool voronoi = false;
   bool quiet = false;
   bool verbose = false;
 };
@@ -86,6 +88,10 @@ int run_triangulate(const TriangulateArgs& args) {
     if (!args.no_output) {
       print_progress(verbosity, "writing " + prefix + ".node/.ele/.poly");
       io::write_mesh(prefix, mesh, {.edges = args.edges, .neighbors = args.neighbors});
+      if (args.voronoi) {
+        print_progress(verbosity, "writing " + prefix + ".v.node/.v.edge");
+        write_voronoi(prefix, voronoi_of(mesh), mesh.first_index);
+      }
       write_ms = clock.lap_ms();
     }
     // Last: the log writer's thread finishes its backlog while the mesh is written.
@@ -159,6 +165,11 @@ Command add_triangulate_command(CLI::App& parent) {
   cmd->add_flag("--no-output", args->no_output, "Triangulate but write no files (for timing)");
   cmd->add_flag("-e,--edges", args->edges, "Also write PREFIX.edge");
   cmd->add_flag("-n,--neighbors", args->neighbors, "Also write PREFIX.neigh");
+  // Triangle spells it -v, which is --verbose here (as in every meshstep command).
+  cmd->add_flag("--voronoi", args->voronoi,
+                "Also write the Voronoi diagram, as the mesh's dual, in Triangle's format: PREFIX.v.node\n"
+                "(vertex k: the circumcenter of triangle k) and PREFIX.v.edge (an edge whose second end\n"
+                "is -1 is a ray from a boundary edge's triangle, with its outward direction)");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors (and --stats)");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress, timings and mesh statistics");
   cmd->footer("Example: meshstep triangulate assets/examples/plate.poly -o plate --stats json");
