@@ -575,8 +575,9 @@ class Refiner {
     Rec& rec = tri_.recorder();
     rec.step_begin(mesh_, replay::StepKind::refine, c.a, c.b);
     if constexpr (Rec::enabled) {
-      record_held_lepp_path(rec);
+      // As the algorithm reads: t fails a test, then its Lepp path is followed.
       record_failed_criteria(rec, criteria_, tri_.points(), c.a, c.b, c.c);
+      record_held_lepp_path(rec);
       const Point alternatives[1] = {alternative};
       rec.point_selected(static_cast<std::uint8_t>(options_.selection), c.a, c.b, c.c, p,
                          std::span<const Point>(alternatives, p == alternative ? 0 : 1));
