@@ -80,6 +80,11 @@ class WindowHost final : public Host {
   std::string describe() const override { return "GLFW window: " + context_->describe(); }
   bool interactive() const override { return true; }
   std::string take_dropped() override { return std::exchange(dropped_path(), std::string()); }
+  void set_title(const std::string& title) override {
+    if (title == title_) return;
+    Host::set_title(title);
+    glfwSetWindowTitle(context_->window(), title.c_str());
+  }
 
  private:
   // The back buffer, bottom row first: flipped into an image's order.

@@ -31,6 +31,12 @@ class Host {
   virtual bool interactive() const = 0;
   // The last file dropped on the window since the last call ("" if none).
   virtual std::string take_dropped() { return {}; }
+  // The window's title: what the window shows (a window shows it in its frame).
+  virtual void set_title(const std::string& title) { title_ = title; }
+  const std::string& title() const { return title_; }
+
+ protected:
+  std::string title_;
 };
 
 // Throws render::GlUnavailable when there is no display or no GL. The ImGui context must
