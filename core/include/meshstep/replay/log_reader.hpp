@@ -170,9 +170,11 @@ class LogReader {
   std::vector<BlockInfo> blocks_;
   std::vector<KeyframeInfo> keyframes_;
   std::vector<VertexInfo> vertices_;
-  void number_vertices();
-  std::vector<std::uint32_t> output_numbers_;  // by vertex id; kNone: removed (or never used)
-  std::vector<std::uint32_t> removed_ordinal_;  // by vertex id: 1 for the first removed, ...
+  // The names, worked out when first asked for (a sort of every vertex: 0.1-0.3 s for a
+  // million, which log info, verify and check need not pay), once, whichever thread asks.
+  struct VertexNumbers;
+  const VertexNumbers& vertex_numbers() const;
+  std::unique_ptr<VertexNumbers> vertex_numbers_;
   std::span<const SlotWrite> writes_from_blocks(std::uint64_t e) const;
 
   bool keep_writes_ = true;
