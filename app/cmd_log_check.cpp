@@ -10,6 +10,7 @@
 #include "cmd_log.hpp"
 #include "json_line.hpp"
 #include "meshstep/replay/invariants.hpp"
+#include "meshstep/replay/step_numbers.hpp"
 
 namespace meshstep::app {
 namespace {
@@ -95,12 +96,13 @@ int run_log_check(const LogCheckArgs& args) {
     const replay::LogReader log(args.log);
     if (!log.complete()) print_warning(Verbosity::normal, args.log + ": " + log.incomplete_reason());
     const std::uint64_t steps = log.step_count();
-    const auto in_range = [&](std::int64_t k) { return k >= 0 && static_cast<std::uint64_t>(k) <= steps; };
     const std::uint64_t to = args.to == -1 ? steps : static_cast<std::uint64_t>(args.to);
-    if (!in_range(args.from) || (args.to != -1 && !in_range(args.to)) || static_cast<std::uint64_t>(args.from) > to) {
-      print_error(args.log + ": --from " + std::to_string(args.from) + " --to " + std::to_string(args.to) +
-                  " is out of range: the run has " + std::to_string(steps) +
-                  " steps (use 0 <= A <= B <= " + std::to_string(steps) + ", or -1 for the end)");
+    std::string refused = replay::step_refusal(log, "--from", args.from, false);
+    if (refused.empty()) refused = replay::step_refusal(log, "--to", args.to);
+    if (refused.empty() && static_cast<std::uint64_t>(args.from) > to)
+      refused = args.log + ": --from " + std::to_string(args.from) + " comes after --to " + std::to_string(args.to);
+    if (!refused.empty()) {
+      print_error(refused);
       return kExitUsage;
     }
 
@@ -115,12 +117,12 @@ int run_log_check(const LogCheckArgs& args) {
     progress.reset();  // clears its line before the result
 
     const std::string asked = names(invariants, ",");
-    // The step that broke it, as `log dump` numbers steps: step K takes the mesh after K
-    // steps to the mesh after K + 1; boundary 0 is the mesh after the preamble.
+    // The step that broke it (step_numbers.hpp): step K takes the mesh after K - 1 steps to
+    // the mesh after K, so it is the boundary that fails; boundary 0 is before the first step.
     const bool in_step = !r.ok && r.boundary > 0;
-    const std::uint64_t step = in_step ? r.boundary - 1 : 0;
-    const std::uint64_t first_event = in_step ? log.step_start(step) : 0;
-    const std::uint64_t end_event = in_step ? log.step_start(r.boundary) : log.step_start(0);
+    const std::uint64_t step = in_step ? r.boundary : 0;
+    const std::uint64_t first_event = in_step ? log.step_start(step - 1) : 0;
+    const std::uint64_t end_event = in_step ? log.step_start(step) : log.step_start(0);
     const std::string kind =
         in_step ? replay::code_name(replay::EventType::step_begin, log.event(first_event).code) : "preamble";
 
@@ -179,7 +181,7 @@ int run_log_check(const LogCheckArgs& args) {
     } else {
       where = "step " + std::to_string(step) + " (events " + std::to_string(first_event) + ".." +
               std::to_string(end_event - 1) + ", " + kind + ")";
-      before = step == 0 ? "the mesh before it holds" : "step " + std::to_string(step - 1) + " holds";
+      before = step == 1 ? "the mesh before it (step 0) holds" : "step " + std::to_string(step - 1) + " holds";
     }
     std::printf("%s: %s breaks %s: %s; %s\n", args.log.c_str(), where.c_str(), names(r.broken, ",").c_str(),
                 what.c_str(), before.c_str());

@@ -8,6 +8,7 @@
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/replay/replay.hpp"
 #include "mesh_output.hpp"
+#include "meshstep/replay/step_numbers.hpp"
 #include "output_prefix.hpp"
 
 namespace meshstep::app {
@@ -31,9 +32,8 @@ int run_mesh(const MeshArgs& args) {
     const replay::LogReader log(args.log);
     if (!log.complete()) print_warning(Verbosity::normal, args.log + ": " + log.incomplete_reason());
     const std::uint64_t steps = log.step_count();
-    if (args.step < -1 || (args.step >= 0 && static_cast<std::uint64_t>(args.step) > steps)) {
-      print_error(args.log + ": --step " + std::to_string(args.step) + " is out of range: the run has " +
-                  std::to_string(steps) + " steps (use 0.." + std::to_string(steps) + ", or -1 for the end)");
+    if (const std::string refused = replay::step_refusal(log, "--step", args.step); !refused.empty()) {
+      print_error(refused);
       return kExitUsage;
     }
     replay::Replay replay(log);

@@ -14,6 +14,7 @@
 #include "meshstep/error.hpp"
 #include "meshstep/io/atomic_file.hpp"
 #include "meshstep/io/surface_io.hpp"
+#include "meshstep/replay/step_numbers.hpp"
 #include "meshstep/scene/layout.hpp"
 #include "meshstep/scene/lift.hpp"
 #include "meshstep/scene/surface_view.hpp"
@@ -73,11 +74,9 @@ std::uint64_t position_of(const RenderArgs& args, const replay::LogReader& log) 
     return args.event < 0 ? log.event_count() : static_cast<std::uint64_t>(args.event);
   }
   if (args.step != -2) {
-    if (args.step < -1 || (args.step >= 0 && static_cast<std::uint64_t>(args.step) > log.step_count()))
-      throw UsageError(log.path() + ": --step " + std::to_string(args.step) + " is out of range: the run has " +
-                       std::to_string(log.step_count()) + " steps (use 0.." + std::to_string(log.step_count()) +
-                       ", or -1 for the end)");
-    return args.step < 0 ? log.event_count() : log.step_start(static_cast<std::uint64_t>(args.step));
+    if (const std::string refused = replay::step_refusal(log, "--step", args.step); !refused.empty())
+      throw UsageError(refused);
+    return args.step < 0 ? log.event_count() : replay::step_position(log, static_cast<std::uint64_t>(args.step));
   }
   return log.event_count();
 }

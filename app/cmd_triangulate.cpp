@@ -1,5 +1,6 @@
 // meshstep triangulate: Delaunay triangulation of a .node, constrained Delaunay of a .poly.
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "command.hpp"
@@ -8,6 +9,7 @@
 #include "json_line.hpp"
 #include "meshstep/check/quality.hpp"
 #include "meshstep/delaunay/triangulate.hpp"
+#include "meshstep/delaunay/voronoi.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/replay/log_writer.hpp"
@@ -30,6 +32,7 @@ struct TriangulateArgs {
   bool no_output = false;
   bool edges = false;
   bool neighbors = false;
+  bool voronoi = false;
   bool quiet = false;
   bool verbose = false;
 };
@@ -92,6 +95,11 @@ int run_triangulate(const TriangulateArgs& args) {
     if (!args.no_output) {
       print_progress(verbosity, "writing " + output.files());
       output.write(mesh, {.edges = args.edges, .neighbors = args.neighbors});
+      if (args.voronoi) {
+        const std::string base = output.single_file() ? std::filesystem::path(prefix).replace_extension().string() : prefix;
+        print_progress(verbosity, "writing " + base + ".v.node/.v.edge");
+        write_voronoi(base, voronoi_of(mesh), mesh.first_index);
+      }
       write_ms = clock.lap_ms();
     }
     // Last: the log writer's thread finishes its backlog while the mesh is written.
@@ -167,6 +175,11 @@ Command add_triangulate_command(CLI::App& parent) {
   cmd->add_flag("--no-output", args->no_output, "Triangulate but write no files (for timing)");
   cmd->add_flag("-e,--edges", args->edges, "Also write PREFIX.edge");
   cmd->add_flag("-n,--neighbors", args->neighbors, "Also write PREFIX.neigh");
+  // Triangle spells it -v, which is --verbose here (as in every meshstep command).
+  cmd->add_flag("--voronoi", args->voronoi,
+                "Also write the Voronoi diagram, as the mesh's dual, in Triangle's format: PREFIX.v.node\n"
+                "(vertex k: the circumcenter of triangle k) and PREFIX.v.edge (an edge whose second end\n"
+                "is -1 is a ray from a boundary edge's triangle, with its outward direction)");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors (and --stats)");
   cmd->add_flag("-v,--verbose", args->verbose, "Print progress, timings and mesh statistics");
   cmd->footer("Example: meshstep triangulate assets/examples/plate.poly -o plate --stats json");

@@ -28,6 +28,7 @@ Command add_list_command(CLI::App& parent);
 Command add_render_command(CLI::App& parent);
 Command add_export_command(CLI::App& parent);
 Command add_view_command(CLI::App& parent);
+Command add_explain_command(CLI::App& parent);
 Command add_terrain_command(CLI::App& parent);
 Command add_terrain_join_command(CLI::App& parent);
 

@@ -3,6 +3,7 @@
 #include <charconv>
 
 #include "draw_options.hpp"
+#include "meshstep/replay/step_numbers.hpp"
 
 namespace meshstep::app {
 
@@ -28,27 +29,40 @@ MomentSpec parse_every(const std::string& every, std::int64_t from, std::int64_t
 
 std::vector<std::uint64_t> frame_moments(const replay::LogReader& log, const MomentSpec& spec) {
   using Unit = MomentSpec::Unit;
-  // Positions at which each unit is complete.
+  // The position each numbered unit names. Steps and events are moments, as `render --step`
+  // and `render --event` number them: step K is the mesh after K steps (0..n, in the words
+  // of step_numbers.hpp), event K the mesh after K events (0..E). A phase's frame is the
+  // moment it ends.
   std::vector<std::uint64_t> ends;
   const char* unit_name = "step";
   if (spec.unit == Unit::event) {
     unit_name = "event";
-    ends.resize(log.event_count());
-    for (std::uint64_t e = 0; e < ends.size(); ++e) ends[e] = e + 1;
+    ends.resize(log.event_count() + 1);
+    for (std::uint64_t e = 0; e < ends.size(); ++e) ends[e] = e;
   } else if (spec.unit == Unit::step) {
-    for (std::uint64_t k = 0; k < log.step_count(); ++k) ends.push_back(log.step_start(k + 1));
+    for (std::uint64_t k = 0; k <= log.step_count(); ++k) ends.push_back(replay::step_position(log, k));
   } else {
     unit_name = "phase";
     for (std::uint64_t e = 0; e < log.event_count(); ++e)
       if (log.event(e).type == replay::EventType::phase_end) ends.push_back(e + 1);
   }
-  if (ends.empty()) throw UsageError(log.path() + ": the run has no " + std::string(unit_name) + " to draw");
+  if (ends.empty() || (spec.unit == Unit::step && log.step_count() == 0))
+    throw UsageError(log.path() + ": the run has no " + std::string(unit_name) + " to draw");
   const std::uint64_t last = ends.size() - 1;
+  if (spec.unit == Unit::step) {
+    // The words every command refuses a step number in.
+    std::string refused = replay::step_refusal(log, "--from", spec.from, false);
+    if (refused.empty()) refused = replay::step_refusal(log, "--to", spec.to);
+    if (!refused.empty()) throw UsageError(refused);
+  }
   const std::uint64_t from = static_cast<std::uint64_t>(spec.from);
   const std::uint64_t to = spec.to < 0 ? last : static_cast<std::uint64_t>(spec.to);
-  if (from > last || to > last || from > to)
+  if (from > last || to > last)
     throw UsageError(log.path() + ": --from " + std::to_string(spec.from) + " --to " + std::to_string(spec.to) +
                      " is outside the run: its " + unit_name + "s are numbered 0.." + std::to_string(last));
+  if (from > to)
+    throw UsageError(log.path() + ": --from " + std::to_string(spec.from) + " comes after --to " +
+                     std::to_string(spec.to) + ": nothing to draw");
   std::vector<std::uint64_t> moments;
   for (std::uint64_t u = from; u <= to; u += spec.stride) moments.push_back(ends[u]);
   // A stride that skips the last unit still ends on it: the animation shows the result.

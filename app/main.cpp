@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
   std::vector<Command> commands = {add_triangulate_command(app), add_refine_command(app),
                                   add_run_command(app), add_compare_command(app),
+                                  add_explain_command(app),
                                   add_check_command(app), add_list_command(app),
                                   add_log_command(app), add_render_command(app),
                                   add_export_command(app), add_view_command(app),

@@ -125,6 +125,12 @@ bool prepare_step(const Operation& op, const std::string& origin, int refusal_st
     status = refusal_status;
     return false;
   }
+  // Out-of-range bounds are a usage error, refused before anything is read or printed.
+  if (const std::string problem = criteria_problem(step.options.criteria); !problem.empty()) {
+    print_error(origin + problem);
+    status = refusal_status;
+    return false;
+  }
   step.algorithm = find_algorithm(op.algorithm);  // (refine_options found it)
   try {
     step.options.region = region_of(op);

@@ -91,6 +91,12 @@ class WindowHost final : public Host {
   int windowed_width() const override { return full_screen() ? saved_[2] : width_; }
   int windowed_height() const override { return full_screen() ? saved_[3] : height_; }
 
+  void set_title(const std::string& title) override {
+    if (title == title_) return;
+    Host::set_title(title);
+    glfwSetWindowTitle(context_->window(), title.c_str());
+  }
+
  private:
   // The back buffer, bottom row first: flipped into an image's order.
   void read_back(scene::Image& image) const {

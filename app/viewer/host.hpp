@@ -41,6 +41,12 @@ class Host {
   // The window's size when not full screen (what the settings keep).
   virtual int windowed_width() const { return width(); }
   virtual int windowed_height() const { return height(); }
+  // The window's title: what the window shows (a window shows it in its frame).
+  virtual void set_title(const std::string& title) { title_ = title; }
+  const std::string& title() const { return title_; }
+
+ protected:
+  std::string title_;
 };
 
 // Throws render::GlUnavailable when there is no display or no GL. The ImGui context must

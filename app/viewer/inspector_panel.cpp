@@ -197,7 +197,8 @@ void Viewer::draw_selection_panel() {
     if (!history_.ready()) {
       ImGui::TextDisabled("indexing the run's history...");
     } else {
-      ImGui::Text("history: %zu steps (ticks on the timeline)", story.steps.size());
+      const std::size_t n = story.steps.size();
+      ImGui::Text("history: %zu step%s (ticks on the timeline)", n, n == 1 ? "" : "s");
       step_buttons(story.steps, *session_);
     }
   }

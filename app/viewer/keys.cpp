@@ -46,8 +46,13 @@ std::vector<KeyAction> make_actions() {
       [](Viewer& v) { v.session().find_event(is_big_cavity, +1); });
   add({GLFW_KEY_K, true}, "Shift+K", "previous cavity of more than 10 faces",
       [](Viewer& v) { v.session().find_event(is_big_cavity, -1); });
-  add({GLFW_KEY_EQUAL}, "+", "play twice as fast", [](Viewer& v) { v.session().scale_speed(2.0); });
+  // "+" is Shift+= on most keyboards (and its own key on the keypad); "=" does the same, so
+  // that the key works with or without Shift.
+  add({GLFW_KEY_EQUAL, true}, "+", "play twice as fast", [](Viewer& v) { v.session().scale_speed(2.0); });
+  add({GLFW_KEY_EQUAL}, "=", nullptr, [](Viewer& v) { v.session().scale_speed(2.0); });
+  add({GLFW_KEY_KP_ADD}, "kp+", nullptr, [](Viewer& v) { v.session().scale_speed(2.0); });
   add({GLFW_KEY_MINUS}, "-", "play half as fast", [](Viewer& v) { v.session().scale_speed(0.5); });
+  add({GLFW_KEY_KP_SUBTRACT}, "kp-", nullptr, [](Viewer& v) { v.session().scale_speed(0.5); });
   add({GLFW_KEY_U}, "U", "play by events / steps / phases", [](Viewer& v) {
     Playback& p = v.session().playback();
     p.unit = p.unit == Unit::event ? Unit::step : p.unit == Unit::step ? Unit::phase : Unit::event;
@@ -120,7 +125,8 @@ constexpr Named kNamedKeys[] = {
     {"pageup", GLFW_KEY_PAGE_UP}, {"home", GLFW_KEY_HOME},        {"page down", GLFW_KEY_PAGE_DOWN},
     {"page up", GLFW_KEY_PAGE_UP},        {"end", GLFW_KEY_END},
     {"escape", GLFW_KEY_ESCAPE}, {"esc", GLFW_KEY_ESCAPE},        {"enter", GLFW_KEY_ENTER},
-    {"tab", GLFW_KEY_TAB},       {"+", GLFW_KEY_EQUAL},           {"=", GLFW_KEY_EQUAL},
+    {"tab", GLFW_KEY_TAB},       {"kp+", GLFW_KEY_KP_ADD},        {"=", GLFW_KEY_EQUAL},
+    {"kp-", GLFW_KEY_KP_SUBTRACT},
     {"-", GLFW_KEY_MINUS},       {"/", GLFW_KEY_SLASH},           {"backspace", GLFW_KEY_BACKSPACE},
 };
 
@@ -148,7 +154,9 @@ std::optional<Chord> parse_chord(std::string_view text) {
     if (rest.starts_with("shift+")) chord.shift = more = true, rest.erase(0, 6);
     else if (rest.starts_with("ctrl+")) chord.ctrl = more = true, rest.erase(0, 5);
   }
+  // The shifted keys, as a keyboard types them: "?" is Shift+/, "+" is Shift+=.
   if (rest == "?") return Chord{GLFW_KEY_SLASH, true, chord.ctrl};
+  if (rest == "+") return Chord{GLFW_KEY_EQUAL, true, chord.ctrl};
   for (const Named& n : kNamedKeys)
     if (rest == n.name) {
       chord.key = n.key;

@@ -26,12 +26,13 @@ constexpr int kExitUsage = 2, kExitInput = 1;
 struct Args {
   std::string input;
   std::int64_t step = -1, event = -1;
-  std::string script, size = "1280x800", gl = "auto";
+  std::string script, window = "1280x800", gl = "auto";
   bool offscreen = false, quiet = false;
   std::string frame_log, canvas = "auto";
   std::string ui_scale;  // "" when not given
-  // Of an input, as `meshstep refine` takes them (--size is the window's here).
-  std::string algorithm, min_angle, max_angle, max_area, max_aspect, max_memory;
+  // Of an input, as `meshstep refine` takes them (the window's size is --window, so that
+  // --size means what it means to refine).
+  std::string algorithm, min_angle, max_angle, max_area, max_aspect, size, max_memory;
 };
 
 // The refinement the command line asks of an input (none: triangulate it), read by the run
@@ -43,7 +44,8 @@ viewer::RefineOptions live_refinement(const Args& a) {
                                                               {"min-angle", &a.min_angle},
                                                               {"max-angle", &a.max_angle},
                                                               {"max-area", &a.max_area},
-                                                              {"max-aspect", &a.max_aspect}};
+                                                              {"max-aspect", &a.max_aspect},
+                                                              {"size", &a.size}};
   for (const auto& [name, text] : given) {
     if (text->empty()) continue;
     if (!refine.operation) refine.operation.emplace();
@@ -74,12 +76,13 @@ int main(int argc, char** argv) {
   app.add_option("--script", a.script, "Run the actions of this file (see docs/viewer.md), with a fixed frame time");
   app.add_flag("--offscreen", a.offscreen, "No window: draw off screen (EGL or OSMesa), for scripts");
   app.add_option("--gl", a.gl, "Off-screen OpenGL: auto, egl or osmesa")->default_str("auto");
-  app.add_option("--size", a.size, "Window size WxH")->default_str("1280x800");
+  app.add_option("--window", a.window, "Window size WxH")->default_str("1280x800");
   app.add_option("--algorithm", a.algorithm, "Refine an input with this algorithm (see meshstep list)");
   app.add_option("--min-angle", a.min_angle, "Refine an input: every angle at least DEG");
   app.add_option("--max-angle", a.max_angle, "Refine an input: every angle at most DEG");
   app.add_option("--max-area", a.max_area, "Refine an input: every triangle's area at most A");
   app.add_option("--max-aspect", a.max_aspect, "Refine an input: aspect ratio at most R");
+  app.add_option("--size", a.size, "Refine an input: every edge at most L long, or a size grid (.asc), as refine --size");
   app.add_option("--max-memory", a.max_memory,
                  "Refine an input: stop at this memory budget (8G, 500M; default a quarter of the\n"
                  "machine's, as meshstep refine), and show the run as far as it went");
@@ -113,8 +116,8 @@ int main(int argc, char** argv) {
 
   viewer::RunOptions options;
   options.started = started;
-  if (!parse_size(a.size, options.width, options.height)) {
-    std::fprintf(stderr, "meshstep view: --size %s: expected WxH, from 320x240 to 8192x8192\n", a.size.c_str());
+  if (!parse_size(a.window, options.width, options.height)) {
+    std::fprintf(stderr, "meshstep view: --window %s: expected WxH, from 320x240 to 8192x8192\n", a.window.c_str());
     return kExitUsage;
   }
   // --frame-log is the one file the command line names for writing (issue 31).
@@ -149,7 +152,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> warnings;
     settings = viewer::load_settings(settings_file, warnings);
     for (const std::string& w : warnings) std::fprintf(stderr, "meshstep view: warning: %s\n", w.c_str());
-    if (!app.count("--size")) {
+    if (!app.count("--window")) {
       options.width = settings.window_width;
       options.height = settings.window_height;
     }
@@ -163,6 +166,9 @@ int main(int argc, char** argv) {
       options.script_path = a.script;
     }
     std::unique_ptr<viewer::Session> session;
+    // A mistyped path is the commonest bad input: say so, not just that it cannot be read.
+    if (std::error_code ec; !a.input.empty() && !fs::exists(a.input, ec))
+      throw InputError(a.input, 0, "does not exist (no such file: check the path)");
     if (viewer::is_input(a.input)) {
       if (std::FILE* f = std::fopen(a.input.c_str(), "rb")) std::fclose(f);
       else throw InputError(a.input, 0, "cannot be read");
@@ -177,7 +183,12 @@ int main(int argc, char** argv) {
       options.start_event = a.event;
     } else if (!a.input.empty()) {
       session = opener.open(a.input);
-      if (a.step >= 0) session->seek_step(static_cast<std::uint64_t>(a.step));
+      if (a.step != -1 && session->log()) {  // -1: the end (the default)
+        if (const std::string refused = session->go_to_step(a.step, "--step"); !refused.empty()) {
+          std::fprintf(stderr, "meshstep view: %s\n", refused.c_str());
+          return kExitUsage;
+        }
+      }
       if (a.event >= 0) session->seek(static_cast<std::uint64_t>(a.event));
     }
     const int status = viewer::run_viewer(std::move(session), options, opener);

@@ -72,9 +72,10 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   if (options.ui_scale > 0.0f) look.scale = options.ui_scale;
   setup_imgui_style(look);
 
-  const std::string title = session ? session->title() : "start";
+  const std::string title = "meshstep view: " + (session ? session->title() : std::string("start"));
   std::unique_ptr<Host> host = options.offscreen ? make_offscreen_host(options.width, options.height, options.gl)
-                                                 : make_window_host(options.width, options.height, "meshstep view: " + title);
+                                                 : make_window_host(options.width, options.height, title);
+  host->set_title(title);
   if (!options.quiet) std::fprintf(stderr, "meshstep view: %s\n", host->describe().c_str());
 
   // What the window shows: a viewer of a session, or (none yet) the start page. Opening
@@ -88,6 +89,9 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     if (viewer) viewer->capture(carried);
     const std::string path = next->title();
     viewer = std::make_unique<Viewer>(std::move(next), CanvasOptions{options.canvas, host->gl_library()});
+    // The title names what the window shows now: a live run's log, a file opened later.
+    host->set_title("meshstep view: " + path);
+    viewer->window_title = host->title();
     if (options.settings || carried != Settings{}) viewer->apply(carried);
     if (options.settings) {
       std::error_code ec;
@@ -105,6 +109,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
       if (is_input(path)) {
         live.reset();  // a run still going is stopped
         live = std::make_unique<LiveView>(opener.start_live(path, refine, host->gl_library()));
+        host->set_title("meshstep view: " + path + " (running)");
         problem.clear();
       } else {
         show(opener.open(path));

@@ -176,7 +176,11 @@ class ScriptPlayer {
     if (v == "seek") {
       if (a.args[0] == "start") viewer->session().to_start();
       else if (a.args[0] == "end") viewer->session().to_end();
-      else if (a.args[0] == "step") viewer->session().seek_step(std::strtoull(a.args[1].c_str(), nullptr, 10));
+      else if (a.args[0] == "step") {
+        // As the go-to box: a step outside the run is refused, in the words of every command.
+        const std::string refused = viewer->session().go_to_step(std::strtoll(a.args[1].c_str(), nullptr, 10));
+        if (!refused.empty()) throw InputError(path_, static_cast<std::size_t>(a.line), "seek step: " + refused);
+      }
       else viewer->session().seek(std::strtoull(a.args[1].c_str(), nullptr, 10));
       return false;
     }

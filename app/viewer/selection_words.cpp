@@ -28,10 +28,11 @@ std::string event_name(const replay::LogReader& log, std::uint64_t e) {
   return step_name(log, step).append(" by ").append(what);
 }
 
-std::string input_vertex_name(const replay::LogReader& log, VertexId v) {
-  const std::uint64_t inputs = log.run().input_vertices;
-  if (v >= log.vertices().size() || log.vertices()[v].input_index >= inputs) return "vertex " + std::to_string(v);
-  return "input vertex " + std::to_string(log.vertices()[v].input_index + 1);
+// A vertex as every text names it: its number in the run's output .node (input vertices
+// keep their input file's numbers), "r3" for one the run removes (LogReader::vertex_name);
+// a mesh without a log numbers its own.
+std::string vertex_name(const replay::LogReader* log, VertexId v) {
+  return log ? log->vertex_name(v) : std::to_string(v);
 }
 
 std::string length_text(const scene::MeshLayer& mesh, VertexId a, VertexId b) {
@@ -61,9 +62,9 @@ std::string Viewer::selection_text() {
   char buf[256];
   if (selected_.kind == Picked::Kind::triangle) {
     const TriangleFacts f = triangle_facts(s.mesh, selected_.index);
-    std::snprintf(buf, sizeof buf, "triangle %u %u %u: angles %.1f %.1f %.1f, area %.4g", f.vertices[0], f.vertices[1],
-                  f.vertices[2], f.angles[0], f.angles[1], f.angles[2], f.area);
-    std::string out = buf;
+    std::snprintf(buf, sizeof buf, ": angles %.1f %.1f %.1f, area %.4g", f.angles[0], f.angles[1], f.angles[2], f.area);
+    std::string out = "triangle " + vertex_name(log, f.vertices[0]) + " " + vertex_name(log, f.vertices[1]) + " " +
+                      vertex_name(log, f.vertices[2]) + buf;
     if (angle_bound_ > 0) {
       std::snprintf(buf, sizeof buf, ", smallest angle %.1f %s %.4g (the bound)", f.min_angle,
                     f.min_angle < angle_bound_ ? "<" : ">=", angle_bound_);
@@ -73,9 +74,8 @@ std::string Viewer::selection_text() {
       std::snprintf(buf, sizeof buf, ", region %g", s.mesh.region[selected_.index]);
       out += buf;
     }
-    std::snprintf(buf, sizeof buf, "; Lepp path of %zu to edge %u-%u%s", lepp_.triangles.size(), lepp_.a, lepp_.b,
-                  lepp_.boundary ? " (on the boundary)" : "");
-    out += buf;
+    out += "; Lepp path of " + std::to_string(lepp_.triangles.size()) + " to edge " + vertex_name(log, lepp_.a) + "-" +
+           vertex_name(log, lepp_.b) + (lepp_.boundary ? " (on the boundary)" : "");
     const TriangleStory& t = story.triangle;
     if (indexed && t.created != kNoEvent) {
       out.append("; made by ").append(event_name(*log, t.created));
@@ -88,8 +88,8 @@ std::string Viewer::selection_text() {
   if (selected_.kind == Picked::Kind::vertex) {
     const std::uint32_t v = selected_.index;
     const Point& p = s.mesh.points[v];
-    std::snprintf(buf, sizeof buf, "vertex %u at (%.6g, %.6g)", v, p.x, p.y);
-    std::string out = buf;
+    std::snprintf(buf, sizeof buf, " at (%.6g, %.6g)", p.x, p.y);
+    std::string out = "vertex " + vertex_name(log, v) + buf;
     if (log && log->has_elevation() && v < log->vertices().size()) {
       std::snprintf(buf, sizeof buf, ", height %.6g", log->vertices()[v].z);
       out += buf;
@@ -98,13 +98,14 @@ std::string Viewer::selection_text() {
     const replay::VertexInfo& info = log->vertices()[v];
     const std::uint64_t inputs = log->run().input_vertices;
     const std::uint64_t step = log->step_of_event(info.event);
-    out += info.input_index < inputs ? ": input vertex " + std::to_string(info.input_index + 1) : ": Steiner";
+    out += info.input_index < inputs ? ": from the input" : ": Steiner";
+    if (info.removed != UINT64_MAX) out += ", removed again by the run (no number in the output)";
     if (step < log->step_count()) out.append(", inserted by ").append(step_name(*log, step));
     return out;
   }
   if (selected_.kind == Picked::Kind::segment) {
     const VertexId a = selected_.index, b = selected_.other;
-    std::string out = "segment " + std::to_string(a) + "-" + std::to_string(b) + " (length " +
+    std::string out = "segment " + vertex_name(log, a) + "-" + vertex_name(log, b) + " (length " +
                       length_text(s.mesh, a, b) + ")";
     if (!log) return out;
     if (!indexed) return out + "; indexing the run's history...";
@@ -114,8 +115,7 @@ std::string Viewer::selection_text() {
       return (p.first == a && p.second == b) || (p.first == b && p.second == a);
     });
     out.append(now ? ": a piece of input segment " : ", not a piece at this moment, of input segment ");
-    out.append(std::to_string(g.a)).append("-").append(std::to_string(g.b));
-    out.append(" (").append(input_vertex_name(*log, g.a)).append(" to ").append(input_vertex_name(*log, g.b)).append(")");
+    out.append(vertex_name(log, g.a)).append("-").append(vertex_name(log, g.b));
     out.append("; ").append(std::to_string(g.pieces.size())).append(g.pieces.size() == 1 ? " piece" : " pieces");
     out.append(" at this moment, lengths");
     constexpr std::size_t kLengths = 8;
@@ -133,7 +133,7 @@ std::string Viewer::selection_text() {
       const SegmentStory::Split& x = g.splits[i];
       const std::uint64_t step = log->step_of_event(x.event);
       out.append(i ? "; " : ": ").append("step ").append(std::to_string(step + 1)).append(" at vertex ");
-      out.append(std::to_string(x.vertex)).append(", ").append(split_words(x));
+      out.append(vertex_name(log, x.vertex)).append(", ").append(split_words(x));
     }
     return out + (g.splits.size() > kSplits ? "; ..." : "");
   }

@@ -44,7 +44,10 @@ CursorInfo Session::cursor_info() const {
   if (!log_) return info;
   info.position = position_;
   info.event_count = log_->event_count();
-  info.step = log_->completed_steps_at(position_);
+  const replay::StepAt at = replay::step_at(*log_, position_);
+  info.step = at.step;
+  info.within = at.within;
+  info.completed = log_->completed_steps_at(position_);
   info.step_count = log_->step_count();
   // Phases nest: the last one begun before the cursor that has not ended is the innermost.
   for (const replay::PhaseSpan& p : log_->phases())
@@ -62,6 +65,13 @@ void Session::seek(std::uint64_t position) {
   if (position == position_) return;
   position_ = position;
   moved();
+}
+
+std::string Session::go_to_step(std::int64_t k, const std::string& what) {
+  if (!log_) return "";
+  std::string refused = replay::step_refusal(*log_, what, k, false);
+  if (refused.empty()) seek_step(static_cast<std::uint64_t>(k));
+  return refused;
 }
 
 void Session::seek_step(std::uint64_t steps) {

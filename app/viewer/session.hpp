@@ -18,6 +18,7 @@
 #include "meshstep/pslg/pslg.hpp"
 #include "meshstep/replay/log_reader.hpp"
 #include "meshstep/replay/replay.hpp"
+#include "meshstep/replay/step_numbers.hpp"
 #include "meshstep/scene/build.hpp"
 #include "meshstep/scene/explain.hpp"
 
@@ -38,7 +39,11 @@ struct Playback {
 // Where the run is, in the numbers people read: steps count from 1 as the caption does.
 struct CursorInfo {
   std::uint64_t position = 0, event_count = 0;
-  std::uint64_t step = 0, step_count = 0;  // steps completed at the cursor
+  // The step the cursor shows, numbered as every command numbers it (step_numbers.hpp):
+  // K at the mesh after K steps, and K too while step K's events are being applied
+  // (`within`); `completed` is the steps wholly done.
+  std::uint64_t step = 0, step_count = 0, completed = 0;
+  bool within = false;
   std::optional<replay::Phase> phase;      // the innermost phase the cursor is in
 };
 
@@ -66,6 +71,10 @@ class Session {
 
   // Moving. All clamp to the run and mark the scene stale when the position changes.
   void seek(std::uint64_t position);
+  // Moves to the mesh after k steps, or, for a k outside 0..n, stays and returns the words
+  // every command refuses it in (step_numbers.hpp); "" when it moved.
+  // `what` names the number in the refusal ("step", "--step").
+  std::string go_to_step(std::int64_t k, const std::string& what = "step");
   void seek_step(std::uint64_t steps);  // the mesh after `steps` steps
   void move(Unit unit, int direction);  // by one unit, forward (+1) or backward (-1)
   void to_start() { seek(0); }

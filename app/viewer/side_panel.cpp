@@ -37,7 +37,7 @@ void Viewer::draw_run_plots(float width) {
     plot_scales_known_ = true;
   }
   static constexpr const char* kTitles[] = {"triangles", "smallest angle", "bad triangles left"};
-  const std::uint64_t step = session_->cursor_info().step;
+  const std::uint64_t step = session_->cursor_info().completed;  // the plots' points are moments
   for (std::size_t i = 0; i < 3; ++i) {
     if (i == 2 && angle_bound_ <= 0.0) break;
     const std::vector<float>& v = *series[i];

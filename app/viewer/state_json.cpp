@@ -70,9 +70,11 @@ std::string state_json(Viewer& v) {
     out += std::string("  \"") + key + "\": " + value + ",\n";
   };
   field("title", quoted(s.title()));
+  field("window_title", quoted(v.window_title));
   field("position", std::to_string(c.position));
   field("event_count", std::to_string(c.event_count));
   field("step", std::to_string(c.step));
+  field("in_step", c.within ? "true" : "false");
   field("step_count", std::to_string(c.step_count));
   field("phase", c.phase ? quoted(replay::name(*c.phase)) : "null");
   field("playing", p.playing ? "true" : "false");
@@ -146,7 +148,7 @@ std::string state_json(Viewer& v) {
   const std::string selected = v.selection_text();
   field("selection", selected.empty() ? "null" : quoted(selected));
   if (v.plots().ready() && !v.plots().triangles().empty()) {
-    const std::size_t k = std::min<std::size_t>(c.step, v.plots().triangles().size() - 1);
+    const std::size_t k = std::min<std::size_t>(c.completed, v.plots().triangles().size() - 1);
     field("plots_at_cursor", "{\"triangles\": " + number(v.plots().triangles()[k]) +
                                  ", \"smallest_angle\": " + number(v.plots().smallest_angle()[k]) +
                                  ", \"bad\": " + number(v.plots().bad()[k]) + ", \"steps\": " +

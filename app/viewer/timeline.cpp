@@ -181,10 +181,12 @@ void draw_timeline_picture(ImDrawList& draw, const replay::LogReader& log, Timel
   draw.AddLine(ImVec2(cx, top), ImVec2(cx, bottom), IM_COL32(255, 60, 60, 255), 2.0f);
 
   // Where the cursor is, in numbers, at the bar's right end over the bands.
-  char where[96];
-  std::snprintf(where, sizeof where, "step %llu/%llu \u00B7 event %llu/%llu", static_cast<unsigned long long>(c.step),
-                static_cast<unsigned long long>(c.step_count), static_cast<unsigned long long>(c.position),
-                static_cast<unsigned long long>(c.event_count));
+  // The caption's step number: "step 34/50" at the mesh after 34 steps, "in step 34/50"
+  // while its events are being applied (step_numbers.hpp).
+  char where[112];
+  std::snprintf(where, sizeof where, "%sstep %llu/%llu \u00B7 event %llu/%llu", c.within ? "in " : "",
+                static_cast<unsigned long long>(c.step), static_cast<unsigned long long>(c.step_count),
+                static_cast<unsigned long long>(c.position), static_cast<unsigned long long>(c.event_count));
   const ImVec2 text = ImGui::CalcTextSize(where);
   const ImVec2 at(origin.x + size.x - text.x - 6.0f, top + 2.0f);
   draw.AddRectFilled(ImVec2(at.x - 4.0f, top), ImVec2(origin.x + size.x, top + text.y + 4.0f), IM_COL32(20, 20, 24, 220));

@@ -78,9 +78,11 @@ void Viewer::draw_transport() {
   ImGui::SetNextItemWidth(80 * k);
   if (ImGui::InputTextWithHint("##goto", "go to step", goto_text_, sizeof goto_text_,
                                ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsDecimal)) {
-    s.seek_step(std::strtoull(goto_text_, nullptr, 10));
-    goto_text_[0] = '\0';
+    // A number past the run stays in the box, with the refusal every command gives.
+    goto_refusal_ = s.go_to_step(std::strtoll(goto_text_, nullptr, 10));
+    if (goto_refusal_.empty()) goto_text_[0] = '\0';
   }
+  if (!goto_refusal_.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", goto_refusal_.c_str());
   next_to_last(ImGui::CalcTextSize("marks").x + 2 * ImGui::GetStyle().FramePadding.x);
   draw_marks_choice(timeline_marks, timeline_cache_);
   (void)c;  // the bar itself says where the cursor is (timeline.cpp)

@@ -436,11 +436,11 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
 // canvas's corner (or its middle before the first picture).
 void Viewer::draw_drawing_badge(float x, float y) {
   const replay::LogReader& log = *session_->log();
-  const std::uint64_t wanted = log.completed_steps_at(session_->cursor_info().position);
+  const std::uint64_t wanted = session_->cursor_info().step;
   char text[96];
   if (has_picture_) {
     std::snprintf(text, sizeof text, "showing step %llu, drawing step %llu...",
-                  static_cast<unsigned long long>(log.completed_steps_at(session_->shown_position())),
+                  static_cast<unsigned long long>(replay::step_at(log, session_->shown_position()).step),
                   static_cast<unsigned long long>(wanted));
   } else {
     std::snprintf(text, sizeof text, "replaying the run to step %llu...", static_cast<unsigned long long>(wanted));

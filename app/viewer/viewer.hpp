@@ -63,6 +63,7 @@ class Viewer {
   // Set by the export panel: the host reads the next whole frame into this file.
   std::string window_capture_path;
   std::string export_status;  // what the last export wrote, or why it failed
+  std::string window_title;   // the window's title, as the host shows it (for scripts' state)
 
   // UI state that keys and scripts change.
   bool help_open = false;
@@ -194,6 +195,7 @@ class Viewer {
   Stats stats_;
   std::size_t stats_of_build_ = SIZE_MAX;
   char goto_text_[32] = "";
+  std::string goto_refusal_;  // why the go-to box's number was refused, shown over it
   float side_panel_width_ = 380.0f;
   double angle_bound_ = 0.0;  // the run's min_angle, 0 when it has none
   bool explain_open_ = true, layers_open_ = true, stats_open_ = true, code_open_ = true;

@@ -144,7 +144,7 @@ int main(int argc, char** argv) {
         out << "wait\nframes 30\nquit\n";  // the canvas and the background work done
       }
       const fs::path frames_file = dir / "frames.txt";
-      if (run(view + " " + logs[s] + " --offscreen --size 1280x800 -q --script " + script.string() + " --frame-log " +
+      if (run(view + " " + logs[s] + " --offscreen --window 1280x800 -q --script " + script.string() + " --frame-log " +
               frames_file.string()) != 0) {
         std::fprintf(stderr, "bench_viewer: the viewer failed on %s\n", logs[s].c_str());
         return 1;
@@ -189,7 +189,7 @@ int main(int argc, char** argv) {
     for (std::size_t s = 0; s < sizes.size(); ++s) {
       std::ofstream(script) << "watch\nquit\n";
       const fs::path frames_file = dir / "live_frames.txt";
-      if (run(view + " " + nodes[s] + " --offscreen --size 1280x800 -q --script " + script.string() + " --frame-log " +
+      if (run(view + " " + nodes[s] + " --offscreen --window 1280x800 -q --script " + script.string() + " --frame-log " +
               frames_file.string()) != 0) {
         std::fprintf(stderr, "bench_viewer: the live run of %s failed\n", nodes[s].c_str());
         return 1;

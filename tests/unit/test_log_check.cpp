@@ -59,15 +59,15 @@ const std::string kPlate = std::string(MESHSTEP_ASSETS) + "/examples/plate.poly"
 
 // ---------------------------------------------------------------------------------------
 // A log that breaks the Delaunay property at a known step. 20 points near the origin are
-// inserted (steps 0..17: the first triangle with three of them, then one step per vertex),
-// then step 18 flips an interior edge that is strictly locally Delaunay in a strictly
+// inserted (steps 1..18: the first triangle with three of them, then one step per vertex),
+// then step 19 flips an interior edge that is strictly locally Delaunay in a strictly
 // convex quadrilateral, so the new diagonal is strictly not Delaunay but the mesh stays
-// valid; then 60 points far to the right are inserted (steps 19..78), which leave that edge
+// valid; then 60 points far to the right are inserted (steps 20..79), which leave that edge
 // alone. So the mesh after 18 steps holds and the mesh after 19 steps, and every later
-// one, is not Delaunay.
+// one, is not Delaunay: step 19 broke it, in the one numbering of step_numbers.hpp.
 constexpr std::size_t kNear = 20, kFar = 60;
-constexpr std::uint64_t kBadStep = kNear - 2;          // as `log dump` numbers steps
-constexpr std::uint64_t kSteps = kBadStep + 1 + kFar;  // 79
+constexpr std::uint64_t kBadStep = kNear - 1;      // as every command numbers steps
+constexpr std::uint64_t kSteps = kBadStep + kFar;  // 79
 
 void write_broken_log(const std::string& path) {
   replay::LogWriter writer(path, header("broken-on-purpose", kNear + kFar));
@@ -127,17 +127,17 @@ class LogCheckBroken : public ::testing::Test {
 };
 
 // What the test relies on, checked one boundary at a time with the checker itself: the
-// log has the steps it should, boundaries up to kBadStep hold, every later one is valid but
+// log has the steps it should, boundaries before kBadStep hold, every later one is valid but
 // not Delaunay.
 TEST_F(LogCheckBroken, TheLogBreaksDelaunayAtTheKnownStepAndStaysBroken) {
   ASSERT_EQ(log().step_count(), kSteps);
-  ASSERT_EQ(log().event(log().step_start(kBadStep)).code, static_cast<std::uint8_t>(replay::StepKind::refine));
+  ASSERT_EQ(log().event(log().step_start(kBadStep - 1)).code, static_cast<std::uint8_t>(replay::StepKind::refine));
   replay::Replay r(log());
   for (std::uint64_t k = 0; k <= kSteps; ++k) {
     r.seek_step(k);
     const TriMesh mesh = r.mesh();
     EXPECT_TRUE(check_mesh(mesh, nullptr, {.delaunay = false}).ok) << "after " << k << " steps";
-    EXPECT_EQ(check_mesh(mesh).ok, k <= kBadStep) << "after " << k << " steps";
+    EXPECT_EQ(check_mesh(mesh).ok, k < kBadStep) << "after " << k << " steps";
   }
 }
 
@@ -146,9 +146,9 @@ TEST_F(LogCheckBroken, EveryBoundaryFindsTheStep) {
     const replay::InvariantReport r = check(every);
     EXPECT_FALSE(r.ok);
     EXPECT_EQ(r.stride, 1u);
-    EXPECT_EQ(r.boundary, kBadStep + 1);  // the mesh after the bad step
+    EXPECT_EQ(r.boundary, kBadStep);  // the mesh after the bad step
     EXPECT_TRUE(r.previous_holds);
-    EXPECT_EQ(r.checked, kBadStep + 2);    // 0..kBadStep+1, then it stops
+    EXPECT_EQ(r.checked, kBadStep + 1);    // 0..kBadStep, then it stops
     ASSERT_EQ(r.broken.size(), 1u);
     EXPECT_EQ(r.broken[0].invariant, Invariant::delaunay);
     EXPECT_EQ(r.broken[0].problem_count, 1u);
@@ -164,9 +164,9 @@ TEST_F(LogCheckBroken, BisectionFindsTheStepBetweenCoarserSamples) {
     const replay::InvariantReport r = check(every);
     EXPECT_FALSE(r.ok) << every;
     EXPECT_EQ(r.stride, every);
-    EXPECT_EQ(r.boundary, kBadStep + 1) << "every " << every;
+    EXPECT_EQ(r.boundary, kBadStep) << "every " << every;
     EXPECT_TRUE(r.previous_holds);
-    EXPECT_LT(r.checked, kBadStep + 2) << "every " << every << ": bisection should check fewer boundaries";
+    EXPECT_LT(r.checked, kBadStep + 1) << "every " << every << ": bisection should check fewer boundaries";
     ASSERT_EQ(r.broken.size(), 1u);
     EXPECT_EQ(r.broken[0].invariant, Invariant::delaunay);
   }
@@ -174,21 +174,21 @@ TEST_F(LogCheckBroken, BisectionFindsTheStepBetweenCoarserSamples) {
 
 TEST_F(LogCheckBroken, InvariantsAndRangeAreHonoured) {
   EXPECT_TRUE(check(1, {Invariant::valid}).ok);  // the flip leaves a valid mesh
-  EXPECT_EQ(check(5, {Invariant::delaunay}).boundary, kBadStep + 1);
+  EXPECT_EQ(check(5, {Invariant::delaunay}).boundary, kBadStep);
 
   replay::InvariantCheckOptions o;
-  o.to = kBadStep;  // the mesh before the bad step: all hold
+  o.to = kBadStep - 1;  // the mesh before the bad step: all hold
   replay::InvariantReport r = replay::check_invariants(log(), o);
   EXPECT_TRUE(r.ok);
-  EXPECT_EQ(r.checked, kBadStep + 1);
-  EXPECT_EQ(r.to, kBadStep);
+  EXPECT_EQ(r.checked, kBadStep);
+  EXPECT_EQ(r.to, kBadStep - 1);
 
-  o.from = kBadStep + 5;  // the range starts broken: nothing before it to bisect into
+  o.from = kBadStep + 4;  // the range starts broken: nothing before it to bisect into
   o.to = UINT64_MAX;
   o.every = 10;
   r = replay::check_invariants(log(), o);
   EXPECT_FALSE(r.ok);
-  EXPECT_EQ(r.boundary, kBadStep + 5);
+  EXPECT_EQ(r.boundary, kBadStep + 4);
   EXPECT_FALSE(r.previous_holds);
   EXPECT_EQ(r.checked, 1u);
 }
@@ -365,7 +365,7 @@ TEST_F(LogCheckCli, BrokenLogNamesTheStep) {
     EXPECT_TRUE(contains(r.out, log + ": " + step)) << options << ": " << r.out;
     EXPECT_TRUE(contains(r.out, ", refine) breaks delaunay: edge (")) << r.out;
     EXPECT_TRUE(contains(r.out, "step " + std::to_string(kBadStep - 1) + " holds")) << r.out;
-    EXPECT_TRUE(contains(r.out, "--step " + std::to_string(kBadStep + 1))) << r.out;
+    EXPECT_TRUE(contains(r.out, "--step " + std::to_string(kBadStep) + "' writes")) << r.out;
   }
   CommandResult r = meshstep("log check " + log + " --json --every 9");
   EXPECT_EQ(r.status, 1) << r.err;
@@ -377,8 +377,10 @@ TEST_F(LogCheckCli, BrokenLogNamesTheStep) {
   r = meshstep("log check " + log + " --invariant valid");
   EXPECT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_TRUE(contains(r.out, std::to_string(kSteps + 1) + " step boundaries checked, valid holds at each")) << r.out;
-  r = meshstep("log check " + log + " --to " + std::to_string(kBadStep));
+  r = meshstep("log check " + log + " --to " + std::to_string(kBadStep - 1));
   EXPECT_EQ(r.status, 0) << r.out << r.err;
+  r = meshstep("log check " + log + " --to " + std::to_string(kBadStep));
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
 }
 
 TEST_F(LogCheckCli, UsageAndInputErrors) {

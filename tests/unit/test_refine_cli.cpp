@@ -282,11 +282,15 @@ TEST_F(RefineCli, UnknownAlgorithmIsAUsageErrorListingTheNames) {
   EXPECT_EQ(meshstep("refine").status, 2);
 }
 
-TEST_F(RefineCli, OutOfRangeAngleIsBadInput) {
+// An option out of its range is a usage error (exit 2), said alone: no warning about the
+// angle, no progress line, no output before it.
+TEST_F(RefineCli, OutOfRangeAngleIsAUsageErrorSaidAlone) {
   const std::string input = write("ell.poly", kLShape);
-  const CommandResult r = meshstep("refine " + input + " --min-angle 70 --record " + dir_.file("x.mslog"));
-  EXPECT_EQ(r.status, 1);
-  EXPECT_TRUE(contains(r.err, "meshstep: error:")) << r.err;
+  const CommandResult r = meshstep("refine " + input + " --min-angle 70 -v --record " + dir_.file("x.mslog"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("meshstep: error:", 0), 0u) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line only:\n" << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
   EXPECT_TRUE(contains(r.err, "minimum angle")) << r.err;
   EXPECT_TRUE(contains(r.err, "60")) << r.err;
   // Nothing is left behind: no mesh, no log, no partial log.
@@ -294,7 +298,7 @@ TEST_F(RefineCli, OutOfRangeAngleIsBadInput) {
   EXPECT_FALSE(fs::exists(dir_.file("x.mslog")));
   EXPECT_FALSE(fs::exists(dir_.file("x.mslog.partial")));
   const CommandResult m = meshstep("refine " + input + " --max-angle 50");
-  EXPECT_EQ(m.status, 1);
+  EXPECT_EQ(m.status, 2);
   EXPECT_TRUE(contains(m.err, "maximum angle")) << m.err;
 }
 

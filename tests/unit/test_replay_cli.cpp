@@ -126,7 +126,7 @@ TEST_F(ReplayCli, MeshAtTheEndIsTheTriangulatedMesh) {
   const CommandResult beyond = meshstep("log mesh " + log_ + " --step 99999 -o " + dir_.file("beyond"));
   EXPECT_EQ(beyond.status, 2);
   EXPECT_TRUE(contains(beyond.err, "meshstep: error:")) << beyond.err;
-  EXPECT_TRUE(contains(beyond.err, "out of range")) << beyond.err;
+  EXPECT_TRUE(contains(beyond.err, "outside the run")) << beyond.err;
   EXPECT_FALSE(fs::exists(dir_.file("beyond.ele")));
 }
 

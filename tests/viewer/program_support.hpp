@@ -44,7 +44,7 @@ inline Result view_log(const std::string& viewer, const std::string& log, const 
                        const std::string& extra = "") {
   const std::filesystem::path file = dir / "script.txt";
   std::ofstream(file) << script;
-  std::string command = viewer + " " + log + " --size " + size + " -q --script " + file.string() + " " + extra;
+  std::string command = viewer + " " + log + " --window " + size + " -q --script " + file.string() + " " + extra;
   if (mode == "window") {
     if (run("command -v xvfb-run").status != 0) return {77, "xvfb-run is not installed (Debian package xvfb)"};
     command = "xvfb-run -a -s '-screen 0 1280x800x24' " + command;

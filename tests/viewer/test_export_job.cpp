@@ -38,5 +38,20 @@ TEST(ViewerExport, WritesAVideoOfARangeInTheBackground) {
   EXPECT_NE(missing.status().find("cannot run /nonexistent/meshstep"), std::string::npos) << missing.status();
 }
 
+// The export panel's range starts as every step of the run, 0 to n (side_panel.cpp); export
+// numbers steps as the viewer does, so that default video is made (it once stopped at n-1).
+TEST(ViewerExport, TheDefaultRangeOfEveryStepExports) {
+  if (!testing::ffmpeg_works()) GTEST_SKIP() << "ffmpeg is not installed, or does not start";
+  const replay::LogReader* log = golden::lesson_run("--algorithm offcenter --min-angle 30");
+  ASSERT_NE(log, nullptr);
+  const fs::path out = fs::temp_directory_path() / ("viewer_export_all_" + std::to_string(::getpid()) + ".mp4");
+  ExportJob job(MESHSTEP_BINARY);
+  ASSERT_TRUE(job.start(log->path(), out.string(), 0, log->step_count())) << job.status();
+  for (int i = 0; i < 1200 && job.running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_EQ(job.status(), "wrote " + out.string());
+  EXPECT_TRUE(fs::exists(out));
+  fs::remove(out);
+}
+
 }  // namespace
 }  // namespace meshstep::viewer

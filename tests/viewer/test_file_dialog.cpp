@@ -234,7 +234,7 @@ class FileDialogProgram : public ::testing::Test {
   // The viewer off screen on INPUT (none: the start page), running this script.
   Result view(const std::string& script, const std::string& input = "") {
     std::ofstream(dir_ / "script.txt") << script;
-    return run(std::string(MESHSTEP_VIEW_BINARY) + " " + input + " --offscreen -q --size 1280x800 --script " +
+    return run(std::string(MESHSTEP_VIEW_BINARY) + " " + input + " --offscreen -q --window 1280x800 --script " +
                (dir_ / "script.txt").string());
   }
   // What the viewer records for an input, recorded here the same way: `meshstep triangulate`.

@@ -20,7 +20,9 @@ TEST(ViewerKeys, ParsesChordsAsScriptsWriteThem) {
   EXPECT_EQ(parse_chord("Shift+Ctrl+S"), (Chord{GLFW_KEY_S, true, true}));
   EXPECT_EQ(parse_chord("F11"), (Chord{GLFW_KEY_F11}));
   EXPECT_EQ(parse_chord("?"), (Chord{GLFW_KEY_SLASH, true}));
-  EXPECT_EQ(parse_chord("+"), (Chord{GLFW_KEY_EQUAL}));
+  EXPECT_EQ(parse_chord("+"), (Chord{GLFW_KEY_EQUAL, true}));  // as a keyboard types it
+  EXPECT_EQ(parse_chord("="), (Chord{GLFW_KEY_EQUAL}));
+  EXPECT_EQ(parse_chord("kp+"), (Chord{GLFW_KEY_KP_ADD}));
   EXPECT_FALSE(parse_chord("F13"));
   EXPECT_FALSE(parse_chord("Hyper+X"));
   EXPECT_FALSE(parse_chord(""));

@@ -58,7 +58,7 @@ class LiveRunProgram : public ::testing::Test {
   Result view(const std::string& input, const std::string& script) {
     const fs::path file = dir_ / "script.txt";
     std::ofstream(file) << script;
-    Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + input + " --offscreen --gl egl --size 800x600 -q --script " +
+    Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + input + " --offscreen --gl egl --window 800x600 -q --script " +
                    file.string());
     if (r.status != 0 && has(r.output, "cannot open a window or draw")) r.status = 77;
     return r;
@@ -89,6 +89,17 @@ TEST_F(LiveRunProgram, ShowsTheRunAsItGoesThenOpensItsWholeLog) {
   EXPECT_EQ(field(opened, "event_count"), static_cast<long long>(apart.event_count())) << opened;
   EXPECT_EQ(field(opened, "position"), static_cast<long long>(apart.event_count())) << opened;
   EXPECT_EQ(field(opened, "step_count"), static_cast<long long>(apart.step_count())) << opened;
+}
+
+// The window's title names what it shows: after a live run, its input, not "start".
+TEST_F(LiveRunProgram, TheWindowTitleNamesTheRunOnceItHasEnded) {
+  const std::string lesson = std::string(MESHSTEP_ASSETS) + "/examples/lesson.poly";
+  const fs::path after = dir_ / "after.json";
+  const Result r = view(lesson + " --min-angle 25", "state " + after.string() + "\nquit\n");
+  if (r.status == 77) GTEST_SKIP() << r.output;
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string opened = read_text(after);
+  EXPECT_TRUE(has(opened, "\"window_title\": \"meshstep view: " + lesson + "\"")) << opened;
 }
 
 TEST_F(LiveRunProgram, AnInputThatCannotRunIsAnErrorWithItsLine) {

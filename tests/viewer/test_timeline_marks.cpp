@@ -196,7 +196,7 @@ TEST(TimelineMarksProgram, ToggleMarksChangesWhatTheBarCounts) {
                         << "\ntoggle-marks flips\ntoggle-marks rejected\ntoggle-marks splits\nframes 1\nstate "
                         << b.string() << "\nquit\n";
   FILE* pipe = ::popen((std::string(MESHSTEP_VIEW_BINARY) + " " + log->path() +
-                        " --offscreen -q --size 1024x640 --script " + script.string() + " 2>&1")
+                        " --offscreen -q --window 1024x640 --script " + script.string() + " 2>&1")
                            .c_str(),
                        "r");
   ASSERT_NE(pipe, nullptr);

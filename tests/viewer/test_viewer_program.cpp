@@ -73,6 +73,31 @@ TEST_P(ViewerProgram, KeysMoveTheCursorAndChangeWhatIsShown) {
   EXPECT_TRUE(has(after, "\"help_open\": true")) << after;
 }
 
+// One step number (issue 29): inside step 47 (one event before its end) the state's step,
+// which the timeline prints, is the caption's and the explanation's step, 47.
+TEST_P(ViewerProgram, CaptionTimelineAndExplanationSayTheSameStep) {
+  const std::string a = (dir_ / "a.json").string(), b = (dir_ / "b.json").string();
+  VIEW_OR_SKIP(r, "seek step 47\nkey Shift+Left\nframes 1\nstate " + a + "\nseek step 0\nframes 1\nstate " + b +
+                      "\nquit\n");
+  const std::string inside = read_text(a), start = read_text(b);
+  EXPECT_EQ(field(inside, "position"), static_cast<long long>(log_->step_start(47)) - 1);
+  EXPECT_EQ(field(inside, "step"), 47) << inside;
+  EXPECT_TRUE(has(inside, "\"in_step\": true")) << inside;
+  EXPECT_TRUE(has(inside, "\"caption\": \"refine \u00B7 step 47 of ")) << inside;
+  EXPECT_TRUE(has(inside, "\"explain_heading\": \"step 47 of ")) << inside;
+  EXPECT_EQ(field(start, "step"), 0) << start;
+  EXPECT_EQ(field(start, "position"), static_cast<long long>(log_->step_start(0))) << start;
+}
+
+// `+` doubles the speed as `=` does (on most keyboards `+` is Shift+=); `-` halves it.
+TEST_P(ViewerProgram, PlusAndEqualsBothDoubleTheSpeed) {
+  const std::string a = (dir_ / "a.json").string(), b = (dir_ / "b.json").string(), c = (dir_ / "c.json").string();
+  VIEW_OR_SKIP(r, "speed 2\nkey +\nstate " + a + "\nkey =\nstate " + b + "\nkey -\nstate " + c + "\nquit\n");
+  EXPECT_TRUE(has(read_text(a), "\"speed\": 4,")) << read_text(a);
+  EXPECT_TRUE(has(read_text(b), "\"speed\": 8,")) << read_text(b);
+  EXPECT_TRUE(has(read_text(c), "\"speed\": 4,")) << read_text(c);
+}
+
 TEST_P(ViewerProgram, PlaysAtTheScriptsFixedFrameTime) {
   const std::string a = (dir_ / "a.json").string();
   VIEW_OR_SKIP(r, "seek step 10\nspeed 30\nplay 30\nstate " + a + "\nquit\n");
@@ -309,7 +334,8 @@ TEST(ViewerInspector, SelectsVerticesAndTriangles) {
   if (r.status != 0 && has(r.output, "cannot open a window or draw")) GTEST_SKIP() << r.output;
   ASSERT_EQ(r.status, 0) << r.output;
   const std::string vs = read_text(a), ts = read_text(b);
-  EXPECT_TRUE(has(vs, "\"selection\": \"vertex " + std::to_string(vertex) + " at")) << vs;
+  // Named by its number in the output's .node, as every text names it, not by its log id.
+  EXPECT_TRUE(has(vs, "\"selection\": \"vertex " + log->vertex_name(vertex) + " at")) << vs;
   EXPECT_TRUE(has(vs, "Steiner, inserted by step 47 (refine)")) << vs;
   // Its history: step 47 first, then every step whose mesh-changing events name it.
   std::vector<std::uint64_t> expected;
@@ -426,7 +452,7 @@ TEST(ViewerStartPage, OpensAnExampleOrSaysWhyNot) {
   std::ofstream(script) << "frames 2\nopen " << (dir / "missing.mslog").string() << "\nframes 1\nstate "
                         << start.string() << "\nmouse 90 87\nclick\nframes 2\nstate " << opened.string()
                         << "\nquit\n";
-  const Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " --offscreen -q --size 1280x800 --script " + script.string());
+  const Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " --offscreen -q --window 1280x800 --script " + script.string());
   if (r.status != 0 && has(r.output, "cannot open a window or draw")) GTEST_SKIP() << r.output;
   ASSERT_EQ(r.status, 0) << r.output;
   const std::string page = read_text(start), run_state = read_text(opened);
@@ -446,15 +472,34 @@ TEST(ViewerCli, BadScriptsAndInputsSayWhereAndExitNonZero) {
   Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + log->path() + " --offscreen --script " + script.string());
   EXPECT_EQ(r.status, 1);
   EXPECT_TRUE(has(r.output, script.string() + ":2: unknown action 'bogus'")) << r.output;
-  fs::remove(script);
 
   r = run(std::string(MESHSTEP_VIEW_BINARY) + " /nonexistent/run.mslog --offscreen");
   EXPECT_EQ(r.status, 1);
   EXPECT_TRUE(has(r.output, "/nonexistent/run.mslog")) << r.output;
 
-  r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + log->path() + " --offscreen --size 10x10");
+  // A missing file is named, and said to be missing.
+  r = run(std::string(MESHSTEP_VIEW_BINARY) + " /nonexistent/lesson.poly --offscreen");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(has(r.output, "/nonexistent/lesson.poly: does not exist")) << r.output;
+
+  // A step past the run is refused in the words of every command, from the command line
+  // and from a script (as the go-to box refuses it).
+  const std::string n = std::to_string(log->step_count()), beyond = std::to_string(log->step_count() + 1);
+  r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + log->path() + " --offscreen --step " + beyond);
   EXPECT_EQ(r.status, 2);
-  EXPECT_TRUE(has(r.output, "--size 10x10")) << r.output;
+  EXPECT_TRUE(has(r.output, "--step " + beyond + " is outside the run: its steps are numbered 0.." + n)) << r.output;
+  std::ofstream(script) << "seek step " << beyond << "\nquit\n";
+  r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + log->path() + " --offscreen --script " + script.string());
+  if (!has(r.output, "cannot open a window or draw")) {
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(has(r.output, ":1: seek step: ")) << r.output;
+    EXPECT_TRUE(has(r.output, "step " + beyond + " is outside the run: its steps are numbered 0.." + n)) << r.output;
+  }
+  fs::remove(script);
+
+  r = run(std::string(MESHSTEP_VIEW_BINARY) + " " + log->path() + " --offscreen --window 10x10");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(has(r.output, "--window 10x10")) << r.output;
 
   // `meshstep view` is the viewer: its help lists the keys.
   r = run(std::string(MESHSTEP_BINARY) + " view --help");

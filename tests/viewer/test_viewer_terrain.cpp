@@ -170,20 +170,20 @@ TEST_P(ViewerTerrain, AClickOnThe3dPictureSelectsTheTriangleShownThere) {
   const Picked front = pick_front(lifted.mesh, camera.to_world({kX, kY}), 8.0 / camera.pixels_per_unit());
   ASSERT_NE(front.kind, Picked::Kind::none) << "the pointer is over the surface";
   if (front.kind == Picked::Kind::vertex) {  // within 8 pixels of a vertex: the vertex
-    EXPECT_TRUE(has(picked, "\"selection\": \"vertex " + std::to_string(front.index) + " at")) << picked;
+    EXPECT_TRUE(has(picked, "\"selection\": \"vertex " + log_->vertex_name(front.index) + " at")) << picked;
     EXPECT_TRUE(has(picked, ", height ")) << picked;
     return;
   }
   const std::uint32_t t = find_triangle(planar.mesh, lifted.mesh.triangles[front.index]);
   ASSERT_NE(t, kNoIndex);
   const auto& v = planar.mesh.triangles[t];
-  char expected[96];
-  std::snprintf(expected, sizeof expected, "\"selection\": \"triangle %u %u %u: ", v[0], v[1], v[2]);
+  const std::string expected = "\"selection\": \"triangle " + log_->vertex_name(v[0]) + " " + log_->vertex_name(v[1]) +
+                               " " + log_->vertex_name(v[2]) + ": ";
   EXPECT_TRUE(has(picked, expected)) << expected << "\n" << picked;
   // A terrain's Lepp path is measured in 3D, as Lepp-surface measures it.
   const LeppPath lepp = lepp_path(planar.mesh, t, view.heights());
-  char path_words[64];
-  std::snprintf(path_words, sizeof path_words, "Lepp path of %zu to edge %u-%u", lepp.triangles.size(), lepp.a, lepp.b);
+  const std::string path_words = "Lepp path of " + std::to_string(lepp.triangles.size()) + " to edge " +
+                                 log_->vertex_name(lepp.a) + "-" + log_->vertex_name(lepp.b);
   EXPECT_TRUE(has(picked, path_words)) << path_words << "\n" << picked;
 }
 

@@ -28,16 +28,7 @@ std::string number(double x) {
 }
 
 void check(const RefineCriteria& c) {
-  const auto fail = [](const std::string& m) { throw InputError(m); };
-  if (!(c.min_angle_deg >= 0.0 && c.min_angle_deg < 60.0))
-    fail("minimum angle " + number(c.min_angle_deg) + " is out of range (0 to below 60 degrees)");
-  if (!(c.max_angle_deg > 60.0 && c.max_angle_deg <= 180.0))
-    fail("maximum angle " + number(c.max_angle_deg) + " is out of range (above 60 to 180 degrees)");
-  if (!(c.max_aspect == 0.0 || c.max_aspect >= 2.0 / std::sqrt(3.0)))
-    fail("maximum aspect ratio " + number(c.max_aspect) +
-         " is below the equilateral triangle's 1.1547 (longest edge over shortest altitude)");
-  if (!(c.max_area >= 0.0) || !std::isfinite(c.max_area))
-    fail("maximum area " + number(c.max_area) + " must be a positive number");
+  if (const std::string problem = criteria_problem(c); !problem.empty()) throw InputError(problem);
 }
 
 // The criteria in the triangulation's scaled coordinates.
@@ -180,6 +171,19 @@ void check_bisection(const RefineOptions& o, const RefineCriteria& c, const Pslg
 }
 
 }  // namespace
+
+std::string criteria_problem(const RefineCriteria& c) {
+  if (!(c.min_angle_deg >= 0.0 && c.min_angle_deg < 60.0))
+    return "minimum angle " + number(c.min_angle_deg) + " is out of range (0 to below 60 degrees)";
+  if (!(c.max_angle_deg > 60.0 && c.max_angle_deg <= 180.0))
+    return "maximum angle " + number(c.max_angle_deg) + " is out of range (above 60 to 180 degrees)";
+  if (!(c.max_aspect == 0.0 || c.max_aspect >= 2.0 / std::sqrt(3.0)))
+    return "maximum aspect ratio " + number(c.max_aspect) +
+           " is below the equilateral triangle's 1.1547 (longest edge over shortest altitude)";
+  if (!(c.max_area >= 0.0) || !std::isfinite(c.max_area))
+    return "maximum area " + number(c.max_area) + " must be a positive number";
+  return "";
+}
 
 TriMesh refine_chain(Pslg input, std::span<const RefineOptions> operations, std::span<RefineReport> reports,
                      const std::function<void(std::size_t)>& before) {

@@ -440,7 +440,7 @@ class Refiner {
     const HalfEdge e = lepp(f);
     const Point &a = point(mesh_.origin(e)), &b = point(mesh_.dest(e));
     const bool boundary = is_segment(e);
-    if constexpr (Rec::enabled) record_lepp_path(tri_.recorder(), mesh_, lepp_faces_, e, boundary ? 1 : 2, lepp_vertices_);
+    if constexpr (Rec::enabled) hold_lepp_path(e, boundary ? 1 : 2);
     if (boundary || options_.selection == Selection::lepp_midpoint) return {(a.x + b.x) / 2.0, (a.y + b.y) / 2.0};
     // The centroid of the two terminal triangles (a, b, c) and (b, a, d): the mean of their
     // centroids.
@@ -448,6 +448,32 @@ class Refiner {
     // (c + d) summed first: the same rounding whichever way round the data structure
     // hands over the terminal edge.
     return {(2.0 * (a.x + b.x) + (c.x + d.x)) / 6.0, (2.0 * (a.y + b.y) + (c.y + d.y)) / 6.0};
+  }
+
+  // The Lepp path is found while the point is chosen, before the step that inserts it (or
+  // splits the segment it encroaches) begins: it is held here and recorded right after that
+  // step's step_begin, so that it belongs to its step in the log. Logs written before this
+  // have it at the tail of the previous step; the scene still reads them (step_story.cpp).
+  struct HeldLepp {
+    bool held = false;
+    VertexId a = kNone, b = kNone;
+    std::uint32_t terminal_triangles = 0;
+  };
+
+  void hold_lepp_path(HalfEdge e, std::uint32_t terminal_triangles) {
+    lepp_vertices_.clear();
+    for (const FaceId g : lepp_faces_) {
+      const HalfEdge h = mesh_.half_edge(g);
+      lepp_vertices_.insert(lepp_vertices_.end(), {mesh_.origin(h), mesh_.dest(h), mesh_.apex(h)});
+    }
+    held_lepp_ = {true, mesh_.origin(e), mesh_.dest(e), terminal_triangles};
+  }
+
+  // Called right after a step_begin: the held path (if any) opens the step.
+  void record_held_lepp_path(Rec& rec) {
+    if (!held_lepp_.held) return;
+    rec.lepp_path(held_lepp_.a, held_lepp_.b, held_lepp_.terminal_triangles, lepp_vertices_);
+    held_lepp_.held = false;
   }
 
   struct WalkResult {
@@ -525,6 +551,7 @@ class Refiner {
   }
 
   void fix(const Candidate& c) {
+    held_lepp_.held = false;  // a path held for a point that made no step is not recorded
     Point alternative;
     const Point p = select(c, alternative);
     if (!exact_range_.holds(p)) {  // left as it is, like a triangle at a small input angle
@@ -554,7 +581,9 @@ class Refiner {
     Rec& rec = tri_.recorder();
     rec.step_begin(mesh_, replay::StepKind::refine, c.a, c.b);
     if constexpr (Rec::enabled) {
+      // As the algorithm reads: t fails a test, then its Lepp path is followed.
       record_failed_criteria(rec, criteria_, tri_.points(), c.a, c.b, c.c);
+      record_held_lepp_path(rec);
       const Point alternatives[1] = {alternative};
       rec.point_selected(static_cast<std::uint8_t>(options_.selection), c.a, c.b, c.c, p,
                          std::span<const Point>(alternatives, p == alternative ? 0 : 1));
@@ -593,6 +622,7 @@ class Refiner {
     Rec& rec = tri_.recorder();
     rec.step_begin(mesh_, replay::StepKind::split_segment, a, b);
     if constexpr (Rec::enabled) {
+      record_held_lepp_path(rec);  // the path whose point encroached, when a Lepp point did
       const Point encroacher = by_point ? *by_point : (by_vertex != kNone ? point(by_vertex) : point(mesh_.apex(h)));
       rec.encroached(a, b, by_point ? kNone : (by_vertex != kNone ? by_vertex : mesh_.apex(h)), encroacher);
     }
@@ -819,6 +849,7 @@ class Refiner {
   std::vector<FaceId> star_;
   std::vector<FaceId> lepp_faces_;
   std::vector<VertexId> lepp_vertices_;
+  HeldLepp held_lepp_;
   HalfEdge star_start_ = kNone;
   std::vector<FaceId> cavity_;
   std::vector<HalfEdge> stack_;

@@ -14,6 +14,7 @@
 
 #include "event_codec.hpp"
 #include "format.hpp"
+#include "vertex_numbers.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/huge_pages.hpp"
 
@@ -37,7 +38,7 @@ struct LogReader::Cache {
 LogReader::~LogReader() = default;
 
 LogReader::LogReader(const std::string& path, std::uint64_t keep_writes_bytes)
-    : path_(path), cache_(std::make_unique<Cache>()) {
+    : path_(path), vertex_numbers_(std::make_unique<VertexNumbers>()), cache_(std::make_unique<Cache>()) {
   file_ = io::MappedFile(path);
   keep_writes_ = file_.size() <= keep_writes_bytes;
   read_header();

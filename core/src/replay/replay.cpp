@@ -8,6 +8,7 @@
 
 #include "meshstep/error.hpp"
 #include "meshstep/replay/mesh_hash.hpp"
+#include "replay/output_order.hpp"
 
 namespace meshstep::replay {
 namespace {
@@ -144,21 +145,7 @@ TriMesh Replay::mesh() const { return build_mesh(nullptr, nullptr); }
 
 TriMesh Replay::build_mesh(std::vector<std::uint32_t>* output_index, std::vector<std::uint8_t>* constrained_bits) const {
   const std::vector<VertexInfo>& vertices = log_->vertices();
-  // Input numbering, with duplicates resolved as the triangulator does: a group of vertices
-  // at one place is represented by the copy that comes first in the input.
-  std::vector<std::uint32_t> input(vertices.size(), kNone);
-  std::vector<VertexId> present;
-  for (VertexId v = 0; v < vertices.size(); ++v) {
-    if (vertices[v].event == kNone || vertices[v].event >= position_) continue;
-    if (vertices[v].removed < position_) continue;  // removed by then (improvement)
-    input[v] = vertices[v].input_index;
-    present.push_back(v);
-  }
-  for (const VertexId v : present) {
-    const VertexId r = vertices[v].same_as;
-    if (r != kNone && r < input.size() && input[r] != kNone && input[v] < input[r]) std::swap(input[v], input[r]);
-  }
-  std::sort(present.begin(), present.end(), [&](VertexId a, VertexId b) { return input[a] < input[b]; });
+  const std::vector<VertexId> present = detail::output_order(vertices, position_);
   std::vector<std::uint32_t> index(vertices.size(), kNoIndex);
   TriMesh out;
   // The header's parameters say how many vertices the input had and how it numbers them.
@@ -167,7 +154,7 @@ TriMesh Replay::build_mesh(std::vector<std::uint32_t>* output_index, std::vector
   for (const VertexId v : present) {
     index[v] = static_cast<std::uint32_t>(out.points.size());
     out.points.push_back(vertices[v].point);
-    if (input[v] < input_count) ++out.input_vertex_count;
+    if (vertices[v].input_index < input_count) ++out.input_vertex_count;
   }
   const auto map = [&](VertexId v) {
     if (v >= index.size() || index[v] == kNoIndex)

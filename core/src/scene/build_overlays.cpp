@@ -383,7 +383,7 @@ class OverlayPainter {
       marker("removed_vertex", "removed vertex", {style_.removed.stroke, kHollow}, Marker::ring, 15.0f,
              at(story.removed->vertex));
       scene_.shapes.back().width_px = 3.0f;
-      label(at(story.removed->vertex), "removed");
+      label(at(story.removed->vertex), "removed vertex " + log_.vertex_name(story.removed->vertex));
     }
     if (story.encroached && finite(story.encroached->split)) {
       const Point p = at(story.encroached->split), a = at(story.encroached->a), b = at(story.encroached->b);
@@ -421,7 +421,7 @@ class OverlayPainter {
       const bool in = std::find(story.inserted.begin(), story.inserted.end(), v) != story.inserted.end();
       marker("new_vertex", in ? "vertex inserted" : "vertex being located",
              {style_.marker_outline, style_.selected.fill}, Marker::disc, px::small_point, at(v));
-      label(at(v), "vertex " + std::to_string(v));
+      label(at(v), "vertex " + log_.vertex_name(v));  // its number in the output's .node
     }
   }
 

@@ -1,8 +1,9 @@
 // The caption: one line that says where the run is and what the step did, for people.
 // "refine · step 57 of 124 · off-center of a 21.3° triangle inserted; 4 flips"
 //
-// Steps are counted from 1 here (the log numbers them from 0): "step 124 of 124" is the
-// last, and the mesh after it is `meshstep log mesh --step 124`.
+// Steps are numbered as every command numbers them (replay/step_numbers.hpp): "step 124 of
+// 124" is the last, and the mesh after it is `meshstep log mesh --step 124`. Vertices are
+// named by their number in the output's .node (LogReader::vertex_name).
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "meshstep/refine/quality.hpp"
+#include "meshstep/replay/step_numbers.hpp"
 #include "parts.hpp"
 
 namespace meshstep::scene::detail {
@@ -39,8 +41,6 @@ std::string plural(std::size_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-std::string vertex_name(VertexId v) { return v == kInfiniteVertex ? "infinity" : std::to_string(v); }
-std::string edge_name(VertexId a, VertexId b) { return vertex_name(a) + "-" + vertex_name(b); }
 
 // The phase a step belongs to, from its kind: a phase's first step begins right after its
 // phase_begin, so the kind tells it without searching the log backward.
@@ -69,13 +69,17 @@ class CaptionWriter {
     if (!story_.in_step) return "start" + std::string(kDot) + "before the first of " + steps + " steps";
     std::string out = phase_of(story_.kind);
     out += kDot;
-    out += "step " + std::to_string(story_.step + 1) + " of " + steps;
+    out += "step " + std::to_string(replay::step_at(log_, story_.position).step) + " of " + steps;
     out += kDot;
     out += story_.next_triangle ? next_triangle() : what_happened();
     return out;
   }
 
  private:
+  // Vertices by their number in the output's .node, as every text names them (log_reader.hpp).
+  std::string vertex_name(VertexId v) const { return log_.vertex_name(v); }
+  std::string edge_name(VertexId a, VertexId b) const { return vertex_name(a) + "-" + vertex_name(b); }
+
   double smallest_angle(const Triple& t) const {
     const auto& v = log_.vertices();
     for (const VertexId id : t)

@@ -1,6 +1,6 @@
 // The explain panel's text, from the same story of the step as the overlays and the caption
-// (step_story.hpp): each line names the vertices and edges by the log's ids, as the
-// overlays' labels and `meshstep log dump` do.
+// (step_story.hpp): each line names the vertices by their number in the output's .node
+// (LogReader::vertex_name), as the caption, the overlays' labels and `meshstep log dump` do.
 #include "meshstep/scene/explain.hpp"
 
 #include <algorithm>
@@ -9,6 +9,7 @@
 
 #include "meshstep/refine/quality.hpp"
 #include "meshstep/refine/refine.hpp"
+#include "meshstep/replay/step_numbers.hpp"
 #include "parts.hpp"
 #include "surface/surface_geometry.hpp"
 
@@ -33,11 +34,6 @@ std::string degrees(double v) {
   return buf;
 }
 
-std::string vertex_name(VertexId v) { return v == kInfiniteVertex ? "infinity" : std::to_string(v); }
-std::string edge_name(VertexId a, VertexId b) { return vertex_name(a) + "-" + vertex_name(b); }
-std::string triangle_name(const Triple& t) {
-  return vertex_name(t[0]) + " " + vertex_name(t[1]) + " " + vertex_name(t[2]);
-}
 
 std::string count(std::size_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
@@ -61,7 +57,7 @@ class Explainer {
     }
     std::string kind = replay::name(story_.kind);
     std::replace(kind.begin(), kind.end(), '_', ' ');
-    out.heading = "step " + std::to_string(story_.step + 1) + " of " + std::to_string(story_.step_count) +
+    out.heading = "step " + std::to_string(replay::step_at(cursor_.log(), story_.position).step) + " of " + std::to_string(story_.step_count) +
                   " \u00B7 " + kind;
     lines_ = &out.lines;
     if (story_.next_triangle) add("the step is done; the next bad triangle's Lepp path is found:");
@@ -80,6 +76,13 @@ class Explainer {
   }
 
  private:
+  // Vertices by their number in the output's .node, as every text names them (log_reader.hpp).
+  std::string vertex_name(VertexId v) const { return cursor_.log().vertex_name(v); }
+  std::string edge_name(VertexId a, VertexId b) const { return vertex_name(a) + "-" + vertex_name(b); }
+  std::string triangle_name(const Triple& t) const {
+    return vertex_name(t[0]) + " " + vertex_name(t[1]) + " " + vertex_name(t[2]);
+  }
+
   void add(std::string line) { lines_->push_back(std::move(line)); }
 
   const Point* point(VertexId v) const {

@@ -154,6 +154,11 @@ struct RefineReport {
   std::vector<std::pair<std::string, double>> phase_ms;
 };
 
+// What is wrong with the criteria's ranges ("minimum angle 70 is out of range (0 to below
+// 60 degrees)"), or "" when nothing is: refine() refuses the same, but a command asks first,
+// so that a usage error comes before any reading, warning or progress.
+std::string criteria_problem(const RefineCriteria& criteria);
+
 // Throws InputError like triangulate(), and for criteria out of range.
 TriMesh refine(Pslg input, const RefineOptions& options, RefineReport* report = nullptr);
 

@@ -114,6 +114,14 @@ class LogReader {
 
   // Every vertex the run introduced, by vertex id (ids never used have event == kNone).
   const std::vector<VertexInfo>& vertices() const { return vertices_; }
+  // A vertex's name in every text (captions, explanations, the inspector, `log dump`,
+  // labels): its number in the run's output .node, counted from the input's first index
+  // (input vertices keep their input file's numbers, Steiner vertices follow in the order
+  // they were inserted); "r3" for the third vertex the run removes again, which has no
+  // number in the output; "infinity" for the vertex at infinity. (vertex_names.cpp)
+  std::string vertex_name(VertexId v) const;
+  // Its number in the output's .node (from the first index), or kNone when it has none.
+  std::uint32_t output_number(VertexId v) const;
   // A terrain's log: its vertices have heights (elevation events), and it can be seen in 3D.
   bool has_elevation() const { return counts_[static_cast<std::size_t>(EventType::elevation)] > 0; }
   // The final mesh hash from the end block (complete logs only).
@@ -162,6 +170,11 @@ class LogReader {
   std::vector<BlockInfo> blocks_;
   std::vector<KeyframeInfo> keyframes_;
   std::vector<VertexInfo> vertices_;
+  // The names, worked out when first asked for (a sort of every vertex: 0.1-0.3 s for a
+  // million, which log info, verify and check need not pay), once, whichever thread asks.
+  struct VertexNumbers;
+  const VertexNumbers& vertex_numbers() const;
+  std::unique_ptr<VertexNumbers> vertex_numbers_;
   std::span<const SlotWrite> writes_from_blocks(std::uint64_t e) const;
 
   bool keep_writes_ = true;
