@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "../file_roles.hpp"
+#include "common/file_roles.hpp"
 #include "meshstep/error.hpp"
 #include "render/gl_context.hpp"
 #include "open_input.hpp"

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "../scene_source.hpp"
+#include "common/scene_source.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/formats.hpp"
 #include "live_run.hpp"

@@ -2,7 +2,7 @@
 // Every reader's damaged-input corpus (the fuzzers' seeds and past findings) goes through
 // the real commands, and systematic damage (every byte flipped, every length cut) of a few
 // recorded logs, a terrain's and a surface refinement's among them, goes through the core
-// entry points those commands use. The rule, as app/main.cpp applies it: a file can make
+// entry points those commands use. The rule, as app/cli/main.cpp applies it: a file can make
 // meshstep answer or refuse (exit 0 or 1, an InputError), never throw anything else.
 #include <gtest/gtest.h>
 

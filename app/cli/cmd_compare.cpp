@@ -24,7 +24,7 @@
 #include "compare_picture.hpp"
 #include "console.hpp"
 #include "draw_options.hpp"
-#include "file_roles.hpp"
+#include "refuse_overwrites.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/atomic_file.hpp"
 #include "meshstep/io/formats.hpp"

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "file_roles.hpp"
+#include "refuse_overwrites.hpp"
 #include "meshstep/io/formats.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/mesh/tri_mesh.hpp"

@@ -6,7 +6,7 @@
 #include "meshstep/replay/replay.hpp"
 #include "meshstep/scene/build.hpp"
 #include "meshstep/scene/lift.hpp"
-#include "scene_source.hpp"
+#include "common/scene_source.hpp"
 
 namespace meshstep::app {
 

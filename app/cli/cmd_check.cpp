@@ -8,7 +8,7 @@
 #include "meshstep/check/mesh_check.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/triangle_io.hpp"
-#include "output_prefix.hpp"
+#include "common/output_prefix.hpp"
 
 namespace meshstep::app {
 namespace {

@@ -12,7 +12,7 @@
 #include "command.hpp"
 #include "console.hpp"
 #include "draw_options.hpp"
-#include "file_roles.hpp"
+#include "refuse_overwrites.hpp"
 #include "frame_moments.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/scene/layout.hpp"
@@ -20,7 +20,7 @@
 #include "orbit_options.hpp"
 #include "painter.hpp"
 #include "png_frame_writer.hpp"
-#include "scene_source.hpp"
+#include "common/scene_source.hpp"
 #include "staged_frames.hpp"
 #include "video_pipe.hpp"
 

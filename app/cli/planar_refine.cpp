@@ -13,7 +13,7 @@
 
 #include "command.hpp"
 #include "console.hpp"
-#include "file_roles.hpp"
+#include "refuse_overwrites.hpp"
 #include "json_line.hpp"
 #include "meshstep/check/quality.hpp"
 #include "meshstep/error.hpp"
@@ -27,7 +27,7 @@
 #include "meshstep/replay/run_header.hpp"
 #include "memory_budget.hpp"
 #include "mesh_output.hpp"
-#include "output_prefix.hpp"
+#include "common/output_prefix.hpp"
 #include "record_option.hpp"
 
 namespace meshstep::app {

@@ -10,7 +10,7 @@
 #include "command.hpp"
 #include "console.hpp"
 #include "draw_options.hpp"
-#include "file_roles.hpp"
+#include "refuse_overwrites.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/atomic_file.hpp"
 #include "meshstep/io/surface_io.hpp"
@@ -21,9 +21,9 @@
 #include "meshstep/scene/svg.hpp"
 #include "moment_scene.hpp"
 #include "orbit_options.hpp"
-#include "output_prefix.hpp"
+#include "common/output_prefix.hpp"
 #include "painter.hpp"
-#include "scene_source.hpp"
+#include "common/scene_source.hpp"
 
 namespace meshstep::app {
 namespace {

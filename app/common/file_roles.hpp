@@ -48,9 +48,4 @@ class FileRoles {
   std::size_t groups_ = 0;
 };
 
-// Prints the clash and returns the usage exit status; 0 when there is none. A command calls
-// it once, before it reads or writes anything:
-//   if (const int refused = refuse_overwrites(FileRoles().reads(in).writes("-o", out, "output"))) return refused;
-int refuse_overwrites(const FileRoles& files);
-
 }  // namespace meshstep::app

@@ -4,12 +4,12 @@
 #include <memory>
 
 #include "cmd_log.hpp"
-#include "file_roles.hpp"
+#include "refuse_overwrites.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/replay/replay.hpp"
 #include "mesh_output.hpp"
 #include "meshstep/replay/step_numbers.hpp"
-#include "output_prefix.hpp"
+#include "common/output_prefix.hpp"
 
 namespace meshstep::app {
 namespace {

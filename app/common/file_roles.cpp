@@ -1,12 +1,10 @@
-#include "file_roles.hpp"
+#include "common/file_roles.hpp"
 
 #include <sys/stat.h>
 
 #include <filesystem>
 
-#include "command.hpp"
-#include "console.hpp"
-#include "output_prefix.hpp"
+#include "common/output_prefix.hpp"
 
 namespace meshstep::app {
 namespace {
@@ -114,13 +112,6 @@ std::optional<std::string> FileRoles::clash() const {
              (a.path == b.path ? "" : " and " + b.path + " are one file") + "); choose another " + b.noun;
     }
   return std::nullopt;
-}
-
-int refuse_overwrites(const FileRoles& files) {
-  const std::optional<std::string> clash = files.clash();
-  if (!clash) return kExitOk;
-  print_error(*clash);
-  return kExitUsage;
 }
 
 }  // namespace meshstep::app

@@ -5,7 +5,7 @@
 
 #include "command.hpp"
 #include "console.hpp"
-#include "file_roles.hpp"
+#include "refuse_overwrites.hpp"
 #include "json_line.hpp"
 #include "meshstep/check/quality.hpp"
 #include "meshstep/delaunay/triangulate.hpp"
@@ -14,7 +14,7 @@
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/replay/log_writer.hpp"
 #include "mesh_output.hpp"
-#include "output_prefix.hpp"
+#include "common/output_prefix.hpp"
 #include "operation_options.hpp"
 #include "record_option.hpp"
 #include "meshstep/replay/run_header.hpp"

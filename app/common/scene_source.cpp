@@ -1,11 +1,11 @@
-#include "scene_source.hpp"
+#include "common/scene_source.hpp"
 
 #include <filesystem>
 
 #include "meshstep/error.hpp"
 #include "meshstep/io/formats.hpp"
 #include "meshstep/io/triangle_io.hpp"
-#include "output_prefix.hpp"
+#include "common/output_prefix.hpp"
 
 namespace meshstep::app {
 

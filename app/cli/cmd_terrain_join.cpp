@@ -7,7 +7,7 @@
 
 #include "command.hpp"
 #include "console.hpp"
-#include "file_roles.hpp"
+#include "refuse_overwrites.hpp"
 #include "json_line.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/surface_io.hpp"
