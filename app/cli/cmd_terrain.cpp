@@ -12,6 +12,7 @@
 #include "meshstep/error.hpp"
 #include "meshstep/io/shortest_text.hpp"
 #include "meshstep/io/surface_io.hpp"
+#include "meshstep/replay/run_header.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/terrain/height_grid.hpp"
 #include "meshstep/terrain/tin.hpp"
@@ -247,13 +248,7 @@ int run_terrain(const TerrainArgs& args) {
     // spacing (a step's sample is a grid index), the choices made.
     std::unique_ptr<replay::LogWriter> log;
     if (!args.record.empty()) {
-      log = open_log(args.record, args.grid, args.algorithm,
-                     "max_error=" + io::shortest_text(options.max_error) + " input_vertices=4" +
-                         " grid_columns=" + std::to_string(grid.nx) + " grid_rows=" + std::to_string(grid.ny) +
-                         " dx=" + io::shortest_text(grid.dx) + " dy=" + io::shortest_text(grid.dy) +
-                         " terminal=" + args.terminal + " improve=" + (options.improve ? "1" : "0") +
-                         " flips_3d=" + (options.flips_3d ? "1" : "0") +
-                         " max_triangles=" + std::to_string(options.max_triangles),
+      log = open_log(args.record, args.grid, args.algorithm, replay::terrain_parameters(options, grid),
                      options.data_structure, Insertion::flip, nullptr);
       options.record = log.get();
     }

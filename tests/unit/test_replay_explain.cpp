@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <random>
 #include <span>
 #include <stdexcept>
@@ -373,7 +374,7 @@ TEST(ExplainFormat, VersionFourLogsStillOpen) {
   record_refinement(input, at_angle(30.0), dir.file("v5.mslog"));
   const replay::LogReader old_log(dir.file("v4.mslog")), log(dir.file("v5.mslog"));
   EXPECT_EQ(old_log.format_version(), 4u);
-  EXPECT_EQ(log.format_version(), 5u);
+  EXPECT_EQ(log.format_version(), 6u);
   for (const replay::LogReader* l : {&old_log, &log}) {
     ASSERT_TRUE(l->complete());
     const replay::VerifyReport report = replay::verify(*l);
@@ -443,9 +444,37 @@ TEST(ExplainFormat, VersionThreeLogsStillOpen) {
     ASSERT_EQ(replay::describe(old_log.event(e)), replay::describe(log.event(e))) << "event " << e;
 }
 
+// Format 6 changed only the header (a recipe's operations): a version-5 log of the same run
+// holds the same bytes of events and reads the same; a version-5 writer refuses operations,
+// which a version-5 reader would take for one run's phases.
+TEST(ExplainFormat, VersionFiveLogsStillOpen) {
+  TempDir dir("meshstep_explain_");
+  const Pslg input = io::read_poly(plate());
+  replay::LogWriterOptions v5;
+  v5.format_version = 5;
+  record_refinement(input, at_angle(30.0), dir.file("v5.mslog"), v5);
+  record_refinement(input, at_angle(30.0), dir.file("v6.mslog"));
+  const replay::LogReader old_log(dir.file("v5.mslog")), log(dir.file("v6.mslog"));
+  EXPECT_EQ(old_log.format_version(), 5u);
+  EXPECT_EQ(log.format_version(), 6u);
+  const replay::VerifyReport report = replay::verify(old_log);
+  EXPECT_TRUE(report.ok) << report.problem;
+  EXPECT_EQ(old_log.header().parameters, log.header().parameters);
+  ASSERT_EQ(old_log.event_count(), log.event_count());
+  for (std::uint64_t e = 0; e < log.event_count(); ++e)
+    ASSERT_EQ(replay::describe(old_log.event(e)), replay::describe(log.event(e))) << "event " << e;
+
+  replay::LogHeader chain;
+  chain.operations = "refine --algorithm lepp-centroid --min-angle 25\nrefine --max-area 0.1";
+  EXPECT_THROW(replay::LogWriter(dir.file("chain5.mslog"), chain, v5), std::invalid_argument);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("chain5.mslog")));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("chain5.mslog.partial")));
+  // (Version 6 logs of chains are read in test_run_recipe_cli.cpp.)
+}
+
 TEST(ExplainFormat, OnlyKnownVersionsAreWritten) {
   TempDir dir("meshstep_explain_");
-  for (const std::uint32_t version : {1u, 6u}) {
+  for (const std::uint32_t version : {1u, 7u}) {
     replay::LogWriterOptions o;
     o.format_version = version;
     EXPECT_THROW(replay::LogWriter(dir.file("x.mslog"), replay::LogHeader{}, o), std::invalid_argument) << version;

@@ -170,6 +170,7 @@ TEST_F(RunRecipeCli, ThePseudoCodeFollowsTheOperationAtTheCursor) {
   const std::string log_path = dir_.file("two.mslog");
   ASSERT_EQ(meshstep("run " + recipe + " " + input + " -q -o " + dir_.file("two") + " --record " + log_path).status, 0);
   const replay::LogReader log(log_path);
+  EXPECT_EQ(log.format_version(), 6u);  // the first whose header names operations
   const std::vector<replay::OperationSpan> spans = replay::operation_spans(log, log_path);
   ASSERT_EQ(spans.size(), 2u);
   ASSERT_LT(spans[0].from_step, spans[0].to_step);

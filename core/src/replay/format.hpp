@@ -46,11 +46,14 @@ inline constexpr char kFileMagic[8] = {'M', 'S', 'T', 'E', 'P', 'L', 'O', 'G'};
 // 4: terrains: elevation events, the vertical_error criterion, point_selected's sample choices.
 // 5: an event's type and code in one byte; flips and split_faces in a compact form (their
 //    slots named by their relation to slots just written, rotations in a byte).
-inline constexpr std::uint32_t kFormatVersion = 5;
+// 6: the header may name a recipe's operations (field `operations`, one per line), which map
+//    the run's phases to its operations; events are encoded as in 5.
+inline constexpr std::uint32_t kFormatVersion = 6;
 // The oldest version read: a version-2 log reads as one whose locate events have no list.
 inline constexpr std::uint32_t kOldestReadableVersion = 2;
 inline constexpr std::uint32_t kLocateWalkVersion = 3;  // the first whose locate events have one
 inline constexpr std::uint32_t kCompactVersion = 5;     // the first with compact event heads
+inline constexpr std::uint32_t kOperationsVersion = 6;  // the first whose header names operations
 // The event types a file of format `version` can hold (its end block counts each): every
 // type before `elevation` until version 3.
 inline constexpr std::size_t event_type_count(std::uint32_t version) {

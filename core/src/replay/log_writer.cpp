@@ -1,6 +1,7 @@
 // The log writer: a background thread encodes and writes while the algorithm runs.
 #include "meshstep/replay/log_writer.hpp"
 
+#include <stdexcept>
 #include <algorithm>
 #include <cerrno>
 #include <condition_variable>
@@ -107,7 +108,14 @@ struct LogWriter::Impl {
     put_field(fields, "parameters", header.parameters);
     put_field(fields, "data_structure", header.data_structure);
     put_field(fields, "insertion", header.insertion);
-    if (!header.operations.empty()) put_field(fields, "operations", header.operations);
+    if (!header.operations.empty()) {
+      // An older reader would read the phases of a chain as one run's.
+      if (encoder.format_version() < format::kOperationsVersion)
+        throw std::invalid_argument("replay log format version " + std::to_string(encoder.format_version()) +
+                                    " cannot name a recipe's operations (" +
+                                    std::to_string(format::kOperationsVersion) + " can)");
+      put_field(fields, "operations", header.operations);
+    }
     if (!header.regions.empty()) put_field(fields, "regions", regions_field(header.regions));
     if (!header.holes.empty()) put_field(fields, "holes", holes_field(header.holes));
     if (!header.vertex_markers.empty()) put_field(fields, "vertex_markers", vertex_markers_field(header.vertex_markers));

@@ -63,6 +63,16 @@ std::string surface_parameters(double max_edge, double max_area, std::uint64_t i
          " max_triangles=" + std::to_string(max_triangles) + " flip_dihedral=" + io::shortest_text(flip_dihedral);
 }
 
+std::string terrain_parameters(const terrain::TerrainOptions& o, const terrain::HeightGrid& grid) {
+  // input_vertices=4: a terrain run starts from the grid's four corners.
+  return "max_error=" + io::shortest_text(o.max_error) + " input_vertices=4 grid_columns=" + std::to_string(grid.nx) +
+         " grid_rows=" + std::to_string(grid.ny) + " dx=" + io::shortest_text(grid.dx) +
+         " dy=" + io::shortest_text(grid.dy) +
+         " terminal=" + (o.terminal_point == terrain::TerminalPoint::midpoint ? "midpoint" : "centroid") +
+         " improve=" + (o.improve ? "1" : "0") + " flips_3d=" + (o.flips_3d ? "1" : "0") +
+         " max_triangles=" + std::to_string(o.max_triangles);
+}
+
 std::string header_parameter(const LogHeader& header, const std::string& key, const std::string& fallback) {
   std::istringstream words(header.parameters);
   std::string word;

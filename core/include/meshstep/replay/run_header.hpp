@@ -11,6 +11,7 @@
 #include "meshstep/refine/region.hpp"
 #include "meshstep/refine/run_spec.hpp"
 #include "meshstep/replay/log_writer.hpp"
+#include "meshstep/terrain/tin.hpp"
 
 namespace meshstep::replay {
 
@@ -50,6 +51,10 @@ std::string refine_parameters(const RefineOptions& options, const std::string& s
 // A 3D surface's bisection (and flips: flip_dihedral < 0 for none).
 std::string surface_parameters(double max_edge, double max_area, std::uint64_t input_vertices,
                                std::size_t max_triangles, double flip_dihedral);
+
+// A terrain approximation: its bound, the grid's shape and spacing (a step's sample is a
+// grid index), and the choices made.
+std::string terrain_parameters(const terrain::TerrainOptions& options, const terrain::HeightGrid& grid);
 
 // A value from the header's "key=value" parameters, or `fallback` (what read_run_header
 // reads; for showing the header's words as they are).
