@@ -9,6 +9,7 @@
 #include "meshstep/error.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "common/output_prefix.hpp"
+#include "meshstep/io/formats.hpp"
 
 namespace meshstep::app {
 namespace {
@@ -22,10 +23,7 @@ struct CheckArgs {
 
 int run_check(const CheckArgs& args) {
   // Accept "mesh.1" as well as "mesh.1.node" / "mesh.1.ele".
-  std::string prefix = args.prefix;
-  for (const char* ext : {".node", ".ele"})
-    if (prefix.size() > std::string(ext).size() && prefix.ends_with(ext))
-      prefix = strip_extension(prefix);
+  const std::string prefix = io::mesh_prefix_of(args.prefix);
   const Verbosity verbosity = args.quiet ? Verbosity::quiet : Verbosity::normal;
   std::vector<std::string> warnings;
   TriMesh mesh;

@@ -10,6 +10,7 @@
 #include "refuse_overwrites.hpp"
 #include "json_line.hpp"
 #include "meshstep/error.hpp"
+#include "meshstep/io/formats.hpp"
 #include "meshstep/io/shortest_text.hpp"
 #include "meshstep/io/surface_io.hpp"
 #include "meshstep/replay/run_header.hpp"
@@ -188,7 +189,7 @@ int run_terrain(const TerrainArgs& args) {
     return kExitUsage;
   }
   std::optional<io::SurfaceFormat> format;
-  if (!args.output.empty() && !is_triangle_prefix(args.output)) {
+  if (!args.output.empty() && io::mesh_prefix_of(args.output) == args.output) {
     format = io::surface_format_for(args.output);
     if (!format) {
       print_error(args.output + ": unknown output format (use .obj, .off, .ply, .stl or .node)");

@@ -196,7 +196,7 @@ int run_planar_refine(const PlanarRefineJob& job) {
   bool re_refine = false, area_file = false;
   if (!io::is_planar_input(job.input)) {
     std::error_code ec;
-    re_refine = std::filesystem::exists(job.input + ".node", ec) && std::filesystem::exists(job.input + ".ele", ec);
+    re_refine = io::is_mesh_prefix(job.input);
     area_file = re_refine && std::filesystem::exists(job.input + ".area", ec);
   }
 

@@ -5,12 +5,6 @@
 
 namespace meshstep::app {
 
-bool is_triangle_prefix(const std::string& path) {
-  for (const char* ext : {".node", ".ele"})
-    if (path.size() > std::string(ext).size() && path.ends_with(ext)) return true;
-  return false;
-}
-
 void write_terrain(const std::string& path, const std::optional<io::SurfaceFormat>& format,
                    const terrain::HeightGrid& grid, const terrain::Tin& tin, double base) {
   if (format) {

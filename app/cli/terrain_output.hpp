@@ -10,9 +10,6 @@
 
 namespace meshstep::app {
 
-// PREFIX.node (or .ele): Triangle's files, the height as the one vertex attribute.
-bool is_triangle_prefix(const std::string& path);
-
 // Writes tin to path: Triangle's files when `format` is empty, else that surface format.
 // base > 0 closes a surface into a solid that far below the lowest vertex.
 void write_terrain(const std::string& path, const std::optional<io::SurfaceFormat>& format,

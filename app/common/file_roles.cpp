@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "common/output_prefix.hpp"
+#include "meshstep/io/formats.hpp"
 
 namespace meshstep::app {
 namespace {
@@ -30,8 +31,6 @@ bool names_a_file(const std::string& path) {
   return ::stat(path.c_str(), &s) == 0;
 }
 
-constexpr const char* kMeshPrefixExtensions[] = {".node", ".ele", ".poly", ".area", ".edge", ".neigh"};
-
 }  // namespace
 
 FileRoles& FileRoles::reads(const std::string& path) {
@@ -47,7 +46,7 @@ FileRoles& FileRoles::reads_pslg(const std::string& path) {
 
 FileRoles& FileRoles::reads_mesh(const std::string& prefix) {
   if (prefix.empty()) return *this;
-  for (const char* extension : {".node", ".ele", ".poly", ".area"}) reads(prefix + extension);
+  for (const std::string& file : io::mesh_prefix_files(prefix, io::MeshPrefixFiles::read)) reads(file);
   return *this;
 }
 
@@ -66,8 +65,8 @@ FileRoles& FileRoles::writes(const std::string& option, const std::string& path,
 
 FileRoles& FileRoles::writes_mesh(const std::string& option, const std::string& prefix, const std::string& given) {
   if (prefix.empty()) return *this;
-  for (const char* extension : kMeshPrefixExtensions)
-    add_output(option, given.empty() ? prefix : given, prefix + extension, "output prefix");
+  for (const std::string& file : io::mesh_prefix_files(prefix, io::MeshPrefixFiles::written))
+    add_output(option, given.empty() ? prefix : given, file, "output prefix");
   ++groups_;
   return *this;
 }

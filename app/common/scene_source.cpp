@@ -26,9 +26,8 @@ SceneSource open_scene_source(const std::string& path, std::vector<std::string>*
     source.input = io::read_pslg(path, warnings);
     return source;
   }
-  std::string prefix = path;
-  if (prefix.ends_with(".ele")) prefix = strip_extension(prefix);
-  if (fs::exists(prefix + ".node") && fs::exists(prefix + ".ele")) {
+  const std::string prefix = io::mesh_prefix_of(path);
+  if (io::is_mesh_prefix(prefix)) {
     source.kind = SourceKind::mesh;
     source.path = prefix;
     source.mesh = io::read_mesh(prefix, warnings);

@@ -234,7 +234,7 @@ std::optional<std::string> FileDialog::submit(const std::string& typed) {
     list(path);
     return std::nullopt;
   }
-  if (fs::exists(status) || (fs::exists(path + ".node", ec) && fs::exists(path + ".ele", ec))) {
+  if (fs::exists(status) || io::is_mesh_prefix(path)) {
     message_.clear();
     return path;
   }

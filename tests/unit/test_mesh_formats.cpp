@@ -8,6 +8,7 @@
 #include <cmath>
 #include <tuple>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -80,6 +81,29 @@ TEST(FileFormats, TableHasEachExtensionOnceAndChoosesWritersByExtension) {
   EXPECT_TRUE(io::is_planar_input("lake.geojson"));
   EXPECT_TRUE(io::is_planar_input("lake.wkt"));
   EXPECT_FALSE(io::is_planar_input("lake.msh"));
+}
+
+// A mesh PREFIX is Triangle's files: which ones a reader opens and a writer may leave, when
+// one is on disk (the .node and the .ele, not either alone), and how a file names its prefix.
+TEST(FileFormats, AMeshPrefixIsTrianglesFiles) {
+  using Files = std::vector<std::string>;
+  EXPECT_EQ(io::mesh_prefix_files("m.1", io::MeshPrefixFiles::read), (Files{"m.1.node", "m.1.ele", "m.1.poly", "m.1.area"}));
+  EXPECT_EQ(io::mesh_prefix_files("m.1", io::MeshPrefixFiles::written),
+            (Files{"m.1.node", "m.1.ele", "m.1.poly", "m.1.area", "m.1.edge", "m.1.neigh"}));
+  EXPECT_EQ(io::mesh_prefix_of("dir/m.1.node"), "dir/m.1");
+  EXPECT_EQ(io::mesh_prefix_of("dir/m.1.ele"), "dir/m.1");
+  EXPECT_EQ(io::mesh_prefix_of("dir/m.1"), "dir/m.1");
+  EXPECT_EQ(io::mesh_prefix_of(".node"), ".node");  // a name, not an extension on nothing
+  EXPECT_EQ(io::mesh_prefix_of("m.poly"), "m.poly");
+
+  TempDir dir("meshstep_prefix_");
+  const std::string prefix = dir.file("m");
+  EXPECT_FALSE(io::is_mesh_prefix(prefix));
+  std::ofstream(prefix + ".node") << "0 2 0 0\n";
+  EXPECT_FALSE(io::is_mesh_prefix(prefix)) << "a .node alone is a point set";
+  std::ofstream(prefix + ".ele") << "0 3 0\n";
+  EXPECT_TRUE(io::is_mesh_prefix(prefix));
+  EXPECT_FALSE(io::is_mesh_prefix(prefix + ".node"));
 }
 
 // The sections of a .msh file, each as its lines of words.

@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 #include "meshstep/io/mesh_formats.hpp"
@@ -96,6 +97,26 @@ bool is_planar_input(std::string_view path) {
 bool is_surface(std::string_view path) {
   const FileFormat* f = format_of(path);
   return f && f->kind == FileKind::surface;
+}
+
+std::vector<std::string> mesh_prefix_files(const std::string& prefix, MeshPrefixFiles which) {
+  // Triangle's files (.msh and .vtu are meshes too, but whole in one file). The table says
+  // which are read: .edge and .neigh are written on request and never read.
+  std::vector<std::string> files;
+  for (const std::string_view ext : {".node", ".ele", ".poly", ".area", ".edge", ".neigh"})
+    if (which == MeshPrefixFiles::written || format_of(ext)->read) files.push_back(prefix + std::string(ext));
+  return files;
+}
+
+bool is_mesh_prefix(const std::string& prefix) {
+  std::error_code ec;
+  return std::filesystem::exists(prefix + ".node", ec) && std::filesystem::exists(prefix + ".ele", ec);
+}
+
+std::string mesh_prefix_of(const std::string& path) {
+  for (const std::string_view ext : {std::string_view(".node"), std::string_view(".ele")})
+    if (path.size() > ext.size() && path.ends_with(ext)) return path.substr(0, path.size() - ext.size());
+  return path;
 }
 
 bool is_replay_log(const std::string& path) {

@@ -56,6 +56,16 @@ const FileFormat* mesh_writer_for(std::string_view path);
 bool is_planar_input(std::string_view path);
 // A 3D triangle surface by its name (.off, .obj, .ply, .stl).
 bool is_surface(std::string_view path);
+// Triangle's mesh PREFIX stands for several files. `MeshPrefixFiles::written`: every file a
+// mesh writer may leave (.node .ele .poly .area .edge .neigh); `read`: those a reader of the
+// mesh may open (.node .ele .poly .area).
+enum class MeshPrefixFiles { read, written };
+std::vector<std::string> mesh_prefix_files(const std::string& prefix, MeshPrefixFiles which);
+// A mesh PREFIX on disk: PREFIX.node and PREFIX.ele both exist.
+bool is_mesh_prefix(const std::string& prefix);
+// "mesh.1.node" and "mesh.1.ele" name the prefix "mesh.1"; any other path is returned as it is.
+std::string mesh_prefix_of(const std::string& path);
+
 // A replay log by its content (its magic bytes), whatever its name.
 bool is_replay_log(const std::string& path);
 
