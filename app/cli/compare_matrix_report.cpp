@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 
 #include "compare_table.hpp"
 #include "json_line.hpp"
@@ -93,6 +94,16 @@ std::string matrix_plot_svg(const Matrix& m, const std::vector<MatrixRow>& rows,
       }
       p.series.push_back(std::move(s));
     }
+    // One algorithm running away near its limit (circumcenters at 34 degrees: 100 times the
+    // others) would flatten every other line against the axis: then the axis is logarithmic.
+    double low = std::numeric_limits<double>::infinity(), high = 0.0;
+    for (const PlotSeries& s : p.series)
+      for (const auto& point : s.points) {
+        low = std::min(low, point.second);
+        high = std::max(high, point.second);
+      }
+    p.y_log = low > 0.0 && high > 30.0 * low;
+    if (p.y_log) p.y_label += ", log scale";
     panels.push_back(std::move(p));
   }
   PlotPanel cdf;

@@ -17,8 +17,10 @@ constexpr const char* kColours[] = {"#000000", "#E69F00", "#56B4E9", "#009E73", 
 constexpr const char* kDashes[] = {"", "7,3", "1.5,2.5", "9,3,2,3", "3,3", "12,3,2,3,2,3", "16,4", "5,2,1,2"};
 constexpr int kStyles = 8;
 
-// Plot-area margins within a panel: room for the tick labels and the axis titles.
+// Plot-area margins within a panel: room for the tick labels and the axis titles (the left
+// one grows with the widest y tick label, so that the axis title never runs into it).
 constexpr double kLeft = 62, kRight = 14, kTop = 30, kBottom = 46;
+constexpr double kTickCharWidth = 6.4;  // an 11-pixel digit, about
 
 std::string num(double v) {
   char buffer[32];
@@ -72,17 +74,29 @@ std::string marker(int style, double x, double y, const char* colour) {
   }
 }
 
+// A log axis's label: 1, 10, 100, 1000, then 10⁴, 10⁵ ... (exponents as superscripts).
+std::string decade_label(double exponent) {
+  const int e = static_cast<int>(std::lround(exponent));
+  if (e >= 0 && e <= 3) return std::to_string(static_cast<int>(std::lround(std::pow(10.0, e))));
+  static const char* const kSuperscript[] = {"\u2070", "\u00B9", "\u00B2", "\u00B3", "\u2074",
+                                             "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+  std::string label = e < 0 ? "10\u207B" : "10";
+  for (const char digit : std::to_string(std::abs(e))) label += kSuperscript[digit - '0'];
+  return label;
+}
+
 std::pair<double, double> data_range(const PlotPanel& panel, bool x_axis) {
   double low = std::numeric_limits<double>::infinity(), high = -low;
   for (const PlotSeries& s : panel.series)
     for (const auto& [x, y] : s.points) {
-      const double v = x_axis ? x : y;
+      double v = x_axis ? x : y;
+      if (!x_axis && panel.y_log) v = v > 0.0 ? std::log10(v) : std::numeric_limits<double>::quiet_NaN();
       if (!std::isfinite(v)) continue;
       low = std::min(low, v);
       high = std::max(high, v);
     }
   if (!std::isfinite(low)) return {0.0, 1.0};
-  if (!x_axis && panel.y_from_zero) low = std::min(low, 0.0);
+  if (!x_axis && panel.y_from_zero && !panel.y_log) low = std::min(low, 0.0);
   if (high - low <= 0.0) {
     const double pad = low == 0.0 ? 1.0 : std::abs(low) * 0.1;
     return {low - pad, high + pad};
@@ -92,19 +106,34 @@ std::pair<double, double> data_range(const PlotPanel& panel, bool x_axis) {
 
 std::string draw_panel(const PlotPanel& panel, std::size_t index, double left, double top, double width, double height) {
   std::string svg;
-  const double x0 = left + kLeft, x1 = left + width - kRight, y0 = top + height - kBottom, y1 = top + kTop;
+  // A log axis is drawn in decades: y is log10 of the value from here on, and its ticks are
+  // whole exponents.
+  const auto y_of = [&](double value) {
+    return !panel.y_log ? value : value > 0.0 ? std::log10(value) : std::numeric_limits<double>::quiet_NaN();
+  };
+  std::pair<double, double> yr = panel.y_range.value_or(data_range(panel, false));
+  if (panel.y_log && panel.y_range) yr = {y_of(yr.first), y_of(yr.second)};
+  std::vector<double> y_ticks = panel.y_log ? nice_ticks(std::floor(yr.first), std::ceil(yr.second))
+                                            : nice_ticks(yr.first, yr.second);
+  if (panel.y_log && y_ticks.size() > 1 && y_ticks[1] - y_ticks[0] < 1.0) {
+    y_ticks.clear();  // decades only: no tick at 10^0.5
+    for (double e = std::floor(yr.first); e <= std::ceil(yr.second) + 0.5; ++e) y_ticks.push_back(e);
+  }
+  const double y_spacing = y_ticks.size() > 1 ? y_ticks[1] - y_ticks[0] : 1.0;
+  const auto y_tick_label = [&](double t) { return panel.y_log ? decade_label(t) : tick_label(t, y_spacing); };
+  std::size_t widest = 0;
+  for (const double t : y_ticks) widest = std::max(widest, y_tick_label(t).size());
+  const double margin = std::max(kLeft, 34 + kTickCharWidth * static_cast<double>(widest));
+  const double x0 = left + margin, x1 = left + width - kRight, y0 = top + height - kBottom, y1 = top + kTop;
   const std::pair<double, double> xr = panel.x_range.value_or(
       panel.x_ticks.size() > 1 ? std::pair{panel.x_ticks.front(), panel.x_ticks.back()} : data_range(panel, true));
   std::vector<double> x_ticks = panel.x_ticks.size() > 1 ? panel.x_ticks : nice_ticks(xr.first, xr.second);
-  std::pair<double, double> yr = panel.y_range.value_or(data_range(panel, false));
-  std::vector<double> y_ticks = nice_ticks(yr.first, yr.second);
   // Automatic ranges end at the outer ticks, so that the axes end at labelled numbers.
   const double xa = panel.x_range ? xr.first : x_ticks.front(), xb = panel.x_range ? xr.second : x_ticks.back();
   const double ya = panel.y_range ? yr.first : y_ticks.front(), yb = panel.y_range ? yr.second : y_ticks.back();
   const auto px = [&](double x) { return x0 + (x - xa) / (xb - xa) * (x1 - x0); };
   const auto py = [&](double y) { return y0 - (y - ya) / (yb - ya) * (y0 - y1); };
   const double x_spacing = x_ticks.size() > 1 ? x_ticks[1] - x_ticks[0] : 1.0;
-  const double y_spacing = y_ticks.size() > 1 ? y_ticks[1] - y_ticks[0] : 1.0;
 
   // Light grid lines at the ticks, then the frame over them.
   svg += "<g stroke=\"#e4e4e4\" stroke-width=\"0.8\">";
@@ -125,8 +154,8 @@ std::string draw_panel(const PlotPanel& panel, std::size_t index, double left, d
     const char* colour = kColours[s % kStyles];
     std::string d;
     for (const auto& [x, y] : series.points) {
-      if (!std::isfinite(x) || !std::isfinite(y)) continue;
-      d += (d.empty() ? "M" : "L") + num(px(x)) + " " + num(py(y));
+      if (!std::isfinite(x) || !std::isfinite(y_of(y))) continue;
+      d += (d.empty() ? "M" : "L") + num(px(x)) + " " + num(py(y_of(y)));
     }
     if (d.empty()) continue;
     svg += "<path class=\"series\" data-name=\"" + escaped(series.name) + "\" clip-path=\"url(#" + clip + ")\" d=\"" +
@@ -134,7 +163,7 @@ std::string draw_panel(const PlotPanel& panel, std::size_t index, double left, d
            (kDashes[s % kStyles][0] ? std::string(" stroke-dasharray=\"") + kDashes[s % kStyles] + "\"" : "") + "/>\n";
     if (series.markers)
       for (const auto& [x, y] : series.points)
-        if (std::isfinite(x) && std::isfinite(y)) svg += marker(static_cast<int>(s), px(x), py(y), colour) + "\n";
+        if (std::isfinite(x) && std::isfinite(y_of(y))) svg += marker(static_cast<int>(s), px(x), py(y_of(y)), colour) + "\n";
   }
 
   // Frame, ticks and their labels.
@@ -155,7 +184,7 @@ std::string draw_panel(const PlotPanel& panel, std::size_t index, double left, d
   for (const double t : y_ticks)
     if (t >= ya - 1e-12 && t <= yb + 1e-12)
       svg += "<text x=\"" + num(x0 - 7) + "\" y=\"" + num(py(t) + 4) + "\" text-anchor=\"end\">" +
-             tick_label(t, y_spacing) + "</text>";
+             y_tick_label(t) + "</text>";
   svg += "</g>\n";
 
   // Axis titles and the panel's title.

@@ -23,6 +23,9 @@ struct PlotPanel {
   // The axes' ranges; none: the data's, widened to round numbers.
   std::optional<std::pair<double, double>> x_range, y_range;
   bool y_from_zero = false;  // the automatic y range starts at 0
+  // A logarithmic y axis, ticked at powers of ten: for counts that span orders of magnitude
+  // (one algorithm's Steiner points running away at a high bound). Values <= 0 are not drawn.
+  bool y_log = false;
   // The x axis's ticks (none: round numbers); given, the automatic x range is theirs, so a
   // sweep's axis ends at its first and last bound and ticks each.
   std::vector<double> x_ticks;
