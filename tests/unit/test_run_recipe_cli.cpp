@@ -33,11 +33,9 @@ double area_of(const TriMesh& m, const std::array<std::uint32_t, 3>& t) {
   return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
 }
 
-class RunRecipeCli : public ::testing::Test {
+class RunRecipeCli : public testing::CliTest {
  protected:
-  CommandResult meshstep(const std::string& args) const { return testing::run_meshstep(args, dir_.path()); }
-  std::string write(const std::string& name, const std::string& text) const { return dir_.write(name, text); }
-  testing::TempDir dir_{"meshstep_run_recipe_cli_"};
+  RunRecipeCli() : CliTest("meshstep_run_recipe_cli_") {}
 };
 
 // Lepp-centroid to 25 degrees everywhere, then an area bound in a box: the area bound holds
