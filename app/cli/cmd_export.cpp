@@ -18,11 +18,11 @@
 #include "meshstep/scene/layout.hpp"
 #include "moment_scene.hpp"
 #include "orbit_options.hpp"
-#include "painter.hpp"
 #include "png_frame_writer.hpp"
 #include "common/scene_source.hpp"
 #include "staged_frames.hpp"
 #include "video_pipe.hpp"
+#include "render/painter.hpp"
 
 namespace meshstep::app {
 namespace {
@@ -138,7 +138,7 @@ int run_export(const ExportArgs& args) {
     const scene::Camera camera =
         draw.view ? draw.camera(first.bounds) : scene::fit_scene(first, draw.width, draw.height);
 
-    Painter painter(draw.gl);
+    render::Painter painter(draw.gl);
     // Declared before the writer: on an error, the writer's threads stop before the staged
     // frames are removed. No frame is in the folder until every one is written.
     std::optional<StagedFrames> staged;

@@ -22,8 +22,8 @@
 #include "moment_scene.hpp"
 #include "orbit_options.hpp"
 #include "common/output_prefix.hpp"
-#include "painter.hpp"
 #include "common/scene_source.hpp"
+#include "render/painter.hpp"
 
 namespace meshstep::app {
 namespace {
@@ -89,7 +89,7 @@ std::string write_picture(const std::string& output, const scene::Scene& picture
     io::write_file_atomically(output, scene::to_svg(picture, camera));
     return "SVG";
   }
-  Painter painter(draw.gl);
+  render::Painter painter(draw.gl);
   scene::write_png(output, painter.paint(picture, camera, draw.samples));
   return "PNG, " + painter.description();
 }
@@ -171,7 +171,7 @@ int run_render(const RenderArgs& args) {
       io::write_file_atomically(output, scene::to_svg(picture, camera));
       how = "SVG";
     } else {
-      Painter painter(draw.gl);
+      render::Painter painter(draw.gl);
       scene::write_png(output, painter.paint(picture, camera, draw.samples));
       how = "PNG, " + painter.description();
     }

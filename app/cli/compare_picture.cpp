@@ -12,8 +12,8 @@
 #include "meshstep/scene/layout.hpp"
 #include "meshstep/scene/svg.hpp"
 #include "moment_scene.hpp"
-#include "painter.hpp"
 #include "video_pipe.hpp"
+#include "render/painter.hpp"
 
 namespace meshstep::app {
 namespace {
@@ -68,7 +68,7 @@ class Panels {
   std::uint64_t completed_steps(std::size_t i) const { return moments_[i]->cursor().completed_steps(); }
 
   // The panels drawn by OpenGL into one picture, left to right.
-  void paint(Painter& painter, const std::vector<scene::Scene>& scenes, scene::Image& whole) {
+  void paint(render::Painter& painter, const std::vector<scene::Scene>& scenes, scene::Image& whole) {
     whole.width = width();
     whole.height = height_;
     whole.rgba.assign(static_cast<std::size_t>(whole.width) * height_ * 4, 255);
@@ -146,7 +146,7 @@ std::vector<unsigned long long> write_side_by_side(const SideBySide& p, const st
     io::write_file_atomically(out, doc + "</svg>\n");
     return shown;
   }
-  Painter painter(panels.gl());
+  render::Painter painter(panels.gl());
   scene::Image whole;
   panels.paint(painter, scenes, whole);
   scene::write_png(out, whole);
@@ -158,7 +158,7 @@ std::size_t write_side_by_side_video(const SideBySide& p, const std::string& out
   Panels panels(p);
   std::uint64_t longest = 0;
   for (std::size_t i = 0; i < panels.size(); ++i) longest = std::max(longest, panels.log(i).step_count());
-  Painter painter(panels.gl());
+  render::Painter painter(panels.gl());
   VideoPipe video(out, panels.width(), panels.height(), fps);
   scene::Image frame;
   // Frame k: every run after k steps (a shorter run stays at its end), k = 1 .. longest.

@@ -2,7 +2,7 @@
 // side at one moment (or at every step, as a video), one panel each, with one world scale
 // for all (the union of every run's points, so that the same length looks the same in
 // every panel) and each panel's caption saying whose run it is and at which step. SVG
-// needs no display; PNG and video are drawn by the OpenGL renderer (painter.hpp).
+// needs no display; PNG and video are drawn by the OpenGL renderer (render/painter.hpp).
 #pragma once
 
 #include <optional>

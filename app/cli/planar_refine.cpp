@@ -160,27 +160,6 @@ bool prepare_step(const Operation& op, const std::string& origin, int refusal_st
   return true;
 }
 
-// What the steps after the first add to the run's report: the counts, the times and the
-// phases (named after their operation); the rest is the last step's.
-void add_step_report(RefineReport& total, const RefineReport& step, std::size_t number) {
-  total.steiner_vertices += step.steiner_vertices;
-  total.segment_splits += step.segment_splits;
-  total.triangles_split += step.triangles_split;
-  total.rejected_points += step.rejected_points;
-  total.removed_vertices += step.removed_vertices;
-  total.unsplittable_segments += step.unsplittable_segments;
-  total.points_out_of_range += step.points_out_of_range;
-  total.triangulate_ms += step.triangulate_ms;
-  total.refine_ms += step.refine_ms;
-  for (const auto& [name, ms] : step.phase_ms) total.phase_ms.emplace_back(std::to_string(number) + ":" + name, ms);
-  total.stopped_by_cap = step.stopped_by_cap;
-  total.below_min_angle = step.below_min_angle;
-  total.bad_triangles = step.bad_triangles;
-  total.bad_near_small_input_angle = step.bad_near_small_input_angle;
-  total.bounds_met = step.bounds_met;
-  total.region_triangles = step.region_triangles;
-}
-
 }  // namespace
 
 int run_planar_refine(const PlanarRefineJob& job) {
@@ -353,8 +332,7 @@ int run_planar_refine(const PlanarRefineJob& job) {
     std::vector<RefineReport> reports(operations.size());
     mesh = re_refine ? refine_mesh_chain(old, operations, reports, announce)
                      : refine_chain(std::move(input), operations, reports, announce);
-    report = reports[0];
-    for (std::size_t i = 1; i < reports.size(); ++i) add_step_report(report, reports[i], i + 1);
+    report = combined_report(reports);
     for (std::size_t i = 0; i < reports.size(); ++i)
       if (operations[i].region && reports[i].region_triangles == 0)
         print_warning(verbosity, origin(i) + job.input +

@@ -1,6 +1,7 @@
 // meshstep.Log: a replay log (meshstep --record) read through the core's reader and replay
 // cursor: its steps and phases, the mesh after step K as numpy arrays, its events one at a
-// time, the explain panel's text of a step, and an SVG picture of a moment.
+// time, the explain panel's text of a step, and a picture of a moment: SVG, or RGB pixels
+// drawn by the OpenGL renderer off screen (EGL or OSMesa, as `meshstep render` draws PNGs).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -15,8 +16,11 @@
 #include "meshstep/scene/build.hpp"
 #include "meshstep/scene/camera.hpp"
 #include "meshstep/scene/explain.hpp"
+#include "meshstep/scene/image.hpp"
+#include "meshstep/scene/layout.hpp"
 #include "meshstep/scene/svg.hpp"
 #include "numpy_arrays.hpp"
+#include "render/painter.hpp"
 
 namespace meshstep::python {
 namespace {
@@ -109,17 +113,61 @@ class LogFile {
   // The moment after K steps drawn as `meshstep render --format svg` draws it (default
   // options), width x height pixels.
   std::string svg(long long k, int width, int height) {
+    const scene::Scene s = moment(k, width, height);
+    return scene::to_svg(s, scene::fit_scene(s, width, height));
+  }
+
+  // The same moment as pixels, as `meshstep render -o OUT.png` draws it: an (height, width,
+  // 3) uint8 array, rows top to bottom. `backend` as --gl: "auto", "egl" or "osmesa".
+  // Throws GlUnavailable (RuntimeError in Python) saying why when no OpenGL can be had.
+  py::array_t<std::uint8_t> rgb(long long k, int width, int height, const std::string& backend) {
+    const scene::Scene s = moment(k, width, height);
+    scene::Image image;
+    {
+      py::gil_scoped_release release;
+      // A context per picture: it is made current on the calling thread, whichever Python
+      // thread that is, and nothing GL outlives the call (no context torn down at exit).
+      render::Painter painter(backend);
+      painter.paint(s, scene::fit_scene(s, width, height), 0, image);
+    }
+    py::array_t<std::uint8_t> out({py::ssize_t{image.height}, py::ssize_t{image.width}, py::ssize_t{3}});
+    std::uint8_t* to = out.mutable_data();
+    const std::size_t pixels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+    for (std::size_t i = 0; i < pixels; ++i)
+      to[3 * i] = image.rgba[4 * i], to[3 * i + 1] = image.rgba[4 * i + 1], to[3 * i + 2] = image.rgba[4 * i + 2];
+    return out;
+  }
+
+  // An (height, width, 3) uint8 array as PNG bytes (Jupyter's _repr_png_).
+  static py::bytes png(const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>& rgb) {
+    if (rgb.ndim() != 3 || rgb.shape(2) != 3 || rgb.shape(0) < 1 || rgb.shape(1) < 1)
+      throw py::value_error("png: expected an RGB array of shape (height, width, 3)");
+    scene::Image image;
+    image.height = static_cast<int>(rgb.shape(0));
+    image.width = static_cast<int>(rgb.shape(1));
+    const std::size_t pixels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+    image.rgba.resize(pixels * 4);
+    const std::uint8_t* from = rgb.data();
+    for (std::size_t i = 0; i < pixels; ++i) {
+      for (int c = 0; c < 3; ++c) image.rgba[4 * i + c] = from[3 * i + c];
+      image.rgba[4 * i + 3] = 255;
+    }
+    const std::vector<std::uint8_t> bytes = scene::encode_png(image);
+    return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  }
+
+ private:
+  // The scene of the moment after K steps, with the default drawing options.
+  scene::Scene moment(long long k, int width, int height) {
     if (width < 16 || height < 16 || width > 16384 || height > 16384)
       throw py::value_error("size: width and height must be 16 to 16384 pixels");
     cursor_->seek_step(step_arg(k));
     scene::SceneOptions options;
     scene::FaceAges ages;
     ages.update(*cursor_);
-    const scene::Scene s = scene::build_scene(*cursor_, options, &ages);
-    return scene::to_svg(s, scene::Camera::fit(s.bounds, width, height));
+    return scene::build_scene(*cursor_, options, &ages);
   }
 
- private:
   std::unique_ptr<replay::LogReader> reader_;
   std::unique_ptr<replay::Replay> cursor_;
 };
@@ -143,7 +191,10 @@ void bind_log(py::module_& m) {
       .def("event_json", &LogFile::event_json, py::arg("event"))
       .def("describe_event", &LogFile::describe_event, py::arg("event"))
       .def("explain", &LogFile::explain, py::arg("step"))
-      .def("svg", &LogFile::svg, py::arg("step"), py::arg("width"), py::arg("height"));
+      .def("svg", &LogFile::svg, py::arg("step"), py::arg("width"), py::arg("height"))
+      .def("rgb", &LogFile::rgb, py::arg("step"), py::arg("width"), py::arg("height"), py::arg("backend"));
+  m.def("png_bytes", &LogFile::png, py::arg("rgb"), "An (height, width, 3) uint8 array as the bytes of a PNG file.");
+  py::register_exception<render::GlUnavailable>(m, "GlUnavailable", PyExc_RuntimeError);
 }
 
 }  // namespace meshstep::python

@@ -63,27 +63,6 @@ void add_user_criterion(RefineCriteria& c, const py::object& is_bad) {
   };
 }
 
-// What the steps after the first add to the run's report (as `meshstep run` adds them).
-void add_step(RefineReport& total, const RefineReport& step, std::size_t number) {
-  total.steiner_vertices += step.steiner_vertices;
-  total.segment_splits += step.segment_splits;
-  total.triangles_split += step.triangles_split;
-  total.rejected_points += step.rejected_points;
-  total.removed_vertices += step.removed_vertices;
-  total.unsplittable_segments += step.unsplittable_segments;
-  total.points_out_of_range += step.points_out_of_range;
-  total.triangulate_ms += step.triangulate_ms;
-  total.refine_ms += step.refine_ms;
-  for (const auto& [name, ms] : step.phase_ms) total.phase_ms.emplace_back(std::to_string(number) + ":" + name, ms);
-  total.stopped_by_cap = step.stopped_by_cap;
-  total.below_min_angle = step.below_min_angle;
-  total.bad_triangles = step.bad_triangles;
-  total.bad_near_small_input_angle = step.bad_near_small_input_angle;
-  total.bounds_met = step.bounds_met;
-  total.region_triangles = step.region_triangles;
-  total.skipped_small_angle = step.skipped_small_angle;
-}
-
 // The statistics `meshstep refine --stats json` prints, with the same names and values
 // (but for the file-related ones: input, ms.read, ms.write).
 py::dict stats_of(const TriMesh& mesh, const RefineOptions& options, const RefineReport& report,
@@ -168,9 +147,6 @@ py::dict refine_arrays(const py::object& vertices, const py::object& segments, c
       for (RefinePhase& phase : o.phases) add_user_criterion(phase.criteria, is_bad);
     }
   }
-  if (!record.empty() && ops.size() > 1)
-    throw py::value_error("record: a recipe of " + std::to_string(ops.size()) +
-                          " operations cannot be recorded yet (one log per recipe is not done)");
 
   const std::size_t input_vertices = input.points.size(), input_segments = input.segments.size();
   std::unique_ptr<replay::LogWriter> log;
@@ -182,23 +158,24 @@ py::dict refine_arrays(const py::object& vertices, const py::object& segments, c
                         (options[0].region ? " region=" + options[0].region->text() : "");
     header.data_structure = to_string(options[0].triangulate.data_structure);
     header.insertion = to_string(options[0].triangulate.insertion);
+    // One log for the whole recipe, naming its operations as `meshstep run` does.
+    if (ops.size() > 1)
+      for (const Operation& op : ops) header.operations += print_operation(op) + "\n";
     replay::describe_input(header, input);
     log = std::make_unique<replay::LogWriter>(record, header);
     options[0].triangulate.record = log.get();
   }
   for (RefineOptions& o : options) o.progress = signal_checking_progress();
 
-  RefineReport report;
+  // Every operation on the one mesh in one run, as `meshstep run` does (refine.hpp:
+  // refine_chain), so that a recipe gives the mesh and the report the command line gives.
+  std::vector<RefineReport> reports(options.size());
   TriMesh mesh = without_gil([&] {
-    TriMesh m = refine(std::move(input), options[0], &report);
-    for (std::size_t i = 1; i < options.size(); ++i) {
-      RefineReport step;
-      m = refine_mesh(m, options[i], &step);
-      add_step(report, step, i + 1);
-    }
+    TriMesh m = refine_chain(std::move(input), options, reports);
     if (log) log->finish();
     return m;
   });
+  const RefineReport report = combined_report(reports);
   py::dict out;
   out["vertices"] = points_array(mesh.points);
   out["triangles"] = triangles_array(mesh.triangles);

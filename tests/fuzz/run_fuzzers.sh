@@ -11,8 +11,16 @@ build="$(cd "$1" && pwd)"
 seconds="$2"
 shift 2
 harnesses=("$@")
-((${#harnesses[@]})) || harnesses=(triangle_io esri_grid replay_log pipeline surface terrain refine_options)
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+if ((${#harnesses[@]} == 0)); then
+  # Every harness tests/fuzz/CMakeLists.txt lists (MESHSTEP_FUZZERS), read from there so that
+  # a new harness is run without being named twice; each must have been built.
+  read -r -a harnesses < <(sed -n 's/^set(MESHSTEP_FUZZERS \(.*\))$/\1/p' "$root/tests/fuzz/CMakeLists.txt") || true
+  ((${#harnesses[@]})) || { echo "$0: no MESHSTEP_FUZZERS list in tests/fuzz/CMakeLists.txt" >&2; exit 2; }
+fi
+for h in "${harnesses[@]}"; do
+  [[ -x "$build/tests/fuzz/fuzz_$h" ]] || { echo "$0: $build/tests/fuzz/fuzz_$h is not built (-DMESHSTEP_FUZZ=ON)" >&2; exit 2; }
+done
 
 "$build/tests/fuzz/make_seeds" "$root/assets/examples" "$build/tests/fuzz/seeds" >/dev/null
 mkdir -p "$build/fuzz-findings"

@@ -4,6 +4,7 @@ import pytest
 
 import meshstep
 from conftest import read_ele, read_node
+from png_reader import read_png
 
 SQUARE = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
 SQUARE_SEGMENTS = np.array([[0, 1], [1, 2], [2, 3], [3, 0]])
@@ -55,10 +56,40 @@ def test_events_and_explain(recorded):
     assert log.explain(2) != log.explain(3)
 
 
-def test_render_is_an_svg_picture(recorded):
-    svg = meshstep.Log(recorded[0]).render(5, size=(320, 240))
+def test_svg_is_a_picture_without_gl(recorded):
+    svg = meshstep.Log(recorded[0]).svg(5, size=(320, 240))
     assert svg.startswith("<?xml") and 'width="320"' in svg and "<path" in svg
     assert svg._repr_svg_() == svg
+
+
+def rendered(log, step, size):
+    """log.render(step, size), or a skip saying why where no OpenGL can be had."""
+    try:
+        return log.render(step, size=size)
+    except meshstep.GlUnavailable as e:
+        assert "OpenGL" in str(e) or "EGL" in str(e) or "OSMesa" in str(e), str(e)
+        pytest.skip(f"no OpenGL on this machine: {e}")
+
+
+def test_render_gives_the_pixels_meshstep_render_writes(cli, recorded, tmp_path):
+    path, _ = recorded
+    log = meshstep.Log(path)
+    picture = rendered(log, 5, (320, 240))
+    assert isinstance(picture, np.ndarray) and picture.dtype == np.uint8 and picture.shape == (240, 320, 3)
+    # The same moment as the command line draws it into a PNG.
+    cli("render", path, "--step", 5, "--size", "320x240", "-o", tmp_path / "k5.png", "-q")
+    png = read_png((tmp_path / "k5.png").read_bytes())
+    assert png.shape[:2] == (240, 320)
+    differing = np.abs(png[:, :, :3].astype(int) - picture.astype(int)).max(axis=2) > 8
+    assert differing.mean() < 0.01, f"{differing.sum()} pixels differ from meshstep render's"
+    # Another moment is another picture; Jupyter gets the same pixels as a PNG.
+    assert (rendered(log, -1, (320, 240)) != picture).any()
+    assert (read_png(picture._repr_png_()) == picture).all()
+    assert (meshstep.render(path, 5, size=(320, 240)) == picture).all()
+    with pytest.raises(ValueError, match="gl"):
+        log.render(5, gl="vulkan")
+    with pytest.raises(IndexError):
+        log.render(log.step_count + 1)
 
 
 def test_out_of_range_and_damaged_logs(recorded, tmp_path):

@@ -138,6 +138,34 @@ def test_a_recipe_runs_its_operations_in_order(tmp_path):
         meshstep.refine(SQUARE, SQUARE_SEGMENTS, recipe=text, min_angle=20)
 
 
+def test_a_recipe_gives_what_meshstep_run_gives_and_records_one_log(cli, tmp_path):
+    # A 5-degree wedge: both operations leave triangles at its tip alone, and the stats add
+    # up both operations' counts as the command line's do.
+    wedge = np.array([[0.0, 0.0], [10.0, 0.0], [10 * np.cos(np.radians(5)), 10 * np.sin(np.radians(5))]])
+    segments = np.array([[0, 1], [1, 2], [2, 0]])
+    text = "refine --min-angle 20\nrefine --min-angle 28 --max-area 0.5\n"
+    log = tmp_path / "chain.mslog"
+    mesh = meshstep.refine(wedge, segments, recipe=text, record=log)
+    poly = tmp_path / "wedge.poly"
+    poly.write_text("3 2 0 0\n" + "".join(f"{i + 1} {x!r} {y!r}\n" for i, (x, y) in enumerate(wedge.tolist())) +
+                    "3 0\n1 1 2\n2 2 3\n3 3 1\n0\n")
+    (tmp_path / "chain.recipe").write_text(text)
+    out = cli("run", tmp_path / "chain.recipe", poly, "--stats", "json", "-q", "-o", tmp_path / "c")
+    expected = json.loads(out.stdout.strip().splitlines()[-1])
+    first, xy, _ = read_node(tmp_path / "c.node")
+    assert np.array(xy).tolist() == mesh.vertices.tolist()
+    assert read_ele(tmp_path / "c.ele", first) == [tuple(t) for t in mesh.triangles.tolist()]
+    for key in ("skipped_small_angle", "steiner", "segment_splits", "below_min_angle", "bounds_met"):
+        assert mesh.stats[key] == expected[key], key
+    alone = meshstep.refine(wedge, segments, min_angle=20)
+    assert 0 < alone.stats["skipped_small_angle"] < mesh.stats["skipped_small_angle"]
+    # One log holds both operations and ends at the mesh returned.
+    cli("log", "verify", log)
+    cli("log", "mesh", log, "--step", "-1", "-o", tmp_path / "last")
+    first, xy, _ = read_node(tmp_path / "last.node")
+    assert np.array(xy).tolist() == mesh.vertices.tolist()
+
+
 def test_record_writes_a_log_the_command_line_verifies(cli, tmp_path):
     log = tmp_path / "run.mslog"
     mesh = meshstep.refine(SQUARE, SQUARE_SEGMENTS, min_angle=30, record=log)

@@ -1,6 +1,7 @@
 // Running the built `meshstep` binary from a test: its exit status and what it printed.
 #pragma once
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -8,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "temp_dir.hpp"
 
 namespace meshstep::testing {
 
@@ -51,6 +54,23 @@ inline CommandResult run_meshstep(const std::string& args, const std::filesystem
   r.err = slurp(err);
   return r;
 }
+
+// The fixture of a test that runs the meshstep binary: a scratch folder of its own, removed
+// afterwards, whose name holds the process id and a random number (TempDir), so that two
+// runs of the suite at once (two worktrees, ctest -j) never write into each other's files.
+class CliTest : public ::testing::Test {
+ protected:
+  explicit CliTest(const std::string& prefix = "meshstep_cli_") : dir_(prefix) {}
+
+  // meshstep ARGS (shell-quoted where needed), its output through files in the folder.
+  CommandResult meshstep(const std::string& args) const { return run_meshstep(args, dir_.path()); }
+  // A file in the folder written with `text`: its path.
+  std::string write(const std::string& name, const std::string& text) const { return dir_.write(name, text); }
+  // The path of `name` in the folder.
+  std::string file(const std::string& name) const { return dir_.file(name); }
+
+  TempDir dir_;
+};
 
 // Whether ffmpeg and ffprobe are installed and start. An installed ffmpeg can still fail to
 // start: CI once had one that could not load libblas.so.3. The video tests skip then, saying so.

@@ -2,12 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <sys/wait.h>
 
 #include "meshstep/io/triangle_io.hpp"
 #include "run_cli.hpp"
@@ -19,26 +15,8 @@ namespace fs = std::filesystem;
 
 using testing::CommandResult;
 
-CommandResult meshstep(const std::string& args, const fs::path& dir) { return testing::run_meshstep(args, dir); }
-
-class Cli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("meshstep_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
-  }
-
-  fs::path dir_;
-};
+// Each test in a folder of its own, named after the process (run_cli.hpp: CliTest).
+class Cli : public testing::CliTest {};
 
 constexpr const char* kSquareWithHole =
     "# square with a square hole\n"
@@ -49,47 +27,47 @@ constexpr const char* kSquareWithHole =
     "1\n1 2 2\n";
 
 TEST_F(Cli, HelpExitsZeroAndExplains) {
-  CommandResult r = meshstep("--help", dir_);
+  CommandResult r = meshstep("--help");
   EXPECT_EQ(r.status, 0);
   EXPECT_NE(r.out.find("triangulate"), std::string::npos);
   EXPECT_NE(r.out.find("Exit status"), std::string::npos);
-  r = meshstep("triangulate --help", dir_);
+  r = meshstep("triangulate --help");
   EXPECT_EQ(r.status, 0);
   for (const char* option : {"--ds", "--insertion", "--convex-hull", "--stats", "--no-output"})
     EXPECT_NE(r.out.find(option), std::string::npos) << option;
-  EXPECT_EQ(meshstep("check --help", dir_).status, 0);
+  EXPECT_EQ(meshstep("check --help").status, 0);
 }
 
 TEST_F(Cli, UsageErrorsExitTwo) {
-  EXPECT_EQ(meshstep("", dir_).status, 2);
-  EXPECT_EQ(meshstep("frobnicate", dir_).status, 2);
-  EXPECT_EQ(meshstep("triangulate", dir_).status, 2);
-  const CommandResult r = meshstep("triangulate x.poly --ds octree", dir_);
+  EXPECT_EQ(meshstep("").status, 2);
+  EXPECT_EQ(meshstep("frobnicate").status, 2);
+  EXPECT_EQ(meshstep("triangulate").status, 2);
+  const CommandResult r = meshstep("triangulate x.poly --ds octree");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("meshstep: error:"), std::string::npos) << r.err;
 }
 
 TEST_F(Cli, TriangulateWritesTriangleFilesWithDefaultPrefix) {
   const fs::path in = write("sq.poly", kSquareWithHole);
-  const CommandResult r = meshstep(in.string(), dir_);  // no subcommand: usage
+  const CommandResult r = meshstep(in.string());  // no subcommand: usage
   EXPECT_EQ(r.status, 2);
-  const CommandResult t = meshstep("triangulate " + in.string(), dir_);
+  const CommandResult t = meshstep("triangulate " + in.string());
   ASSERT_EQ(t.status, 0) << t.err;
-  for (const char* ext : {".node", ".ele", ".poly"}) EXPECT_TRUE(fs::exists(dir_ / (std::string("sq.1") + ext)));
-  const TriMesh m = io::read_mesh((dir_ / "sq.1").string());
+  for (const char* ext : {".node", ".ele", ".poly"}) EXPECT_TRUE(fs::exists(file(std::string("sq.1") + ext)));
+  const TriMesh m = io::read_mesh(file("sq.1"));
   EXPECT_EQ(m.triangles.size(), 8u);
   EXPECT_EQ(m.first_index, 1);  // numbering follows the input
   // Triangulating the output again gives the next number, as Triangle does.
-  EXPECT_EQ(meshstep("triangulate " + (dir_ / "sq.1.node").string() + " -q", dir_).status, 0);
-  EXPECT_TRUE(fs::exists(dir_ / "sq.2.ele"));
-  const CommandResult c = meshstep("check " + (dir_ / "sq.1").string() + " --poly " + in.string(), dir_);
+  EXPECT_EQ(meshstep("triangulate " + file("sq.1.node") + " -q").status, 0);
+  EXPECT_TRUE(fs::exists(file("sq.2.ele")));
+  const CommandResult c = meshstep("check " + file("sq.1") + " --poly " + in.string());
   EXPECT_EQ(c.status, 0) << c.err;
 }
 
 TEST_F(Cli, StatsJsonIsTheLastLine) {
   const fs::path in = write("sq.poly", kSquareWithHole);
   for (const char* config : {"--ds tds --insertion flip", "--ds dcel --insertion cavity"}) {
-    const CommandResult r = meshstep("triangulate " + in.string() + " --no-output --stats json " + config, dir_);
+    const CommandResult r = meshstep("triangulate " + in.string() + " --no-output --stats json " + config);
     ASSERT_EQ(r.status, 0) << r.err;
     std::string last = r.out.substr(0, r.out.size() - 1);
     last = last.substr(last.find_last_of('\n') + 1);
@@ -100,13 +78,13 @@ TEST_F(Cli, StatsJsonIsTheLastLine) {
                             "\"write\":"})
       EXPECT_NE(last.find(key), std::string::npos) << key << " in " << last;
   }
-  EXPECT_FALSE(fs::exists(dir_ / "sq.1.node"));  // --no-output
+  EXPECT_FALSE(fs::exists(file("sq.1.node")));  // --no-output
 }
 
 TEST_F(Cli, CheckFailsOnABrokenMesh) {
   write("bad.node", "4 2 0 0\n0 0 0\n1 1 0\n2 1 1\n3 0 1\n");
   write("bad.ele", "2 3 0\n0 0 1 2\n1 0 3 2\n");  // second triangle is clockwise
-  const CommandResult r = meshstep("check " + (dir_ / "bad").string(), dir_);
+  const CommandResult r = meshstep("check " + file("bad"));
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("clockwise"), std::string::npos) << r.err;
 }
@@ -127,12 +105,12 @@ TEST_F(Cli, MalformedInputsGiveFileLineErrors) {
   }};
   for (const auto& [name, text] : cases) {
     const fs::path in = write(name, text);
-    const CommandResult r = meshstep("triangulate " + in.string() + " -o " + (dir_ / "out").string(), dir_);
+    const CommandResult r = meshstep("triangulate " + in.string() + " -o " + file("out"));
     EXPECT_EQ(r.status, 1) << name << ": " << r.err;
     EXPECT_EQ(r.err.rfind("meshstep: error: " + in.string() + ":", 0), 0u) << name << ": " << r.err;
-    EXPECT_FALSE(fs::exists(dir_ / "out.node")) << name;
+    EXPECT_FALSE(fs::exists(file("out.node"))) << name;
   }
-  const CommandResult missing = meshstep("triangulate " + (dir_ / "nope.poly").string(), dir_);
+  const CommandResult missing = meshstep("triangulate " + file("nope.poly"));
   EXPECT_EQ(missing.status, 1);
 }
 

@@ -44,9 +44,9 @@ std::string unquoted(const std::string& s) {
   return s.size() >= 2 && s.front() == '"' ? s.substr(1, s.size() - 2) : s;
 }
 
-class CompareCli : public ::testing::Test {
+class CompareCli : public testing::CliTest {
  protected:
-  CommandResult meshstep(const std::string& args) const { return testing::run_meshstep(args, dir_.path()); }
+  CompareCli() : CliTest("meshstep_compare_cli_") {}
   // Records `algorithm` on `input` at `min_angle`; returns the log and the run's --stats json.
   std::pair<std::string, std::string> record(const std::string& input, const std::string& algorithm,
                                              const std::string& min_angle, const std::string& name) const {
@@ -56,7 +56,6 @@ class CompareCli : public ::testing::Test {
     EXPECT_EQ(r.status, 0) << r.err;
     return {log, stats_line(r.out)};
   }
-  testing::TempDir dir_{"meshstep_compare_cli_"};
 };
 
 // The issue's test: circumcenter and off-center logs of guitar.poly at 30 degrees; compare's

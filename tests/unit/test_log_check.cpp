@@ -333,10 +333,9 @@ TEST(LogCheckInvariants, Names) {
 // ---------------------------------------------------------------------------------------
 // The command line.
 
-class LogCheckCli : public ::testing::Test {
+class LogCheckCli : public testing::CliTest {
  protected:
-  CommandResult meshstep(const std::string& args) const { return testing::run_meshstep(args, dir_.path()); }
-  TempDir dir_{"meshstep_log_check_cli_"};
+  LogCheckCli() : CliTest("meshstep_log_check_cli_") {}
 };
 
 TEST_F(LogCheckCli, RecordedRunHolds) {

@@ -5,7 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <tuple>
 #include <filesystem>
 #include <fstream>
@@ -198,14 +201,44 @@ TEST(MeshFormats, GmshKeepsTrianglesByRegionAndSegmentsByMarkerAsPhysicalGroups)
   EXPECT_EQ(lines[std::pair(1, 2)], marker7);
 }
 
-// The text between <DataArray ... Name="NAME" ...> and </DataArray>, as numbers.
+// The value of attribute `key` in the XML tag that starts at `tag` ("" when absent).
+std::string xml_attribute(const std::string& text, std::size_t tag, const std::string& key) {
+  const std::size_t end = text.find('>', tag);
+  const std::size_t at = text.find(" " + key + "=\"", tag);
+  if (at == std::string::npos || at > end) return "";
+  const std::size_t start = at + key.size() + 3;
+  return text.substr(start, text.find('"', start) - start);
+}
+
+// The array NAME of a .vtu with appended raw data, as numbers: its <DataArray> gives its type
+// and offset, counted from the '_' that opens <AppendedData>; there a UInt64 byte count,
+// then the values, in the byte order the header names (this machine's).
 std::vector<double> vtu_array(const std::string& text, const std::string& name) {
-  const std::size_t at = text.find("Name=\"" + name + "\"");
-  if (at == std::string::npos) return {};
-  const std::size_t start = text.find('>', at) + 1;
-  std::istringstream in(text.substr(start, text.find("</DataArray>", start) - start));
+  const std::size_t tag = text.find("Name=\"" + name + "\"");
+  if (tag == std::string::npos) return {};
+  const std::size_t open = text.rfind("<DataArray", tag);
+  EXPECT_EQ(xml_attribute(text, open, "format"), "appended") << name;
+  const std::string type = xml_attribute(text, open, "type");
+  const std::size_t appended = text.find("<AppendedData encoding=\"raw\">");
+  EXPECT_NE(appended, std::string::npos);
+  const std::size_t base = text.find('_', appended) + 1;
+  std::size_t at = base + std::stoull(xml_attribute(text, open, "offset"));
+  const auto read = [&](auto v) {
+    EXPECT_LE(at + sizeof v, text.size()) << name;
+    std::memcpy(&v, text.data() + at, sizeof v);
+    at += sizeof v;
+    return v;
+  };
+  const std::uint64_t bytes = read(std::uint64_t{0});
   std::vector<double> v;
-  for (double x; in >> x;) v.push_back(x);
+  const std::size_t end = at + bytes;
+  while (at < end && at < text.size()) {
+    if (type == "Float64") v.push_back(read(0.0));
+    else if (type == "Int64") v.push_back(static_cast<double>(read(std::int64_t{0})));
+    else if (type == "Int32") v.push_back(read(std::int32_t{0}));
+    else if (type == "UInt8") v.push_back(read(std::uint8_t{0}));
+    else ADD_FAILURE() << name << ": type " << type;
+  }
   return v;
 }
 
@@ -216,6 +249,9 @@ TEST(MeshFormats, VtuHasTheTrianglesAndTheirRegionAngleAndQuality) {
   io::write_vtu(path, m);
   const std::string text = slurp(path);
   EXPECT_NE(text.find("<VTKFile type=\"UnstructuredGrid\""), std::string::npos);
+  const std::string order = std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
+  EXPECT_NE(text.find("byte_order=\"" + order + "\" header_type=\"UInt64\""), std::string::npos);
+  EXPECT_TRUE(text.ends_with("\n  </AppendedData>\n</VTKFile>\n"));
   const auto points = vtu_array(text, "points"), connectivity = vtu_array(text, "connectivity"),
              offsets = vtu_array(text, "offsets"), types = vtu_array(text, "types"), region = vtu_array(text, "region"),
              angle = vtu_array(text, "min_angle"), q = vtu_array(text, "quality"), marker = vtu_array(text, "marker");

@@ -39,7 +39,7 @@ std::vector<std::string> lines_of(const std::string& text) {
   return out;
 }
 
-class OneNumbering : public ::testing::Test {
+class OneNumbering : public testing::CliTest {
  protected:
   void SetUp() override {
     log_ = dir_.file("lesson.mslog");
@@ -49,10 +49,8 @@ class OneNumbering : public ::testing::Test {
     n_ = replay::LogReader(log_).step_count();
     ASSERT_GT(n_, 10u);
   }
-  CommandResult meshstep(const std::string& args) { return run_meshstep(args, dir_.path()); }
   std::string k(std::uint64_t v) const { return std::to_string(v); }
 
-  TempDir dir_;
   std::string log_;
   std::uint64_t n_ = 0;
 };

@@ -217,6 +217,23 @@ TEST(PolygonIo, MalformedWktIsRefusedAtItsLine) {
   for (const Malformed& m : cases) expect_refused(m);
 }
 
+// The two readers share one number scanner: the same numbers read the same, in either
+// syntax. An underflow is 0 (as strtod rounds it) in both; an overflow is refused in both.
+TEST(PolygonIo, WktAndGeoJsonReadTheSameNumbers) {
+  TempDir dir;
+  const Pslg w = read(dir, "n.wkt", "POLYGON ((0 0, 2 1e-400, 4 0, 0.5e1 +5E-1, -0 4, 0 0))");
+  const Pslg j = read(dir, "n.geojson", R"({"type": "Polygon", "coordinates": [
+    [[0,0],[2,1e-400],[4,0],[0.5e1,5E-1],[-0,4],[0,0]]]})");
+  ASSERT_EQ(w.points.size(), j.points.size());
+  for (std::size_t i = 0; i < w.points.size(); ++i) {
+    EXPECT_EQ(w.points[i].x, j.points[i].x) << i;
+    EXPECT_EQ(w.points[i].y, j.points[i].y) << i;
+  }
+  EXPECT_NE(std::find(w.points.begin(), w.points.end(), Point{5, 0.5}), w.points.end());
+  EXPECT_NE(std::find(w.points.begin(), w.points.end(), Point{2, 0}), w.points.end());
+  expect_refused({"huge.wkt", "POLYGON ((0 0,\n1e999 0, 1 1, 0 0))", 2, "expected a finite number"});
+}
+
 }  // namespace
 }  // namespace meshstep
 

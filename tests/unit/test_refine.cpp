@@ -293,6 +293,38 @@ TEST(RefineGenerated, SharpWedgeTerminatesAndExplainsTheMiss) {
   EXPECT_GT(report.bad_near_small_input_angle, 0u);
 }
 
+// A chain on the 5-degree wedge: both operations leave triangles at the wedge's tip alone by
+// rule, and the run's report adds up what each one did (the command line's copy once kept
+// only the first operation's skipped triangles, the Python module's only the last's), while
+// its word on the final mesh is the last operation's.
+TEST(RefineChain, TheCombinedReportAddsEachOperationsCounts) {
+  Pslg in;
+  const double a = 5.0 * std::numbers::pi / 180.0;
+  in.points = {{0, 0}, {10, 0}, {10 * std::cos(a), 10 * std::sin(a)}};
+  in.segments = {{0, 1, 1}, {1, 2, 1}, {2, 0, 1}};
+  std::vector<RefineOptions> ops(2);
+  ops[0].criteria.min_angle_deg = 20.0;
+  ops[1].criteria.min_angle_deg = 28.0;
+  ops[1].criteria.max_area = 0.5;
+  std::vector<RefineReport> reports(2);
+  const TriMesh m = refine_chain(in, ops, reports);
+  ASSERT_GT(reports[0].skipped_small_angle, 0u);
+  ASSERT_GT(reports[1].skipped_small_angle, 0u);
+  ASSERT_GT(reports[1].steiner_vertices, 0u);
+  const RefineReport total = combined_report(reports);
+  EXPECT_EQ(total.skipped_small_angle, reports[0].skipped_small_angle + reports[1].skipped_small_angle);
+  EXPECT_EQ(total.steiner_vertices, reports[0].steiner_vertices + reports[1].steiner_vertices);
+  EXPECT_EQ(total.segment_splits, reports[0].segment_splits + reports[1].segment_splits);
+  EXPECT_EQ(in.points.size() + total.steiner_vertices - total.removed_vertices, m.points.size());
+  EXPECT_EQ(total.triangulation.triangles, reports[0].triangulation.triangles);
+  EXPECT_EQ(total.below_min_angle, reports[1].below_min_angle);
+  EXPECT_EQ(total.bad_triangles, reports[1].bad_triangles);
+  ASSERT_EQ(total.phase_ms.size(), 2u);
+  EXPECT_EQ(total.phase_ms[0].first, "refine");
+  EXPECT_EQ(total.phase_ms[1].first, "2:refine");
+  EXPECT_EQ(combined_report({}).steiner_vertices, 0u);
+}
+
 // Two segments crossing at 6 degrees (the geometry of earcut_water-huge near (4096.33, 2565)):
 // the crossing is a vertex the triangulation adds, and its four small angles need concentric
 // shells round it as much as an input corner does. Splitting at midpoints there, every

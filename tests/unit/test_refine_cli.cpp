@@ -67,12 +67,9 @@ double json_number(const std::string& json, const std::string& key) {
   return v.empty() ? NAN : std::strtod(v.c_str(), nullptr);
 }
 
-class RefineCli : public ::testing::Test {
+class RefineCli : public testing::CliTest {
  protected:
-  CommandResult meshstep(const std::string& args) const { return testing::run_meshstep(args, dir_.path()); }
-  std::string write(const std::string& name, const std::string& text) const { return dir_.write(name, text); }
-
-  testing::TempDir dir_{"meshstep_refine_cli_"};
+  RefineCli() : CliTest("meshstep_refine_cli_") {}
 };
 
 // Both inputs, with both algorithms and both data structures and insertions: 30 degrees is

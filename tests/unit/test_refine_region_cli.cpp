@@ -76,10 +76,9 @@ Outcome outcome(const TriMesh& m, const RefineRegion& region) {
   return o;
 }
 
-class RefineRegionCli : public ::testing::Test {
+class RefineRegionCli : public testing::CliTest {
  protected:
-  CommandResult meshstep(const std::string& args) const { return testing::run_meshstep(args, dir_.path()); }
-  std::string write(const std::string& name, const std::string& text) const { return dir_.write(name, text); }
+  RefineRegionCli() : CliTest("meshstep_refine_region_cli_") {}
 
   // Refines `input` with `options` into `prefix` and checks the outcome in `region`.
   void expect_refined_in(const std::string& input, const std::string& options, const std::string& prefix,
@@ -91,8 +90,6 @@ class RefineRegionCli : public ::testing::Test {
     EXPECT_EQ(o.bad_inside, 0u);
     EXPECT_GT(o.bad_outside, 5u);
   }
-
-  testing::TempDir dir_{"meshstep_refine_region_cli_"};
 };
 
 TEST_F(RefineRegionCli, ABoxOrAPolygonOnEveryStructure) {

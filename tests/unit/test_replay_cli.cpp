@@ -45,10 +45,9 @@ long long number_after(const std::string& text, const std::string& before) {
   return value;
 }
 
-class ReplayCli : public ::testing::Test {
+class ReplayCli : public testing::CliTest {
  protected:
-  // Runs the meshstep binary with `args` (paths here contain no spaces or shell syntax).
-  CommandResult meshstep(const std::string& args) const { return testing::run_meshstep(args, dir_.path()); }
+  ReplayCli() : CliTest("meshstep_replay_cli_") {}
 
   // Records the example plate into LOG with its mesh written to PREFIX.*.
   void record_plate() {
@@ -59,7 +58,6 @@ class ReplayCli : public ::testing::Test {
     ASSERT_TRUE(fs::exists(prefix_ + ".ele"));
   }
 
-  testing::TempDir dir_{"meshstep_replay_cli_"};
   const std::string plate_ = std::string(MESHSTEP_ASSETS) + "/examples/plate.poly";
   const std::string log_ = dir_.file("plate.mslog");
   const std::string prefix_ = dir_.file("plate");

@@ -33,11 +33,9 @@ double area_of(const TriMesh& m, const std::array<std::uint32_t, 3>& t) {
   return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
 }
 
-class RunRecipeCli : public ::testing::Test {
+class RunRecipeCli : public testing::CliTest {
  protected:
-  CommandResult meshstep(const std::string& args) const { return testing::run_meshstep(args, dir_.path()); }
-  std::string write(const std::string& name, const std::string& text) const { return dir_.write(name, text); }
-  testing::TempDir dir_{"meshstep_run_recipe_cli_"};
+  RunRecipeCli() : CliTest("meshstep_run_recipe_cli_") {}
 };
 
 // Lepp-centroid to 25 degrees everywhere, then an area bound in a box: the area bound holds
@@ -73,6 +71,29 @@ TEST_F(RunRecipeCli, AChainsSecondBoundHoldsInItsRegionOnly) {
   const std::string first = write("first.recipe", "refine --algorithm lepp-centroid --min-angle 25 --max-area 2\n");
   ASSERT_EQ(meshstep("run " + first + " " + input + " -q -o " + dir_.file("first")).status, 0);
   EXPECT_LT(io::read_mesh(dir_.file("first")).triangles.size() + 100, m.triangles.size());
+}
+
+// A 5-degree wedge, whose tip no refinement can fix: every operation leaves triangles there.
+constexpr const char* kWedge =
+    "# a 5-degree wedge\n"
+    "3 2 0 0\n1 0 0\n2 10 0\n3 9.961946980917455 0.8715574274765817\n"
+    "3 0\n1 1 2\n2 2 3\n3 3 1\n"
+    "0\n";
+
+// The run's --stats json counts what every operation did: the triangles left alone at a small
+// input angle too (the command line once reported only the first operation's).
+TEST_F(RunRecipeCli, TheStatsAddUpTheSkippedTrianglesOfEveryOperation) {
+  const std::string input = write("wedge.poly", kWedge);
+  const auto skipped = [&](const std::string& recipe_text) {
+    const std::string recipe = write("r.recipe", recipe_text);
+    const CommandResult r = meshstep("run " + recipe + " " + input + " -o " + dir_.file("out") + " --stats json -q");
+    EXPECT_EQ(r.status, 0) << r.err;
+    return std::stoul(testing::json_field(testing::stats_line(r.out), "skipped_small_angle"));
+  };
+  const unsigned long first = skipped("refine --min-angle 20\n");
+  const unsigned long both = skipped("refine --min-angle 20\nrefine --min-angle 28 --max-area 0.5\n");
+  EXPECT_GT(first, 0u);
+  EXPECT_GT(both, first);
 }
 
 // `meshstep refine` is a recipe of one operation: the same files, byte for byte, the log too.

@@ -9,7 +9,9 @@ import numpy as np
 
 from . import _meshstep
 
-__all__ = ["Log", "Svg"]
+__all__ = ["Log", "Svg", "Picture", "GlUnavailable", "render"]
+
+GlUnavailable = _meshstep.GlUnavailable
 
 
 class Svg(str):
@@ -17,6 +19,14 @@ class Svg(str):
 
     def _repr_svg_(self) -> str:
         return str(self)
+
+
+class Picture(np.ndarray):
+    """An RGB picture: a (height, width, 3) uint8 numpy array, rows top to bottom, that
+    Jupyter shows as a PNG."""
+
+    def _repr_png_(self) -> bytes:
+        return _meshstep.png_bytes(np.ascontiguousarray(self))
 
 
 class Log:
@@ -80,9 +90,35 @@ class Log:
         heading, lines = self._log.explain(step)
         return "\n".join([heading, *lines])
 
-    def render(self, step: int = -1, size: Union[int, tuple] = (800, 600)) -> Svg:
-        """The moment after ``step`` steps drawn as SVG (the mesh, and the overlays that explain
-        the step just taken), as ``meshstep render --format svg`` draws it. Shown as a picture
-        in Jupyter. (An RGB array needs the OpenGL renderer, which the module does not link.)"""
-        width, height = (size, size) if isinstance(size, int) else size
-        return Svg(self._log.svg(step, int(width), int(height)))
+    def render(self, step: int = -1, size: Union[int, tuple] = (800, 600), gl: str = "auto") -> Picture:
+        """The moment after ``step`` steps (the mesh, and the overlays that explain the step
+        just taken) drawn by meshstep's OpenGL renderer off screen, as ``meshstep render -o
+        OUT.png`` draws it: a ``Picture``, an RGB numpy array of shape (height, width, 3),
+        uint8, shown as a PNG in Jupyter. ``size`` is (width, height) or one number for
+        both; ``gl`` is ``'auto'``, ``'egl'`` or ``'osmesa'`` (``meshstep render --gl``).
+
+        Needs OpenGL 3.3 through EGL or OSMesa (Debian: libegl1 and a Mesa driver, or
+        libosmesa6): without, raises ``GlUnavailable`` (a ``RuntimeError``) saying what was
+        tried; ``svg()`` draws the same moment with no GL at all."""
+        width, height = _size(size)
+        if gl not in ("auto", "egl", "osmesa"):
+            raise ValueError(f"gl: expected 'auto', 'egl' or 'osmesa', not {gl!r}")
+        return self._log.rgb(step, width, height, gl).view(Picture)
+
+    def svg(self, step: int = -1, size: Union[int, tuple] = (800, 600)) -> Svg:
+        """The moment after ``step`` steps drawn as SVG, as ``meshstep render -o OUT.svg``
+        draws it; needs no OpenGL. Shown as a picture in Jupyter."""
+        width, height = _size(size)
+        return Svg(self._log.svg(step, width, height))
+
+
+def render(log: Union["Log", str, "os.PathLike[str]"], step: int = -1, size: Union[int, tuple] = (800, 600),
+           gl: str = "auto") -> Picture:
+    """``Log(log).render(step, size, gl)``: the moment after ``step`` steps of a recorded run
+    as an RGB numpy array (height, width, 3); raises ``GlUnavailable`` without OpenGL."""
+    return (log if isinstance(log, Log) else Log(log)).render(step, size, gl)
+
+
+def _size(size: Union[int, tuple]) -> tuple:
+    width, height = (size, size) if isinstance(size, int) else size
+    return int(width), int(height)

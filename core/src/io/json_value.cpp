@@ -2,18 +2,14 @@
 // depth limit.
 #include "io/json_value.hpp"
 
-#include <charconv>
-#include <cmath>
-#include <cstdio>
-
-#include "meshstep/error.hpp"
+#include "io/text_scanner.hpp"
 
 namespace meshstep::io::detail {
 namespace {
 
-class Parser {
+class Parser : TextScanner {
  public:
-  Parser(const std::string& file, std::string_view text) : file_(file), text_(text) {}
+  using TextScanner::TextScanner;
 
   JsonValue document() {
     JsonValue v = value(0);
@@ -23,35 +19,6 @@ class Parser {
   }
 
  private:
-  [[noreturn]] void fail(const std::string& message) const { throw InputError(file_, line_, message); }
-
-  std::string describe_here() const {
-    if (pos_ >= text_.size()) return "end of file";
-    const unsigned char c = static_cast<unsigned char>(text_[pos_]);
-    if (c >= 0x21 && c < 0x7F) return std::string("'") + static_cast<char>(c) + "'";
-    char buffer[16];
-    std::snprintf(buffer, sizeof buffer, "byte 0x%02X", c);
-    return buffer;
-  }
-
-  void skip_space() {
-    while (pos_ < text_.size()) {
-      const char c = text_[pos_];
-      if (c == '\n') ++line_;
-      else if (c != ' ' && c != '\t' && c != '\r') return;
-      ++pos_;
-    }
-  }
-
-  bool take(char c) {
-    skip_space();
-    if (pos_ < text_.size() && text_[pos_] == c) {
-      ++pos_;
-      return true;
-    }
-    return false;
-  }
-
   void expect_word(std::string_view word) {
     if (text_.substr(pos_, word.size()) != word) fail("unexpected " + describe_here() + ": expected a JSON value");
     pos_ += word.size();
@@ -103,45 +70,10 @@ class Parser {
       expect_word("null");
     } else if (c == '-' || (c >= '0' && c <= '9')) {
       v.kind = JsonValue::Kind::number;
-      v.number = number();
+      v.number = json_number();
     } else {
       fail("unexpected " + describe_here() + ": expected a JSON value");
     }
-    return v;
-  }
-
-  bool digit_at(std::size_t i) const { return i < text_.size() && text_[i] >= '0' && text_[i] <= '9'; }
-
-  double number() {
-    const std::size_t start = pos_;
-    std::size_t i = pos_;
-    if (text_[i] == '-') ++i;
-    if (!digit_at(i)) fail("a number needs a digit after its '-'");
-    if (text_[i] == '0' && digit_at(i + 1)) fail("a number may not start with 0 followed by digits");
-    while (digit_at(i)) ++i;
-    if (i < text_.size() && text_[i] == '.') {
-      if (!digit_at(++i)) fail("a number needs a digit after its '.'");
-      while (digit_at(i)) ++i;
-    }
-    if (i < text_.size() && (text_[i] == 'e' || text_[i] == 'E')) {
-      ++i;
-      if (i < text_.size() && (text_[i] == '+' || text_[i] == '-')) ++i;
-      if (!digit_at(i)) fail("a number needs a digit in its exponent");
-      while (digit_at(i)) ++i;
-    }
-    double v = 0.0;
-    const auto [end, ec] = std::from_chars(text_.data() + start, text_.data() + i, v);
-    // Out of range: from_chars leaves v alone; an overflow is infinite, an underflow 0.
-    if (ec == std::errc::result_out_of_range) {
-      const std::string_view digits = text_.substr(start, i - start);
-      const std::size_t e = digits.find_first_of("eE");
-      const bool tiny = e != std::string_view::npos && digits.substr(e + 1).starts_with('-');
-      if (!tiny) fail("the number " + std::string(digits) + " is too large for a double");
-      v = 0.0;
-    } else if (ec != std::errc() || end != text_.data() + i) {
-      fail("bad number");
-    }
-    pos_ = i;
     return v;
   }
 
@@ -218,10 +150,6 @@ class Parser {
     }
   }
 
-  const std::string& file_;
-  std::string_view text_;
-  std::size_t pos_ = 0;
-  std::size_t line_ = 1;
 };
 
 }  // namespace

@@ -2,11 +2,9 @@
 // features), as rings for pslg_from_rings. Other geometries are skipped with a warning;
 // GEOMETRYCOLLECTIONs are looked into.
 #include <cctype>
-#include <charconv>
-#include <cmath>
-#include <cstdio>
 #include <string_view>
 
+#include "io/text_scanner.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/mapped_file.hpp"
 #include "meshstep/io/polygon_io.hpp"
@@ -17,10 +15,10 @@ namespace {
 
 constexpr std::size_t kMaxDepth = 64;  // GEOMETRYCOLLECTIONs in GEOMETRYCOLLECTIONs
 
-class WktReader {
+class WktReader : detail::TextScanner {
  public:
   WktReader(const std::string& file, std::string_view text, std::vector<std::string>* warnings)
-      : file_(file), text_(text), warnings_(warnings) {}
+      : TextScanner(file, text), warnings_(warnings) {}
 
   // Geometries one after another, separated by white space (or ';').
   std::vector<PolygonRing> read() {
@@ -37,44 +35,8 @@ class WktReader {
   }
 
  private:
-  [[noreturn]] void fail(const std::string& message) const { throw InputError(file_, line_, message); }
-
-  std::string here() const {
-    if (pos_ >= text_.size()) return "end of file";
-    const unsigned char c = static_cast<unsigned char>(text_[pos_]);
-    if (c >= 0x21 && c < 0x7F) {
-      std::size_t end = pos_ + 1;
-      if (std::isalnum(c) || c == '-' || c == '+' || c == '.')
-        while (end < text_.size() && end - pos_ < 24 &&
-               (std::isalnum(static_cast<unsigned char>(text_[end])) || text_[end] == '.' || text_[end] == '-' ||
-                text_[end] == '+'))
-          ++end;
-      return "'" + std::string(text_.substr(pos_, end - pos_)) + "'";
-    }
-    char buffer[16];
-    std::snprintf(buffer, sizeof buffer, "byte 0x%02X", c);
-    return buffer;
-  }
-
-  void skip_space() {
-    while (pos_ < text_.size()) {
-      const char c = text_[pos_];
-      if (c == '\n') ++line_;
-      else if (c != ' ' && c != '\t' && c != '\r') return;
-      ++pos_;
-    }
-  }
-
-  bool take(char c) {
-    skip_space();
-    if (pos_ < text_.size() && text_[pos_] == c) {
-      ++pos_;
-      return true;
-    }
-    return false;
-  }
   void expect(char c, const char* what) {
-    if (!take(c)) fail("unexpected " + here() + ": expected " + what);
+    if (!take(c)) fail("unexpected " + describe_here(true) + ": expected " + what);
   }
 
   // A word in upper case ("" when none starts here).
@@ -86,23 +48,7 @@ class WktReader {
     return w;
   }
 
-  double number() {
-    skip_space();
-    const std::size_t start = pos_;
-    while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '.' ||
-                                   text_[pos_] == '-' || text_[pos_] == '+'))
-      ++pos_;
-    const std::string_view token = text_.substr(start, pos_ - start);
-    double v = 0.0;
-    const char* first = token.data();
-    if (!token.empty() && token[0] == '+') ++first;  // from_chars takes no '+'
-    const auto [end, ec] = std::from_chars(first, token.data() + token.size(), v);
-    if (token.empty() || ec != std::errc() || end != token.data() + token.size() || !std::isfinite(v)) {
-      pos_ = start;
-      fail("unexpected " + here() + ": expected a finite number");
-    }
-    return v;
-  }
+  double number() { return decimal_token(); }
 
   void geometry(std::size_t depth) {
     if (depth > kMaxDepth) fail("GEOMETRYCOLLECTIONs nested deeper than " + std::to_string(kMaxDepth) + " levels");
@@ -113,7 +59,7 @@ class WktReader {
       expect(';', "';' after SRID=N");
       type = word();
     }
-    if (type.empty()) fail("unexpected " + here() + ": expected a geometry such as POLYGON or MULTIPOLYGON");
+    if (type.empty()) fail("unexpected " + describe_here(true) + ": expected a geometry such as POLYGON or MULTIPOLYGON");
     const std::size_t line = line_;
     std::string modifier = word();  // Z, M, ZM, or the EMPTY after them
     if (modifier == "Z" || modifier == "M" || modifier == "ZM") modifier = word();
@@ -189,11 +135,7 @@ class WktReader {
     expect(')', "',' or ')' in a polygon");
   }
 
-  const std::string& file_;
-  std::string_view text_;
   std::vector<std::string>* warnings_;
-  std::size_t pos_ = 0;
-  std::size_t line_ = 1;
   std::vector<PolygonRing> rings_;
 };
 

@@ -22,7 +22,7 @@ namespace meshstep::io {
 // group, named "region ATTRIBUTE" or "marker M" in $PhysicalNames.
 void write_gmsh(const std::string& path, const TriMesh& mesh);
 
-// VTK's XML UnstructuredGrid (.vtu), ASCII. Triangles are cells of type 5 (VTK_TRIANGLE);
+// VTK's XML UnstructuredGrid (.vtu), its arrays binary (appended raw data). Triangles are cells of type 5 (VTK_TRIANGLE);
 // cell data: region (the attribute, 0 without one), min_angle (degrees) and quality (min
 // angle / 60: 1 for an equilateral triangle); point data: marker (0 without markers).
 void write_vtu(const std::string& path, const TriMesh& mesh);

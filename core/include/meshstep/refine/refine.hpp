@@ -183,6 +183,14 @@ TriMesh refine_chain(Pslg input, std::span<const RefineOptions> operations, std:
 TriMesh refine_mesh_chain(const TriMesh& mesh, std::vector<RefineOptions> operations,
                           std::span<RefineReport> reports, const std::function<void(std::size_t)>& before = {});
 
+// The run's report from refine_chain's reports, one per operation: the counts and the
+// times summed (the first report holds the triangulation's), the phases of the operations
+// after the first named after their operation ("2:refine"), and the assessment of the mesh
+// at the end (bounds met, triangles left bad, the region's triangles, a cap reached) the
+// last operation's, since it is the mesh the run leaves. `meshstep run` and the Python
+// module report a chain with it. An empty span gives an empty report.
+RefineReport combined_report(std::span<const RefineReport> reports);
+
 // The angle apb from which a point p encroaches on segment ab under Encroachment::lens:
 // 180 - 2 theta for the angle bound theta, no more than the largest angle the other shape
 // bounds allow; 90 (the diametral circle) without an angle bound, and at least 90.

@@ -1,17 +1,17 @@
-#include "painter.hpp"
+#include "render/painter.hpp"
 
 #include "render/renderer.hpp"
 
-namespace meshstep::app {
+namespace meshstep::render {
 
 struct Painter::Impl {
-  std::unique_ptr<render::GlContext> context;
-  std::unique_ptr<render::Renderer> renderer;
+  std::unique_ptr<GlContext> context;
+  std::unique_ptr<Renderer> renderer;
 };
 
 Painter::Painter(const std::string& backend) : impl_(std::make_unique<Impl>()) {
-  impl_->context = render::make_offscreen_context(backend);
-  impl_->renderer = std::make_unique<render::Renderer>();
+  impl_->context = make_offscreen_context(backend);
+  impl_->renderer = std::make_unique<Renderer>();
 }
 
 Painter::~Painter() {
@@ -21,7 +21,7 @@ Painter::~Painter() {
 }
 
 void Painter::paint(const scene::Scene& scene, const scene::Camera& camera, int samples, scene::Image& image) {
-  impl_->renderer->render(scene, camera, samples > 0 ? samples : render::kDefaultSamples);
+  impl_->renderer->render(scene, camera, samples > 0 ? samples : kDefaultSamples);
   impl_->renderer->read_pixels(image);
 }
 
@@ -29,4 +29,4 @@ std::string Painter::description() const {
   return std::string(impl_->context->name()) + ": " + impl_->context->describe();
 }
 
-}  // namespace meshstep::app
+}  // namespace meshstep::render

@@ -1,6 +1,7 @@
 // Pictures of scenes as pixels, drawn by the OpenGL renderer in an off-screen context
-// (EGL surfaceless or OSMesa). Where no OpenGL can be had, opening one throws
-// GlUnavailable saying why; SVG needs none of this.
+// (EGL surfaceless or OSMesa), for the commands that write PNGs and for the Python module's
+// RGB arrays. Where no OpenGL can be had, opening one throws GlUnavailable saying why; SVG
+// needs none of this.
 #pragma once
 
 #include <memory>
@@ -12,9 +13,7 @@
 #include "meshstep/scene/scene.hpp"
 #include "render/gl_context.hpp"
 
-namespace meshstep::app {
-
-using render::GlUnavailable;
+namespace meshstep::render {
 
 class Painter {
  public:
@@ -40,4 +39,4 @@ class Painter {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace meshstep::app
+}  // namespace meshstep::render
