@@ -5,10 +5,12 @@
 #include <cstdio>
 
 #include "imgui_gl.hpp"
+#include "edit_canvas.hpp"
 #include "keys.hpp"
 #include "meshstep/scene/layout.hpp"
 #include "panel_style.hpp"
 #include "ui_look.hpp"
+#include "workbench_host.hpp"
 
 namespace meshstep::viewer {
 
@@ -381,6 +383,8 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
     opaque_image(texture_id(renderer_.texture()), ImVec2(w, h));
   }
   const bool canvas_hovered = ImGui::IsItemHovered();
+  // Edit mode (edit_canvas.hpp): the left button edits, the middle one pans.
+  const bool editing = workbench && workbench->editing && !view3d_.on();
   if (worker_ && worker_->drawing()) draw_drawing_badge(x, y);
   if (notice_shown()) draw_notice(x, y);
 
@@ -398,7 +402,7 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
       camera_changed_by_hand();
     }
     const bool moved = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f;
-    if (moved && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
+    if (moved && ImGui::IsMouseDragging(editing ? ImGuiMouseButton_Middle : ImGuiMouseButton_Left, 0.0f)) {
       // Dragging right turns the near side of the surface right; down looks more from above.
       if (in_3d) {
         turn_orbit(-kDegreesPerPixel * io.MouseDelta.x, kDegreesPerPixel * io.MouseDelta.y);
@@ -415,7 +419,7 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
     // Hover: looked up again only when the pointer moves, and not in huge meshes (a scan).
     if (moved && session_->scene().mesh.triangles.size() <= 200000) pick_under(at, hovered_);
     // A click (pressed and released without a drag) selects.
-    if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f) {
+    if (!editing && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f) {
       if (in_3d) {
         Picked picked;
         pick_under(at, picked);
@@ -428,6 +432,7 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
     hovered_ = {};
   }
   draw_selection_overlay(x, y);
+  if (editing) edit_canvas(*workbench, camera_, x, y, canvas_hovered);
   ImGui::End();
   ImGui::PopStyleVar(2);
 }

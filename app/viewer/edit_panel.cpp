@@ -1,0 +1,99 @@
+#include "edit_panel.hpp"
+
+#include <imgui.h>
+
+#include <cstring>
+
+#include "edit_keys.hpp"
+#include "viewer.hpp"
+#include "workbench_host.hpp"
+
+namespace meshstep::viewer {
+
+void draw_edit_panel(Viewer& v) {
+  WorkbenchHost* host = v.workbench;
+  if (!host) return;
+  if (!host->editing) {
+    if (ImGui::SmallButton("Edit (E)")) edit_key(v, EditKey::toggle);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("New (Ctrl+N)")) edit_key(v, EditKey::new_input);
+    return;
+  }
+  Workbench& bench = *host->bench();
+  const PslgEditor& e = bench.editor();
+  const Pslg& in = e.input();
+  if (!ImGui::CollapsingHeader("Edit the input", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (ImGui::SmallButton("Stop editing (E)")) edit_key(v, EditKey::toggle);
+  ImGui::SameLine();
+  if (ImGui::SmallButton("New")) edit_key(v, EditKey::new_input);
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!e.can_undo());
+  if (ImGui::SmallButton("Undo")) host->undo();
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!e.can_redo());
+  if (ImGui::SmallButton("Redo")) host->redo();
+  ImGui::EndDisabled();
+
+  EditCanvasState& st = host->tool;
+  int tool = static_cast<int>(st.tool);
+  ImGui::TextUnformatted("A click on empty canvas makes a:");
+  for (int t = 0; t <= static_cast<int>(EditTool::region); ++t) {
+    if (t > 0) ImGui::SameLine();
+    if (ImGui::RadioButton(name(static_cast<EditTool>(t)), &tool, t)) {
+      st.chain_first.reset();
+      st.chain_last.reset();
+    }
+  }
+  st.tool = static_cast<EditTool>(tool);
+  ImGui::Checkbox("snap to grid", &st.grid);
+  ImGui::TextDisabled("drag: move; right click: delete; middle drag: pan");
+  ImGui::Text("%zu vertices, %zu segments, %zu holes, %zu regions", in.points.size(), in.segments.size(),
+              in.holes.size(), in.regions.size());
+  if (bench.recipe().empty()) ImGui::TextUnformatted("recipe: the triangulation alone");
+  for (const std::string& line : bench.recipe_lines()) ImGui::TextWrapped("recipe: %s", line.c_str());
+  ImGui::Text("mesh: %zu triangles, made in %.1f ms", bench.mesh_triangles(), bench.remesh_ms());
+  for (const InputNotice& n : bench.notices())
+    ImGui::TextColored(n.refused ? ImVec4(0.85f, 0.0f, 0.0f, 1.0f) : ImVec4(0.8f, 0.45f, 0.0f, 1.0f), "%s%s",
+                       n.refused ? "refused (the last good mesh stays): " : "", n.text.c_str());
+  if (!host->message.empty()) ImGui::TextWrapped("%s", host->message.c_str());
+
+  // The region point's form: the selected one's values, else the next one's.
+  const bool region_selected = st.selected && st.selected->kind == InputElement::region &&
+                               st.selected->index < in.regions.size();
+  double attribute = region_selected ? in.regions[st.selected->index].attribute : st.region_attribute;
+  double max_area = region_selected ? in.regions[st.selected->index].max_area : st.region_max_area;
+  ImGui::TextUnformatted(region_selected ? "Selected region point:" : "Next region point:");
+  bool changed = ImGui::InputDouble("attribute", &attribute, 0.0, 0.0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue);
+  changed |= ImGui::InputDouble("max area (<= 0: none)", &max_area, 0.0, 0.0, "%.6g",
+                                ImGuiInputTextFlags_EnterReturnsTrue);
+  if (changed) {
+    if (region_selected) {
+      Region r = in.regions[st.selected->index];
+      r.attribute = attribute;
+      r.max_area = max_area;
+      try {
+        bench.editor().set_region(st.selected->index, r);
+      } catch (const EditRefused& x) {
+        host->say(x.what());
+      }
+    } else {
+      st.region_attribute = attribute;
+      st.region_max_area = max_area;
+    }
+  }
+
+  if (ImGui::SmallButton("Save (Ctrl+S)")) edit_key(v, EditKey::save);
+  static char save_as[512] = "";
+  ImGui::SetNextItemWidth(-80.0f);
+  const bool entered = ImGui::InputText("##saveas", save_as, sizeof save_as, ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  if ((ImGui::SmallButton("Save as") || entered) && save_as[0] != '\0') {
+    const std::size_t n = std::strlen(save_as);
+    if (n < 5 || std::strcmp(save_as + n - 5, ".poly") != 0) host->say("Save as: the name must end in .poly");
+    else v.notify(host->save(save_as));
+  }
+  ImGui::Separator();
+}
+
+}  // namespace meshstep::viewer
