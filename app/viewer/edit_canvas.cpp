@@ -13,6 +13,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -126,6 +127,10 @@ void edit_canvas(WorkbenchHost& host, const scene::Camera& camera, float x, floa
     }
     const char* text = n.text.c_str();
     const ImVec2 size = ImGui::CalcTextSize(text, text + n.text.size(), false, 420.0f);
+    // An element out of view: its words stay on the canvas, at the nearest edge.
+    const ImVec2 canvas_max(x + static_cast<float>(camera.width()), y + static_cast<float>(camera.height()));
+    at.x = std::clamp(at.x, x + 4.0f, std::max(x + 4.0f, canvas_max.x - size.x - 8.0f));
+    at.y = std::clamp(at.y, y + 30.0f, std::max(y + 30.0f, canvas_max.y - size.y - 8.0f));
     draw.AddRectFilled(ImVec2(at.x - 3, at.y - 2), ImVec2(at.x + size.x + 3, at.y + size.y + 2), IM_COL32(255, 255, 255, 235));
     draw.AddRect(ImVec2(at.x - 3, at.y - 2), ImVec2(at.x + size.x + 3, at.y + size.y + 2), colour);
     draw.AddText(nullptr, 0.0f, at, colour, text, text + n.text.size(), 420.0f);

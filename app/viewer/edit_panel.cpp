@@ -53,9 +53,11 @@ void draw_edit_panel(Viewer& v) {
   if (bench.recipe().empty()) ImGui::TextUnformatted("recipe: the triangulation alone");
   for (const std::string& line : bench.recipe_lines()) ImGui::TextWrapped("recipe: %s", line.c_str());
   ImGui::Text("mesh: %zu triangles, made in %.1f ms", bench.mesh_triangles(), bench.remesh_ms());
-  for (const InputNotice& n : bench.notices())
-    ImGui::TextColored(n.refused ? ImVec4(0.85f, 0.0f, 0.0f, 1.0f) : ImVec4(0.8f, 0.45f, 0.0f, 1.0f), "%s%s",
-                       n.refused ? "refused (the last good mesh stays): " : "", n.text.c_str());
+  for (const InputNotice& n : bench.notices()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, n.refused ? ImVec4(0.85f, 0.0f, 0.0f, 1.0f) : ImVec4(0.8f, 0.45f, 0.0f, 1.0f));
+    ImGui::TextWrapped("%s%s", n.refused ? "refused (the last good mesh stays): " : "", n.text.c_str());
+    ImGui::PopStyleColor();
+  }
   if (!host->message.empty()) ImGui::TextWrapped("%s", host->message.c_str());
 
   // The region point's form: the selected one's values, else the next one's.

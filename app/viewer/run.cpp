@@ -162,6 +162,17 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   if (session) show(std::move(session));
   if (!options.live_input.empty()) open(options.live_input, options.live_refine);
 
+  // After an edit (the canvas's last frame, a key, a script's action): the input's new mesh,
+  // in the view the last one had when the input is still all in it (workbench.hpp).
+  const auto show_edited = [&] {
+    std::unique_ptr<Session> edited = bench.take_session();
+    if (!edited) return;
+    const bool keep = viewer && bench.showing && bench.in_view(viewer->camera());
+    const scene::Camera camera = viewer ? viewer->camera() : scene::Camera{};
+    show(std::move(edited), true);
+    if (keep) viewer->keep_camera(camera);
+    bench.showing = true;
+  };
   ScriptPlayer script(options.script, options.script_path);
   script.set_workbench(&bench);
   const bool scripted = !options.script.empty();
@@ -194,6 +205,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
       while (live->run->running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     end_live();
     if (status != 0) break;
+    show_edited();  // an edit of the last frame's, before a script looks
     if (scripted) script.set_live_state(live ? live_state_json(*live) : std::string());
     const bool wants_capture = scripted && !script.done() && script.before_frame(viewer.get(), picked, problem);
     if (script.quit()) break;
@@ -202,14 +214,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
       picked.clear();
       picked_refine = {};
     }
-    // After an edit: the input's new mesh, in the view the last one had (workbench.hpp).
-    if (std::unique_ptr<Session> edited = bench.take_session()) {
-      const bool keep = viewer && bench.showing && bench.in_view(viewer->camera());
-      const scene::Camera camera = viewer ? viewer->camera() : scene::Camera{};
-      show(std::move(edited), true);
-      if (keep) viewer->keep_camera(camera);
-      bench.showing = true;
-    }
+    show_edited();  // an edit of the script's
     // Presentation: a new UI scale or theme rasterises the fonts again and uploads them
     // before the frame that uses them; full screen is the window's.
     if (viewer) {

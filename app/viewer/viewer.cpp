@@ -352,8 +352,16 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
   const int width = static_cast<int>(w), height = static_cast<int>(h);
   canvas_rect_ = ImVec4(x, y, w, h);
   if (fit_pending_ || camera_.width() != width || camera_.height() != height) {
-    if (fit_pending_ || camera_.width() <= 1) fit_camera(width, height);
-    else camera_.resize(width, height);
+    if (fit_pending_ || camera_.width() <= 1) {
+      fit_camera(width, height);
+    } else if (keep_corner_) {
+      const Point corner = camera_.to_world({0.0, 0.0});
+      camera_.resize(width, height);
+      const Point moved = camera_.to_world({0.0, 0.0});
+      camera_.pan((moved.x - corner.x) * camera_.pixels_per_unit(), (corner.y - moved.y) * camera_.pixels_per_unit());
+    } else {
+      camera_.resize(width, height);
+    }
   }
   if (follow && session_->playback().playing) follow_step();
 

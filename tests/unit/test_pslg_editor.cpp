@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "meshstep/delaunay/triangulate.hpp"
+#include "meshstep/error.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/io/write_pslg.hpp"
 #include "meshstep/pslg/pslg_editor.hpp"
