@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "edit_keys.hpp"
+#include "meshstep/error.hpp"
 #include "viewer.hpp"
 #include "workbench_host.hpp"
 
@@ -50,8 +51,35 @@ void draw_edit_panel(Viewer& v) {
   ImGui::TextDisabled("drag: move; right click: delete; middle drag: pan");
   ImGui::Text("%zu vertices, %zu segments, %zu holes, %zu regions", in.points.size(), in.segments.size(),
               in.holes.size(), in.regions.size());
+  // The recipe (issue 27 item 4): each operation switched on or off, moved, removed; the
+  // run is made again at once.
   if (bench.recipe().empty()) ImGui::TextUnformatted("recipe: the triangulation alone");
-  for (const std::string& line : bench.recipe_lines()) ImGui::TextWrapped("recipe: %s", line.c_str());
+  else ImGui::TextUnformatted("recipe (run in this order):");
+  // What a button asked for, done after the list is drawn (it changes the list).
+  enum class Change { none, on, off, up, down, remove } change = Change::none;
+  std::size_t changed_at = 0;
+  for (std::size_t i = 0; i < bench.recipe().size(); ++i) {
+    ImGui::PushID(static_cast<int>(i));
+    bool on = bench.operation_on(i);
+    if (ImGui::Checkbox("##on", &on)) change = on ? Change::on : Change::off, changed_at = i;
+    ImGui::SameLine();
+    if (ImGui::SmallButton("^")) change = Change::up, changed_at = i;
+    ImGui::SameLine();
+    if (ImGui::SmallButton("v")) change = Change::down, changed_at = i;
+    ImGui::SameLine();
+    if (ImGui::SmallButton("x")) change = Change::remove, changed_at = i;
+    ImGui::SameLine();
+    ImGui::TextWrapped("%zu. %s", i + 1, bench.recipe_lines()[i].c_str());
+    ImGui::PopID();
+  }
+  switch (change) {
+    case Change::none: break;
+    case Change::on:
+    case Change::off: bench.switch_operation(changed_at, change == Change::on); break;
+    case Change::up:
+    case Change::down: bench.move_operation(changed_at, change == Change::up ? -1 : +1); break;
+    case Change::remove: bench.remove_operation(changed_at); break;
+  }
   ImGui::Text("mesh: %zu triangles, made in %.1f ms", bench.mesh_triangles(), bench.remesh_ms());
   for (const InputNotice& n : bench.notices()) {
     ImGui::PushStyleColor(ImGuiCol_Text, n.refused ? ImVec4(0.85f, 0.0f, 0.0f, 1.0f) : ImVec4(0.8f, 0.45f, 0.0f, 1.0f));
@@ -94,6 +122,22 @@ void draw_edit_panel(Viewer& v) {
     const std::size_t n = std::strlen(save_as);
     if (n < 5 || std::strcmp(save_as + n - 5, ".poly") != 0) host->say("Save as: the name must end in .poly");
     else v.notify(host->save(save_as));
+  }
+  // The recipe beside the input (INPUT.recipe), for `meshstep run INPUT.recipe INPUT.poly`.
+  if (ImGui::SmallButton("Save recipe")) {
+    if (bench.file().empty()) {
+      host->say("Save recipe: save the input first (it is written beside it)");
+    } else {
+      const std::string& file = bench.file();
+      const std::size_t dot = file.find_last_of('.');
+      const std::string path = (dot == std::string::npos ? file : file.substr(0, dot)) + ".recipe";
+      try {
+        bench.save_recipe(path);
+        host->say("saved " + path);
+      } catch (const InputError& e) {
+        host->say(e.what());
+      }
+    }
   }
   ImGui::Separator();
 }

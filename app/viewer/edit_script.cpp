@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #include "meshstep/error.hpp"
+#include "meshstep/refine/run_spec.hpp"
 #include "workbench_host.hpp"
 
 namespace meshstep::viewer {
@@ -39,10 +40,20 @@ const EditVerb* find_verb(const std::string& name) {
   return nullptr;
 }
 
+// The operation of `refine-region X0 Y0 X1 Y1 OPTIONS...`; throws RunSpecError.
+Operation region_operation(const ScriptAction& a) {
+  std::vector<std::string> words{"refine"};
+  words.insert(words.end(), a.args.begin() + 4, a.args.end());
+  words.push_back("--region");
+  words.push_back(a.args[0] + "," + a.args[1] + "," + a.args[2] + "," + a.args[3]);
+  return parse_operation(words);
+}
+
 }  // namespace
 
 bool is_edit_action(const std::string& verb) {
-  return verb == "new" || verb == "edit" || verb == "undo" || verb == "redo" || verb == "save";
+  return verb == "new" || verb == "edit" || verb == "undo" || verb == "redo" || verb == "save" ||
+         verb == "refine-region" || verb == "recipe" || verb == "save-recipe";
 }
 
 std::string check_edit_action(const ScriptAction& a) {
@@ -51,6 +62,24 @@ std::string check_edit_action(const ScriptAction& a) {
   if (a.verb == "save") {
     if (n == 1 && a.args[0].size() > 5 && a.args[0].ends_with(".poly")) return "";
     return "expected: save FILE.poly";
+  }
+  if (a.verb == "save-recipe") return n == 1 ? "" : "expected: save-recipe FILE";
+  if (a.verb == "recipe") {
+    const bool known = n == 2 && (a.args[0] == "remove" || a.args[0] == "off" || a.args[0] == "on" ||
+                                  a.args[0] == "up" || a.args[0] == "down");
+    if (known && std::strtol(a.args[1].c_str(), nullptr, 10) >= 1 && is_real(a.args[1])) return "";
+    return "expected: recipe remove|off|on|up|down N (an operation's number, from 1)";
+  }
+  if (a.verb == "refine-region") {
+    if (n < 4) return "expected: refine-region X0 Y0 X1 Y1 OPTIONS...";
+    for (std::size_t i = 0; i < 4; ++i)
+      if (!is_real(a.args[i])) return "'" + a.args[i] + "' is not a number; expected: refine-region X0 Y0 X1 Y1 OPTIONS...";
+    try {
+      region_operation(a);
+    } catch (const RunSpecError& e) {
+      return std::string("refine-region: ") + e.what();
+    }
+    return "";
   }
   std::string verbs;
   for (const EditVerb& v : kEditVerbs) verbs.append(verbs.empty() ? "" : ", ").append(v.name);
@@ -85,6 +114,24 @@ void run_edit_action(const ScriptAction& a, WorkbenchHost& host, const Session* 
   }
   if (a.verb == "save") {
     bench.save(a.args[0]);
+    return;
+  }
+  if (a.verb == "save-recipe") {
+    bench.save_recipe(a.args[0]);
+    return;
+  }
+  if (a.verb == "refine-region") {
+    bench.append_operation(region_operation(a));
+    return;
+  }
+  if (a.verb == "recipe") {
+    const std::size_t i = static_cast<std::size_t>(std::strtol(a.args[1].c_str(), nullptr, 10) - 1);
+    if (i >= bench.recipe().size())
+      fail("recipe " + a.args[0] + ": there is no operation " + a.args[1] + " (the recipe has " +
+           std::to_string(bench.recipe().size()) + ")");
+    if (a.args[0] == "remove") bench.remove_operation(i);
+    else if (a.args[0] == "off" || a.args[0] == "on") bench.switch_operation(i, a.args[0] == "on");
+    else bench.move_operation(i, a.args[0] == "up" ? -1 : +1);
     return;
   }
   const std::string& what = a.args[0];

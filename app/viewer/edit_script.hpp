@@ -9,6 +9,13 @@
 //   edit region X Y ATTRIBUTE [MAX_AREA]
 //   undo | redo
 //   save FILE.poly               the input, written atomically
+//   refine-region X0 Y0 X1 Y1 OPTIONS...
+//                                a refine operation (OPTIONS as on a recipe line) limited to
+//                                the box, appended to the recipe, which runs again
+//   recipe remove|off|on|up|down N
+//                                the recipe's operation N (from 1): removed, switched off or
+//                                on, moved up or down
+//   save-recipe FILE             the recipe file `meshstep run` reads, written atomically
 //
 // "At X Y" is within 1e-9 of the input's extent (exactly there when it has one point): a
 // script names the coordinates it gave. An `edit` with no workbench open starts one from

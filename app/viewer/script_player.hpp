@@ -331,7 +331,7 @@ class ScriptPlayer {
     if (is_edit_action(v)) {
       if (!workbench_) throw InputError(path_, static_cast<std::size_t>(a.line), "'" + v + "': no workbench here");
       run_edit_action(a, *workbench_, viewer ? &viewer->session() : nullptr, path_);
-      if (v == "save") return false;
+      if (v == "save" || v == "save-recipe") return false;
       pending_.push_back({});  // the frame that shows the new mesh (made before it)
       return true;
     }

@@ -10,6 +10,7 @@
 #include "common/run_log.hpp"
 #include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/error.hpp"
+#include "meshstep/io/atomic_file.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/io/write_pslg.hpp"
 #include "meshstep/refine/refine.hpp"
@@ -53,6 +54,7 @@ ElementRef element_named(const std::string& message, int first_index) {
 Workbench::Workbench(Pslg input, std::vector<Operation> recipe, std::string file)
     : editor_(std::move(input)), recipe_(std::move(recipe)), file_(std::move(file)) {
   for (const Operation& op : recipe_) recipe_lines_.push_back(print_operation(op));
+  enabled_.assign(recipe_.size(), true);
   static std::atomic<int> count{0};
   folder_ = (fs::temp_directory_path() /
              ("meshstep-workbench-" + std::to_string(::getpid()) + "-" + std::to_string(count++)))
@@ -69,6 +71,50 @@ Workbench::~Workbench() {
 }
 
 std::string Workbench::temporary(const std::string& name) const { return (fs::path(folder_) / name).string(); }
+
+void Workbench::recipe_changed() {
+  recipe_lines_.clear();
+  for (const Operation& op : recipe_) recipe_lines_.push_back(print_operation(op));
+  ++recipe_revision_;
+}
+
+void Workbench::append_operation(Operation op) {
+  recipe_.push_back(std::move(op));
+  enabled_.push_back(true);
+  recipe_changed();
+}
+
+void Workbench::remove_operation(std::size_t i) {
+  if (i >= recipe_.size()) return;
+  recipe_.erase(recipe_.begin() + static_cast<std::ptrdiff_t>(i));
+  enabled_.erase(enabled_.begin() + static_cast<std::ptrdiff_t>(i));
+  recipe_changed();
+}
+
+void Workbench::move_operation(std::size_t i, int direction) {
+  const std::size_t j = direction < 0 ? i - 1 : i + 1;
+  if (i >= recipe_.size() || j >= recipe_.size()) return;
+  std::swap(recipe_[i], recipe_[j]);
+  const bool on = enabled_[i];
+  enabled_[i] = enabled_[j];
+  enabled_[j] = on;
+  recipe_changed();
+}
+
+void Workbench::switch_operation(std::size_t i, bool on) {
+  if (i >= recipe_.size() || enabled_[i] == on) return;
+  enabled_[i] = on;
+  recipe_changed();
+}
+
+std::string Workbench::recipe_text() const {
+  std::string text = "# made in meshstep view's workbench: meshstep run RECIPE INPUT\n";
+  for (std::size_t i = 0; i < recipe_.size(); ++i)
+    text += (enabled_[i] ? "" : "# switched off: ") + recipe_lines_[i] + "\n";
+  return text;
+}
+
+void Workbench::save_recipe(const std::string& path) const { io::write_file_atomically(path, recipe_text()); }
 
 std::string Workbench::title() const { return file_.empty() ? std::string("new input") : file_; }
 
@@ -97,7 +143,7 @@ void Workbench::find_idle_holes(const Pslg& input) {
 
 std::unique_ptr<Session> Workbench::remesh() {
   const auto started = std::chrono::steady_clock::now();
-  made_revision_ = editor_.revision();
+  made_revision_ = editor_.revision() + recipe_revision_;
   ++remeshes_;
   notices_.clear();
   const Pslg& input = editor_.input();
@@ -110,7 +156,11 @@ std::unique_ptr<Session> Workbench::remesh() {
     io::write_pslg(poly, input);
     const std::uint64_t n = input.points.size();
     RefineReport first;
-    if (recipe_.empty()) {
+    // The operations switched on, in order.
+    std::vector<Operation> run;
+    for (std::size_t i = 0; i < recipe_.size(); ++i)
+      if (enabled_[i]) run.push_back(recipe_[i]);
+    if (run.empty()) {
       TriangulateOptions options;
       std::unique_ptr<replay::LogWriter> writer =
           app::open_log(log, poly, "triangulate", replay::triangulate_parameters(false, n, input.first_index),
@@ -123,15 +173,15 @@ std::unique_ptr<Session> Workbench::remesh() {
       first.triangulation = std::move(report);
     } else {
       std::vector<RefineOptions> operations;
-      for (const Operation& op : recipe_) {
+      for (const Operation& op : run) {
         RefineOptions o = refine_options(op);
         o.region = region_of(op);
         operations.push_back(std::move(o));
       }
       std::string recipe_lines;
-      if (recipe_.size() > 1)
-        for (const Operation& op : recipe_) recipe_lines += print_operation(op) + "\n";
-      const std::string size_text = recipe_[0].size.value_or("");
+      if (run.size() > 1)
+        for (const Operation& op : run) recipe_lines += print_operation(op) + "\n";
+      const std::string size_text = run[0].size.value_or("");
       std::unique_ptr<replay::LogWriter> writer =
           app::open_log(log, poly, operations[0].algorithm,
                         replay::refine_parameters(operations[0], size_text, n, input.first_index) +

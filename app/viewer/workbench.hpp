@@ -52,8 +52,21 @@ class Workbench {
   // The title the viewer shows: the file, or "new input".
   std::string title() const;
 
-  // Whether the input changed since the mesh was last made (or refused).
-  bool stale() const { return made_revision_ != editor_.revision(); }
+  // The recipe's operations, changed (issue 27 items 3 and 4): appended (a region refined),
+  // removed, moved up or down (by one), switched off or on. An operation switched off stays
+  // in the list and is not run. Each makes the mesh stale. Indices out of range do nothing.
+  void append_operation(Operation op);
+  void remove_operation(std::size_t i);
+  void move_operation(std::size_t i, int direction);
+  void switch_operation(std::size_t i, bool on);
+  bool operation_on(std::size_t i) const { return i < enabled_.size() && enabled_[i]; }
+  // The recipe file `meshstep run` reads: the operations switched on, one a line, in the
+  // recipe's words (those switched off as comments). Written atomically; throws InputError.
+  void save_recipe(const std::string& path) const;
+  std::string recipe_text() const;
+
+  // Whether the input or the recipe changed since the mesh was last made (or refused).
+  bool stale() const { return made_revision_ != editor_.revision() + recipe_revision_; }
   // Makes the mesh of the input as it is now. Returns the session to show: the new run, or
   // the input alone while there never was a good mesh; null when the core refused the
   // input and the last good mesh stays on screen. notices() then say why.
@@ -76,6 +89,9 @@ class Workbench {
   PslgEditor editor_;
   std::vector<Operation> recipe_;
   std::vector<std::string> recipe_lines_;
+  std::vector<bool> enabled_;          // per operation: run or switched off
+  std::uint64_t recipe_revision_ = 0;  // goes up with every change of the recipe
+  void recipe_changed();
   std::string file_;
   std::string folder_;  // this workbench's temporary folder
   std::uint64_t made_revision_ = UINT64_MAX;

@@ -136,25 +136,18 @@ TEST(WorkbenchModel, ScriptsCheckTheEditActionsWords) {
     }
     return std::string();
   };
-  EXPECT_EQ(refusal("new
-edit add-vertex 1 2
-edit region 0 0 3
-edit region 0 0 3 0.5
-undo
-redo
-save a.poly
-"), "");
-  EXPECT_TRUE(has(refusal("edit add-vertex 1
-"), ":1: expected: edit add-vertex X Y"));
-  EXPECT_TRUE(has(refusal("new
-edit add-segment 0 0 1 y
-"), ":2: 'y' is not a number"));
-  EXPECT_TRUE(has(refusal("edit squash 1 1
-"), ":1: unknown edit 'squash' (add-vertex, add-segment, move, delete"));
-  EXPECT_TRUE(has(refusal("save out.txt
-"), ":1: expected: save FILE.poly"));
-  EXPECT_TRUE(has(refusal("undo 3
-"), ":1: expected: undo"));
+  EXPECT_EQ(refusal("new\nedit add-vertex 1 2\nedit region 0 0 3\nedit region 0 0 3 0.5\nundo\nredo\nsave a.poly\n"
+                    "refine-region 0 0 1 1 --max-area 0.1\nrecipe off 1\nsave-recipe a.recipe\n"),
+            "");
+  EXPECT_TRUE(has(refusal("edit add-vertex 1\n"), ":1: expected: edit add-vertex X Y"));
+  EXPECT_TRUE(has(refusal("new\nedit add-segment 0 0 1 y\n"), ":2: 'y' is not a number"));
+  EXPECT_TRUE(has(refusal("edit squash 1 1\n"), ":1: unknown edit 'squash' (add-vertex, add-segment, move, delete"));
+  EXPECT_TRUE(has(refusal("save out.txt\n"), ":1: expected: save FILE.poly"));
+  EXPECT_TRUE(has(refusal("undo 3\n"), ":1: expected: undo"));
+  // A region operation's options are the recipe line's, checked before anything runs.
+  EXPECT_TRUE(has(refusal("refine-region 0 0 1 1 --min-angle -3\n"), ":1: refine-region: --min-angle")) << refusal("refine-region 0 0 1 1 --min-angle -3\n");
+  EXPECT_TRUE(has(refusal("refine-region 1 1 0 0 --max-area 1\n"), ":1: refine-region: "));
+  EXPECT_TRUE(has(refusal("recipe sideways 1\n"), ":1: expected: recipe remove|off|on|up|down N"));
   fs::remove(file);
 }
 
@@ -281,7 +274,49 @@ TEST_P(WorkbenchProgram, TheRunsRecipeRunsAgainAfterAnEdit) {
   ASSERT_EQ(m.status, 0) << m.output;
   EXPECT_EQ(static_cast<long long>(io::read_mesh(out).triangles.size()), field(after, "mesh_triangles")) << after;
   EXPECT_EQ(inner(after, "stats", "triangles"), field(after, "mesh_triangles")) << after;
-  EXPECT_NE(inner(after, "stats", "triangles"), inner(before, "stats", "triangles")) << before << after;
+  // The recipe ran (every angle at least 25 degrees; the triangulation alone has smaller),
+  // on the input as edited.
+  const auto min_angle = [](const std::string& json) {
+    const auto at = json.find("\"min_angle\": ");
+    return at == std::string::npos ? -1.0 : std::atof(json.c_str() + at + 13);
+  };
+  EXPECT_GE(min_angle(after), 25.0) << after;
+  EXPECT_EQ(io::read_poly(saved).points[0].x, p.x + 0.01);
+  EXPECT_EQ(io::read_poly(saved).points[0].y, p.y);
+  EXPECT_TRUE(has(before, "\"editing\": false")) << before;
+}
+
+// A region refined from a script (issue 27 item 3): the operation goes to the end of the
+// recipe and runs at once; the saved recipe and input give, through `meshstep run`, the mesh
+// the window shows. Switched off (item 4), the operation no longer runs.
+TEST_P(WorkbenchProgram, ARegionRefinedFromAScriptIsReproducedBySavedRecipeAndInput) {
+  const std::string input = path("plate.poly");
+  fs::copy_file(MESHSTEP_ASSETS "/examples/plate.poly", input);
+  const std::string saved = path("saved.poly"), recipe = path("saved.recipe");
+  VIEW_OR_SKIP(r, "edit move 10 0 10 0.25\nstate " + path("plain.json") +
+                      "\nrefine-region 0 0 3 3 --max-area 0.05\nstate " + path("refined.json") + "\nsave " + saved +
+                      "\nsave-recipe " + recipe + "\nrecipe off 1\nstate " + path("off.json") + "\nquit\n",
+               input);
+  const std::string plain = read_text(path("plain.json")), refined = read_text(path("refined.json"));
+  const std::string off = read_text(path("off.json"));
+  EXPECT_TRUE(has(plain, "\"recipe\": []")) << plain;
+  EXPECT_TRUE(has(refined, "\"recipe\": [\"refine --max-area 0.05 --region 0,0,3,3\"]")) << refined;
+  EXPECT_GT(field(refined, "mesh_triangles"), field(plain, "mesh_triangles") + 50) << refined;
+  EXPECT_EQ(field(off, "mesh_triangles"), field(plain, "mesh_triangles")) << off;
+  const std::string out = path("reproduced");
+  const Result m = run(std::string(MESHSTEP_BINARY) + " run " + recipe + " " + saved + " -o " + out + " -q");
+  ASSERT_EQ(m.status, 0) << m.output << read_text(recipe);
+  const TriMesh mesh = io::read_mesh(out);
+  EXPECT_EQ(static_cast<long long>(mesh.triangles.size()), field(refined, "mesh_triangles")) << read_text(recipe);
+  // Refined in the box only: every triangle with its centroid in it meets the bound.
+  for (const auto& t : mesh.triangles) {
+    const Point a = mesh.points[t[0]], b = mesh.points[t[1]], c = mesh.points[t[2]];
+    const Point g{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
+    const double area = 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    if (g.x >= 0 && g.x <= 3 && g.y >= 0 && g.y <= 3) {
+      EXPECT_LE(area, 0.05);
+    }
+  }
 }
 
 // The canvas through the pointer and the keys: three clicks with the segment tool and a
@@ -293,7 +328,8 @@ TEST_P(WorkbenchProgram, TheMouseDrawsAPolygonAndTheKeysUndoAndRedo) {
   VIEW_OR_SKIP(r, "key Ctrl+N\nframes 2\nmouse 260 360\nclick\nmouse 420 360\nclick\nmouse 340 220\nclick\n"
                   "state " + path("open.json") + "\nmouse 260 360\nclick\nstate " + path("closed.json") +
                   "\nkey Ctrl+Z\nstate " + path("undone.json") + "\nkey Ctrl+Y\nstate " + path("redone.json") +
-                  "\nmouse 340 220\ndrag 0 -60\nframes 2\nstate " + path("dragged.json") + "\nscreenshot " +
+                  "\nsave " + path("a.poly") + "\nmouse 340 220\ndrag 0 -60\nframes 2\nstate " +
+                  path("dragged.json") + "\nsave " + path("b.poly") + "\nscreenshot " +
                   path("mouse.png") + "\nquit\n");
   const std::string open = read_text(path("open.json")), closed = read_text(path("closed.json"));
   const std::string undone = read_text(path("undone.json")), redone = read_text(path("redone.json"));
@@ -305,6 +341,20 @@ TEST_P(WorkbenchProgram, TheMouseDrawsAPolygonAndTheKeysUndoAndRedo) {
   EXPECT_EQ(counts(redone), "3 3 0 0") << redone;
   EXPECT_EQ(counts(dragged), "3 3 0 0") << dragged;
   EXPECT_EQ(field(dragged, "undo_depth"), field(redone, "undo_depth") + 1) << dragged;
+  // The drag moved the apex 60 pixels up, and nothing else; the view stayed put.
+  const Pslg a = io::read_poly(path("a.poly")), b = io::read_poly(path("b.poly"));
+  ASSERT_EQ(a.points.size(), 3u);
+  ASSERT_EQ(b.points.size(), 3u);
+  const auto at = dragged.find("\"pixels_per_unit\": ");
+  ASSERT_NE(at, std::string::npos);
+  const double pixels_per_unit = std::atof(dragged.c_str() + at + 19);
+  EXPECT_EQ(b.points[0].x, a.points[0].x);
+  EXPECT_EQ(b.points[1].y, a.points[1].y);
+  EXPECT_EQ(b.points[2].x, a.points[2].x);
+  EXPECT_NEAR((b.points[2].y - a.points[2].y) * pixels_per_unit, 60.0, 1e-6);
+  // The first two clicks 160 pixels apart, on one horizontal line.
+  EXPECT_EQ(a.points[0].y, a.points[1].y);
+  EXPECT_NEAR((a.points[1].x - a.points[0].x) * pixels_per_unit, 160.0, 1e-6);
 }
 
 // In edit mode, with the input drawn over the mesh and a notice beside it, an idle frame
