@@ -11,15 +11,17 @@
 
 namespace meshstep::viewer {
 
+void edit_button(Viewer& v) {
+  if (!v.workbench) return;
+  ImGui::SameLine();
+  if (ImGui::SmallButton(v.workbench->editing ? "Done" : "Edit")) edit_key(v, EditKey::toggle);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("E: edit the input, re-meshed at each edit");
+}
+
 void draw_edit_panel(Viewer& v) {
   WorkbenchHost* host = v.workbench;
   if (!host) return;
-  if (!host->editing) {
-    if (ImGui::SmallButton("Edit (E)")) edit_key(v, EditKey::toggle);
-    ImGui::SameLine();
-    if (ImGui::SmallButton("New (Ctrl+N)")) edit_key(v, EditKey::new_input);
-    return;
-  }
+  if (!host->editing) return;  // (the Edit button is beside Open..., edit_button())
   Workbench& bench = *host->bench();
   const PslgEditor& e = bench.editor();
   const Pslg& in = e.input();

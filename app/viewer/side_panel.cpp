@@ -72,6 +72,7 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
   const std::size_t slash = title.rfind('/');
   // Another file (Ctrl+O); a small button, so that the line is no taller than its text.
   if (ImGui::SmallButton("Open...")) request_file_dialog();
+  edit_button(*this);
   ImGui::SameLine();
   ImGui::TextWrapped("%s", title.c_str() + (slash == std::string::npos ? 0 : slash + 1));
   ImGui::Separator();
