@@ -127,7 +127,9 @@ void Workbench::save(const std::string& path) {
 // Found by triangulating without it: the same count of triangles means it removed none
 // (it lies outside every domain the segments close, or in another hole).
 void Workbench::find_idle_holes(const Pslg& input) {
-  if (input.holes.empty() || input.holes.size() > 16) return;  // a person's holes, not a file's thousands
+  // A person's few holes on an input drawn by hand: each costs a triangulation more per edit,
+  // which a file's thousands of holes, or a big input, would not afford.
+  if (input.holes.empty() || input.holes.size() > 16 || input.points.size() > 20000) return;
   TriangulateOptions plain;
   const std::size_t with_all = triangulate(input, plain).triangles.size();
   for (std::size_t h = 0; h < input.holes.size(); ++h) {
