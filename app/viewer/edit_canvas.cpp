@@ -27,6 +27,7 @@ const char* name(EditTool tool) {
     case EditTool::segment: return "segment";
     case EditTool::hole: return "hole";
     case EditTool::region: return "region";
+    case EditTool::box: return "box";
   }
   return "segment";
 }
@@ -114,6 +115,16 @@ void edit_canvas(WorkbenchHost& host, const scene::Camera& camera, float x, floa
     std::snprintf(label, sizeof label, "%g", in.regions[r].attribute);
     draw.AddText(ImVec2(c.x + 9, c.y - 8), colour, label);
   }
+  // The box to refine: dragged now, or the last one dragged.
+  constexpr ImU32 kBox = IM_COL32(130, 40, 160, 255);
+  if (st.tool == EditTool::box && hovered && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 4.0f)) {
+    const ImVec2 press = io.MouseClickedPos[0];
+    draw.AddRect(ImVec2(std::min(press.x, io.MousePos.x), std::min(press.y, io.MousePos.y)),
+                 ImVec2(std::max(press.x, io.MousePos.x), std::max(press.y, io.MousePos.y)), kBox, 0.0f, 0, 2.0f);
+  } else if (st.box) {
+    const ImVec2 a = screen(st.box->first), b = screen(st.box->second);
+    draw.AddRect(ImVec2(a.x, b.y), ImVec2(b.x, a.y), kBox, 0.0f, 0, 2.0f);
+  }
   if (st.chain_last && *st.chain_last < in.points.size() && hovered)
     draw.AddLine(screen(in.points[*st.chain_last]), io.MousePos, kSegment, 1.0f);
   // The notices: the element ringed, the core's words beside it.
@@ -148,6 +159,16 @@ void edit_canvas(WorkbenchHost& host, const scene::Camera& camera, float x, floa
     return;
   }
   if (!hovered) return;
+  // The box tool: a drag draws the box (kept for the panel's form), not a move.
+  if (st.tool == EditTool::box) {
+    if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] >= 16.0f) {
+      const ImVec2 press = io.MouseClickedPos[0];
+      const Point a = camera.to_world({press.x - x, press.y - y});
+      st.box = std::pair{Point{std::min(a.x, pointer_world.x), std::min(a.y, pointer_world.y)},
+                         Point{std::max(a.x, pointer_world.x), std::max(a.y, pointer_world.y)}};
+    }
+    return;
+  }
   const ElementRef under = editor.element_near(pointer_world, tolerance);
   // Pressed on a point, then moved more than a few pixels: that point is dragged.
   if (ImGui::IsMouseClicked(ImGuiMouseButton_Left))
@@ -223,6 +244,7 @@ void edit_canvas(WorkbenchHost& host, const scene::Camera& camera, float x, floa
       if (under.kind != InputElement::none) st.selected = under;
       else run_edit(host, [&](PslgEditor& e) { e.add_hole(p); });
       return;
+    case EditTool::box: return;  // (handled above)
     case EditTool::region:
       if (under.kind != InputElement::none) st.selected = under;
       else

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 
 #include "meshstep/geometry/point.hpp"
 #include "meshstep/pslg/pslg_editor.hpp"
@@ -14,8 +15,9 @@ namespace meshstep::viewer {
 
 class WorkbenchHost;
 
-// What a click on empty canvas makes.
-enum class EditTool { vertex, segment, hole, region };
+// What a click on empty canvas makes; `box` drags a box over the mesh, to refine it
+// (the panel's form says how).
+enum class EditTool { vertex, segment, hole, region, box };
 const char* name(EditTool tool);
 
 // The tool's state between frames (kept by the workbench host, so that it outlives the
@@ -32,6 +34,8 @@ struct EditCanvasState {
   std::optional<ElementRef> selected;
   std::optional<ElementRef> menu_for;  // the right-click menu's element
   bool grid = false;                   // clicks snap to a grid (its step from the zoom)
+  // The box tool's box (world corners, low then high), once dragged.
+  std::optional<std::pair<Point, Point>> box;
   // The values a new region point gets (the form's).
   double region_attribute = 1.0, region_max_area = -1.0;
   // The pointer's world position, as the last frame saw it (the status line shows it).

@@ -2,14 +2,82 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstring>
+#include <span>
+#include <string>
+#include <vector>
 
 #include "edit_keys.hpp"
 #include "meshstep/error.hpp"
+#include "meshstep/refine/registry.hpp"
+#include "meshstep/refine/run_spec.hpp"
 #include "viewer.hpp"
 #include "workbench_host.hpp"
 
 namespace meshstep::viewer {
+
+namespace {
+
+// The box tool's form (issue 27 item 3), from the registry's records: the algorithm, then
+// each of its bounds with the registry's help and default; "Refine the box" appends the
+// operation, limited to the box, to the recipe, which runs again at once.
+void draw_region_form(WorkbenchHost& host, Workbench& bench) {
+  EditCanvasState& st = host.tool;
+  static int algorithm = 0;
+  static char values[16][32] = {};
+  const std::span<const AlgorithmInfo> all = algorithms();
+  if (!st.box) {
+    ImGui::TextWrapped("Drag a box over the mesh: the operation below refines the triangles whose centroid is in it.");
+  } else {
+    ImGui::Text("box %.4g, %.4g to %.4g, %.4g", st.box->first.x, st.box->first.y, st.box->second.x, st.box->second.y);
+  }
+  algorithm = std::clamp(algorithm, 0, static_cast<int>(all.size()) - 1);
+  if (ImGui::BeginCombo("algorithm", all[static_cast<std::size_t>(algorithm)].name.data())) {
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      if (ImGui::Selectable(all[i].name.data(), static_cast<int>(i) == algorithm)) algorithm = static_cast<int>(i);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%.*s", static_cast<int>(all[i].description.size()), all[i].description.data());
+    }
+    ImGui::EndCombo();
+  }
+  std::size_t k = 0;
+  for (const ParameterInfo& p : refine_parameters()) {
+    if (!p.bound || k >= 16) continue;
+    ImGui::SetNextItemWidth(120.0f);
+    ImGui::InputTextWithHint(p.name.data(), p.default_text.empty() ? "(none)" : p.default_text.data(), values[k], sizeof values[k]);
+    if (ImGui::IsItemHovered() && !p.help.empty()) ImGui::SetTooltip("%.*s", static_cast<int>(p.help.size()), p.help.data());
+    ++k;
+  }
+  ImGui::BeginDisabled(!st.box);
+  if (ImGui::SmallButton("Refine the box")) {
+    // The recipe line's words: what `refine-region` and a recipe file take.
+    std::vector<std::string> words{"refine", "--algorithm", std::string(all[static_cast<std::size_t>(algorithm)].name)};
+    k = 0;
+    for (const ParameterInfo& p : refine_parameters()) {
+      if (!p.bound || k >= 16) continue;
+      if (values[k][0] != '\0') {
+        words.push_back("--" + std::string(p.name));
+        words.push_back(values[k]);
+      }
+      ++k;
+    }
+    char box[160];
+    std::snprintf(box, sizeof box, "%.17g,%.17g,%.17g,%.17g", st.box->first.x, st.box->first.y, st.box->second.x,
+                  st.box->second.y);
+    words.push_back("--region");
+    words.push_back(box);
+    try {
+      bench.append_operation(parse_operation(words));
+      host.say("");
+    } catch (const RunSpecError& e) {
+      host.say(std::string("Refine the box: ") + e.what());
+    }
+  }
+  ImGui::EndDisabled();
+}
+
+}  // namespace
 
 void edit_button(Viewer& v) {
   if (!v.workbench) return;
@@ -41,15 +109,17 @@ void draw_edit_panel(Viewer& v) {
   EditCanvasState& st = host->tool;
   int tool = static_cast<int>(st.tool);
   ImGui::TextUnformatted("A click on empty canvas makes a:");
-  for (int t = 0; t <= static_cast<int>(EditTool::region); ++t) {
-    if (t > 0) ImGui::SameLine();
-    if (ImGui::RadioButton(name(static_cast<EditTool>(t)), &tool, t)) {
+  for (int t = 0; t <= static_cast<int>(EditTool::box); ++t) {
+    if (t > 0 && t != static_cast<int>(EditTool::box)) ImGui::SameLine();
+    const bool box = t == static_cast<int>(EditTool::box);
+    if (ImGui::RadioButton(box ? "box: refine a region of the mesh" : name(static_cast<EditTool>(t)), &tool, t)) {
       st.chain_first.reset();
       st.chain_last.reset();
     }
   }
   st.tool = static_cast<EditTool>(tool);
   ImGui::Checkbox("snap to grid", &st.grid);
+  if (st.tool == EditTool::box) draw_region_form(*host, bench);
   ImGui::TextDisabled("drag: move; right click: delete; middle drag: pan");
   ImGui::Text("%zu vertices, %zu segments, %zu holes, %zu regions", in.points.size(), in.segments.size(),
               in.holes.size(), in.regions.size());

@@ -152,6 +152,13 @@ std::unique_ptr<Session> Workbench::remesh() {
   const std::string poly = temporary("input.poly");
   const std::string log = temporary("run-" + std::to_string(remeshes_) + ".mslog");
   std::unique_ptr<Session> session;
+  if (input.points.empty()) {
+    // Nothing to mesh yet (New): not a refusal to draw in red, just the empty canvas.
+    remesh_ms_ = 0.0;
+    mesh_triangles_ = 0;
+    has_mesh_ = false;
+    return Session::still(input, title());
+  }
   try {
     // The input as a file, as `meshstep run` reads it: the log's header names it and keeps
     // its checksum.

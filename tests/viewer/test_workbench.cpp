@@ -184,6 +184,7 @@ TEST_P(WorkbenchProgram, ARectangleWithASquareHoleFromNothingUndoneRedoneAndSave
   const std::string undo2 = read_text(path("undo2.json")), redone = read_text(path("redone.json"));
   EXPECT_TRUE(has(empty, "\"editing\": true")) << empty;
   EXPECT_EQ(counts(empty), "0 0 0 0") << empty;
+  EXPECT_TRUE(has(empty, "\"refusal\": null")) << empty;  // nothing to mesh is not a refusal
   EXPECT_EQ(counts(rectangle), "4 4 0 0") << rectangle;
   EXPECT_EQ(field(rectangle, "mesh_triangles"), 2) << rectangle;
   EXPECT_TRUE(has(rectangle, "\"recipe\": []")) << rectangle;  // a new input: the triangulation alone
@@ -355,6 +356,29 @@ TEST_P(WorkbenchProgram, TheMouseDrawsAPolygonAndTheKeysUndoAndRedo) {
   // The first two clicks 160 pixels apart, on one horizontal line.
   EXPECT_EQ(a.points[0].y, a.points[1].y);
   EXPECT_NEAR((a.points[1].x - a.points[0].x) * pixels_per_unit, 160.0, 1e-6);
+}
+
+// A region refined through the mouse and the panel's form (issue 27 item 3): the box tool,
+// a box dragged over the mesh, a bound typed into the form built from the registry's
+// records, "Refine the box". The panel's places are those of a 1024x640 window.
+TEST_P(WorkbenchProgram, TheMouseRefinesABoxWithTheFormsOperation) {
+  const std::string input = path("plate.poly");
+  fs::copy_file(MESHSTEP_ASSETS "/examples/plate.poly", input);
+  const std::string saved = path("saved.poly"), recipe = path("saved.recipe");
+  VIEW_OR_SKIP(r, "key E\nframes 2\nstate " + path("plain.json") +
+                      "\nmouse 663 163\nclick\nmouse 40 300\ndrag 200 140\nframes 2\nmouse 710 346\nclick\n"
+                      "type 0.05\nmouse 706 397\nclick\nframes 2\nstate " + path("refined.json") + "\nsave " + saved +
+                      "\nsave-recipe " + recipe + "\nscreenshot " + path("box.png") + "\nquit\n",
+               input);
+  const std::string plain = read_text(path("plain.json")), refined = read_text(path("refined.json"));
+  // The form's algorithm (the first of the registry's) and bound, the box as dragged.
+  EXPECT_TRUE(has(refined, "\"recipe\": [\"refine --algorithm circumcenter --max-area 0.05 --region 0.26")) << refined;
+  EXPECT_GT(field(refined, "mesh_triangles"), field(plain, "mesh_triangles") + 50) << refined;
+  const std::string out = path("reproduced");
+  const Result m = run(std::string(MESHSTEP_BINARY) + " run " + recipe + " " + saved + " -o " + out + " -q");
+  ASSERT_EQ(m.status, 0) << m.output << read_text(recipe);
+  EXPECT_EQ(static_cast<long long>(io::read_mesh(out).triangles.size()), field(refined, "mesh_triangles"))
+      << read_text(recipe);
 }
 
 // In edit mode, with the input drawn over the mesh and a notice beside it, an idle frame
