@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "edit_keys.hpp"
 #include "file_dialog.hpp"
 #include "viewer.hpp"
 
@@ -109,6 +110,14 @@ std::vector<KeyAction> make_actions() {
   add({GLFW_KEY_SLASH, true}, "?", "this list of keys", [](Viewer& v) { v.help_open = !v.help_open; });
   add({GLFW_KEY_F1}, "F1", "this list of keys", [](Viewer& v) { v.help_open = !v.help_open; });
   add({GLFW_KEY_ESCAPE}, "Esc", "close this list", [](Viewer& v) { v.help_open = false; });
+  // The workbench (edit_keys.hpp): the input edited and re-meshed at once.
+  add({GLFW_KEY_E}, "E", "edit mode: edit the input, re-meshed at each edit", [](Viewer& v) { edit_key(v, EditKey::toggle); });
+  add({GLFW_KEY_N, false, true}, "Ctrl+N", "new input (empty), in edit mode", [](Viewer& v) { edit_key(v, EditKey::new_input); });
+  add({GLFW_KEY_S, false, true}, "Ctrl+S", "save the input (.poly)", [](Viewer& v) { edit_key(v, EditKey::save); });
+  add({GLFW_KEY_Z, false, true}, "Ctrl+Z", "undo an edit", [](Viewer& v) { edit_key(v, EditKey::undo); });
+  add({GLFW_KEY_Z, true, true}, "Ctrl+Shift+Z", "redo an edit", [](Viewer& v) { edit_key(v, EditKey::redo); });
+  add({GLFW_KEY_Y, false, true}, "Ctrl+Y", "redo an edit", [](Viewer& v) { edit_key(v, EditKey::redo); });
+  add({GLFW_KEY_DELETE}, "Delete", "edit mode: delete the selected element", [](Viewer& v) { edit_key(v, EditKey::erase); });
   add(open_file_chord(), "Ctrl+O", "open a file (a dialog)", [](Viewer&) { request_file_dialog(); });
   add({GLFW_KEY_Q, false, true}, "Ctrl+Q", "quit", [](Viewer& v) { v.quit_requested = true; });
   return a;
@@ -128,6 +137,7 @@ constexpr Named kNamedKeys[] = {
     {"tab", GLFW_KEY_TAB},       {"kp+", GLFW_KEY_KP_ADD},        {"=", GLFW_KEY_EQUAL},
     {"kp-", GLFW_KEY_KP_SUBTRACT},
     {"-", GLFW_KEY_MINUS},       {"/", GLFW_KEY_SLASH},           {"backspace", GLFW_KEY_BACKSPACE},
+    {"delete", GLFW_KEY_DELETE},
 };
 
 std::string lower(std::string_view s) {

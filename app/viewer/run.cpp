@@ -27,6 +27,7 @@
 #include "viewer.hpp"
 #include "keys.hpp"
 #include "live_page.hpp"
+#include "workbench_host.hpp"
 
 namespace meshstep::viewer {
 
@@ -80,10 +81,13 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
 
   // What the window shows: a viewer of a session, or (none yet) the start page. Opening
   // another file (a drop, the start page) makes a new viewer that keeps the options.
+  // The workbench (an input edited and re-meshed at once), before the viewer that points
+  // to it, so that it outlives every viewer.
+  WorkbenchHost bench;
   std::unique_ptr<Viewer> viewer;
   std::string problem;  // the last file that could not be opened, and why
   bool stopped_run = false;  // `problem` says why the run shown stopped short
-  const auto show = [&](std::unique_ptr<Session> next) {
+  const auto show = [&](std::unique_ptr<Session> next, bool edited = false) {
     Settings carried = options.settings ? *options.settings : Settings{};
     if (options.ui_scale > 0.0f) carried.ui_scale = options.ui_scale;
     if (viewer) viewer->capture(carried);
@@ -92,8 +96,9 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     // The title names what the window shows now: a live run's log, a file opened later.
     host->set_title("meshstep view: " + path);
     viewer->window_title = host->title();
+    viewer->workbench = &bench;
     if (options.settings || carried != Settings{}) viewer->apply(carried);
-    if (options.settings) {
+    if (options.settings && !edited) {
       std::error_code ec;
       options.settings->add_recent(std::filesystem::absolute(path, ec).string());
     }
@@ -105,8 +110,10 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   std::unique_ptr<LiveView> live;
   int status = 0;
   const auto open = [&](const std::string& path, const RefineOptions& refine) {
+    bench = WorkbenchHost{};  // another file: the edits end (saved or not)
     try {
       if (is_input(path)) {
+        bench.know_recipe(path, refine.operation ? std::vector<Operation>{*refine.operation} : std::vector<Operation>{});
         live.reset();  // a run still going is stopped
         live = std::make_unique<LiveView>(opener.start_live(path, refine, host->gl_library()));
         host->set_title("meshstep view: " + path + " (running)");
@@ -155,7 +162,19 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   if (session) show(std::move(session));
   if (!options.live_input.empty()) open(options.live_input, options.live_refine);
 
+  // After an edit (the canvas's last frame, a key, a script's action): the input's new mesh,
+  // in the view the last one had when the input is still all in it (workbench.hpp).
+  const auto show_edited = [&] {
+    std::unique_ptr<Session> edited = bench.take_session();
+    if (!edited) return;
+    const bool keep = viewer && bench.showing && bench.in_view(viewer->camera());
+    const scene::Camera camera = viewer ? viewer->camera() : scene::Camera{};
+    show(std::move(edited), true);
+    if (keep) viewer->keep_camera(camera);
+    bench.showing = true;
+  };
   ScriptPlayer script(options.script, options.script_path);
+  script.set_workbench(&bench);
   const bool scripted = !options.script.empty();
 
   struct FrameRecord {
@@ -186,6 +205,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
       while (live->run->running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     end_live();
     if (status != 0) break;
+    show_edited();  // an edit of the last frame's, before a script looks
     if (scripted) script.set_live_state(live ? live_state_json(*live) : std::string());
     const bool wants_capture = scripted && !script.done() && script.before_frame(viewer.get(), picked, problem);
     if (script.quit()) break;
@@ -194,6 +214,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
       picked.clear();
       picked_refine = {};
     }
+    show_edited();  // an edit of the script's
     // Presentation: a new UI scale or theme rasterises the fonts again and uploads them
     // before the frame that uses them; full screen is the window's.
     if (viewer) {
@@ -212,7 +233,12 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     ImGui::NewFrame();
     if (live) draw_live_page(*live, host->width(), host->height());
     else if (viewer) viewer->frame(host->width(), host->height(), seconds);
-    else draw_start_page(host->width(), host->height(), options.settings, picked, picked_refine);
+    else {
+      draw_start_page(host->width(), host->height(), options.settings, picked, picked_refine);
+      // Ctrl+N (and the page's New input button): an empty input, edited in a viewer.
+      if (start_page_wants_new() || (ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_N, false)))
+        bench.start_new();
+    }
     // The file dialog (Ctrl+O, the Open... buttons): its pick opens as the start page's does.
     draw_file_dialog(viewer ? std::string_view(viewer->session().title()) : std::string_view(), picked);
     if (!problem.empty()) draw_problem(problem, stopped_run ? "the run stopped short" : "cannot open", viewer != nullptr);

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "edit_script.hpp"
 #include "keys.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/scene/scene.hpp"
@@ -114,6 +115,7 @@ std::string check(const ScriptAction& a) {
   if (v == "type") return n == 1 && !a.args[0].empty() ? "" : "expected: type TEXT";
   if (v == "click" || v == "quit" || v == "check" || v == "wait" || v == "settle" || v == "watch") return count(0, v.c_str());
   if (v == "screenshot" || v == "canvas" || v == "state" || v == "peek" || v == "open") return count(1, (v + " FILE").c_str());
+  if (is_edit_action(v)) return check_edit_action(a);  // the workbench's (edit_script.hpp)
   return "unknown action '" + v + "'";
 }
 

@@ -38,6 +38,8 @@
 //   open FILE           open a log, mesh or input as a dropped file would (an input is
 //                       triangulated); without INPUT the script starts on the start page
 //   quit
+//   new | edit WHAT ... | undo | redo | save FILE.poly
+//                       the workbench: an input edited and re-meshed at once (edit_script.hpp)
 #pragma once
 
 #include <cstdint>

@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "edit_script.hpp"
 #include "keys.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/atomic_file.hpp"
@@ -21,6 +22,7 @@
 #include "state_json.hpp"
 #include "ui_look.hpp"
 #include "viewer.hpp"
+#include "workbench_host.hpp"
 
 namespace meshstep::viewer {
 
@@ -39,6 +41,9 @@ class ScriptPlayer {
   // shows depends on the machine's speed.)
   // What `peek` writes while a live run goes (live_page.hpp); cleared when it ends.
   void set_live_state(std::string json) { live_state_ = std::move(json); }
+
+  // Where the workbench's actions (edit_script.hpp) go.
+  void set_workbench(WorkbenchHost* host) { workbench_ = host; }
 
   bool done() const { return next_ >= actions_.size() && frames_left_ == 0 && pending_.empty() && !pause_now_; }
   bool quit() const { return quit_; }
@@ -106,7 +111,7 @@ class ScriptPlayer {
 
   static bool needs_viewer(const std::string& verb) {
     return !(verb == "frames" || verb == "key" || verb == "type" || verb == "mouse" || verb == "click" || verb == "drag" ||
-             verb == "wheel" || verb == "screenshot" || verb == "quit" || verb == "watch");
+             verb == "wheel" || verb == "screenshot" || verb == "quit" || verb == "watch" || is_edit_action(verb));
   }
 
   static std::string no_heights(Viewer& viewer) {
@@ -323,6 +328,13 @@ class ScriptPlayer {
       viewer->select_at({std::strtod(a.args[0].c_str(), nullptr), std::strtod(a.args[1].c_str(), nullptr)});
       return false;
     }
+    if (is_edit_action(v)) {
+      if (!workbench_) throw InputError(path_, static_cast<std::size_t>(a.line), "'" + v + "': no workbench here");
+      run_edit_action(a, *workbench_, viewer ? &viewer->session() : nullptr, path_);
+      if (v == "save" || v == "save-recipe") return false;
+      pending_.push_back({});  // the frame that shows the new mesh (made before it)
+      return true;
+    }
     if (v == "wait" || v == "settle") return false;
     if (v == "check") {
       viewer->invariants().start(viewer->session().log() ? viewer->session().log()->path() : std::string());
@@ -348,6 +360,7 @@ class ScriptPlayer {
   std::vector<Input> pending_;
   const ScriptAction* capture_ = nullptr;
   int held_key_ = -1;
+  WorkbenchHost* workbench_ = nullptr;
   float mouse_x_ = 0, mouse_y_ = 0;
 };
 

@@ -11,6 +11,7 @@
 #include "meshstep/scene/svg.hpp"
 #include "panel_style.hpp"
 #include "viewer.hpp"
+#include "edit_panel.hpp"
 
 namespace meshstep::viewer {
 
@@ -71,9 +72,11 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
   const std::size_t slash = title.rfind('/');
   // Another file (Ctrl+O); a small button, so that the line is no taller than its text.
   if (ImGui::SmallButton("Open...")) request_file_dialog();
+  edit_button(*this);
   ImGui::SameLine();
   ImGui::TextWrapped("%s", title.c_str() + (slash == std::string::npos ? 0 : slash + 1));
   ImGui::Separator();
+  draw_edit_panel(*this);  // the workbench (edit_panel.hpp)
 
   draw_selection_panel();
   ImGui::SetNextItemOpen(explain_open_);

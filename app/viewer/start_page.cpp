@@ -1,5 +1,7 @@
 #include "start_page.hpp"
 
+#include <utility>
+
 #include <imgui.h>
 
 #include <filesystem>
@@ -19,6 +21,10 @@ RefineOptions thirty_degrees(const char* algorithm) {
   return r;
 }
 
+}  // namespace
+
+namespace {
+bool g_wants_new = false;  // the New input button, clicked this frame
 }  // namespace
 
 void draw_start_page(int width, int height, const Settings* settings, std::string& picked, RefineOptions& refine) {
@@ -94,8 +100,13 @@ void draw_start_page(int width, int height, const Settings* settings, std::strin
   if (ImGui::Button("Open... (Ctrl+O)") ||
       (ImGui::IsKeyPressed(open.key, false) && io.KeyCtrl == open.ctrl && io.KeyShift == open.shift))
     request_file_dialog();
+  // Or draw one: an empty input in the workbench (the loop hears Ctrl+N here too).
+  ImGui::SameLine();
+  if (ImGui::Button("New input (Ctrl+N)")) g_wants_new = true;
   ImGui::End();
 }
+
+bool start_page_wants_new() { return std::exchange(g_wants_new, false); }
 
 void draw_problem(std::string& problem, const char* title, bool at_top) {
   const ImGuiIO& io = ImGui::GetIO();

@@ -13,6 +13,8 @@ namespace meshstep::viewer {
 // Draws the page over the whole window; sets `picked` (and its refinement) when a file is
 // chosen. `settings` may be null (no recent files).
 void draw_start_page(int width, int height, const Settings* settings, std::string& picked, RefineOptions& refine);
+// Whether the page's New input button was clicked since the last call (then false again).
+bool start_page_wants_new();
 
 // A small window saying why the last file could not be opened (or why the run shown
 // stopped short): at the bottom, or at the top when a run is shown, clear of its timeline.

@@ -6,6 +6,7 @@
 #include "meshstep/scene/pseudocode.hpp"
 #include "ui_look.hpp"
 #include "viewer.hpp"
+#include "workbench_host.hpp"
 
 namespace meshstep::viewer {
 
@@ -180,6 +181,7 @@ std::string state_json(Viewer& v) {
   const ImVec4 r = v.canvas_rect();
   field("canvas_rect", "{\"x\": " + number(r.x) + ", \"y\": " + number(r.y) + ", \"width\": " + number(r.z) +
                            ", \"height\": " + number(r.w) + "}");
+  if (v.workbench) out += workbench_state_fields(*v.workbench);  // the workbench's, one a line
   field("scene_builds", std::to_string(s.scene_builds()));
   out += "  \"canvas_renders\": " + std::to_string(v.canvas_renders()) + "\n}\n";
   return out;

@@ -5,10 +5,12 @@
 #include <cstdio>
 
 #include "imgui_gl.hpp"
+#include "edit_canvas.hpp"
 #include "keys.hpp"
 #include "meshstep/scene/layout.hpp"
 #include "panel_style.hpp"
 #include "ui_look.hpp"
+#include "workbench_host.hpp"
 
 namespace meshstep::viewer {
 
@@ -350,8 +352,16 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
   const int width = static_cast<int>(w), height = static_cast<int>(h);
   canvas_rect_ = ImVec4(x, y, w, h);
   if (fit_pending_ || camera_.width() != width || camera_.height() != height) {
-    if (fit_pending_ || camera_.width() <= 1) fit_camera(width, height);
-    else camera_.resize(width, height);
+    if (fit_pending_ || camera_.width() <= 1) {
+      fit_camera(width, height);
+    } else if (keep_corner_) {
+      const Point corner = camera_.to_world({0.0, 0.0});
+      camera_.resize(width, height);
+      const Point moved = camera_.to_world({0.0, 0.0});
+      camera_.pan((moved.x - corner.x) * camera_.pixels_per_unit(), (corner.y - moved.y) * camera_.pixels_per_unit());
+    } else {
+      camera_.resize(width, height);
+    }
   }
   if (follow && session_->playback().playing) follow_step();
 
@@ -381,6 +391,8 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
     opaque_image(texture_id(renderer_.texture()), ImVec2(w, h));
   }
   const bool canvas_hovered = ImGui::IsItemHovered();
+  // Edit mode (edit_canvas.hpp): the left button edits, the middle one pans.
+  const bool editing = workbench && workbench->editing && !view3d_.on();
   if (worker_ && worker_->drawing()) draw_drawing_badge(x, y);
   if (notice_shown()) draw_notice(x, y);
 
@@ -398,7 +410,7 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
       camera_changed_by_hand();
     }
     const bool moved = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f;
-    if (moved && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f)) {
+    if (moved && ImGui::IsMouseDragging(editing ? ImGuiMouseButton_Middle : ImGuiMouseButton_Left, 0.0f)) {
       // Dragging right turns the near side of the surface right; down looks more from above.
       if (in_3d) {
         turn_orbit(-kDegreesPerPixel * io.MouseDelta.x, kDegreesPerPixel * io.MouseDelta.y);
@@ -415,7 +427,7 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
     // Hover: looked up again only when the pointer moves, and not in huge meshes (a scan).
     if (moved && session_->scene().mesh.triangles.size() <= 200000) pick_under(at, hovered_);
     // A click (pressed and released without a drag) selects.
-    if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f) {
+    if (!editing && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f) {
       if (in_3d) {
         Picked picked;
         pick_under(at, picked);
@@ -428,6 +440,7 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
     hovered_ = {};
   }
   draw_selection_overlay(x, y);
+  if (editing) edit_canvas(*workbench, camera_, x, y, canvas_hovered);
   ImGui::End();
   ImGui::PopStyleVar(2);
 }

@@ -34,6 +34,8 @@
 
 namespace meshstep::viewer {
 
+class WorkbenchHost;
+
 // Who draws the canvas: this thread, or a worker of its own (canvas_worker.hpp), which the
 // viewer chooses for runs of more than kCanvasWorkerVertices vertices (automatic).
 enum class CanvasMode { automatic, this_thread, worker };
@@ -64,6 +66,20 @@ class Viewer {
   std::string window_capture_path;
   std::string export_status;  // what the last export wrote, or why it failed
   std::string window_title;   // the window's title, as the host shows it (for scripts' state)
+
+  // The workbench (workbench_host.hpp), set by the loop: edit mode's keys, canvas overlay
+  // and panel go through it. Null: no editing (tests of the viewer alone).
+  WorkbenchHost* workbench = nullptr;
+  // Shows what `camera` showed, with no fit: the workbench's next run keeps the view. The
+  // world point at the canvas's top-left corner stays there when this run's canvas is of
+  // another size (a run has a timeline under it, an input alone none), so that what is
+  // under the pointer stays under it.
+  void keep_camera(const scene::Camera& camera) {
+    camera_ = camera;
+    fit_pending_ = false;
+    camera_moved_ = true;
+    keep_corner_ = true;
+  }
 
   // UI state that keys and scripts change.
   bool help_open = false;
@@ -175,6 +191,7 @@ class Viewer {
   render::Renderer renderer_;
   scene::Camera camera_;
   bool fit_pending_ = true;
+  bool keep_corner_ = false;  // keep_camera: the next resize keeps the top-left corner
   ImVec4 canvas_rect_{0, 0, 0, 0};
   int window_width_ = 0, window_height_ = 0;
   std::pair<bool, bool> fitted_for_{false, false};  // panels hidden, full screen: at the last fit

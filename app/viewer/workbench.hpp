@@ -1,0 +1,105 @@
+// The workbench: an input being edited (pslg/pslg_editor.hpp) and the recipe that makes its
+// mesh. After each edit the input is triangulated again and the recipe runs again, in this
+// process and on the core's own path (`meshstep run`'s: refine_chain, or triangulate for a
+// recipe of no operation), recorded into a log of its own that the viewer then shows as a
+// run: mesh, statistics and timeline.
+//
+// Input the core refuses (coordinates outside the range rule, fewer than three vertices
+// not on a line) gives no new mesh: the core's message is kept, with the element it names,
+// for the canvas to draw beside it; the mesh shown stays the last good one. What the core
+// only warns of (two vertices at one place, merged) and what it does in silence (a hole
+// point that removes nothing) are kept in the same way, next to a mesh that was made.
+//
+// No GL, no ImGui: the scripts, the keys and the tests drive it alike.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "meshstep/pslg/pslg_editor.hpp"
+#include "meshstep/refine/run_spec.hpp"
+#include "session.hpp"
+
+namespace meshstep::viewer {
+
+// A line the canvas draws next to an element of the input (none: the canvas's corner).
+struct InputNotice {
+  ElementRef element;
+  std::string text;
+  bool refused = false;  // the core refused the input (no mesh made), or only warned
+};
+
+// Where the core's message names an element of the input: "vertex 3", "hole point 1",
+// "region point 2" or "segment 5", numbered from first_index; none when it names none.
+ElementRef element_named(const std::string& message, int first_index);
+
+class Workbench {
+ public:
+  // `file`: where Ctrl+S saves (empty: a new input, which needs Save as).
+  Workbench(Pslg input, std::vector<Operation> recipe, std::string file);
+  ~Workbench();  // removes its temporary files
+  Workbench(const Workbench&) = delete;
+  Workbench& operator=(const Workbench&) = delete;
+
+  PslgEditor& editor() { return editor_; }
+  const PslgEditor& editor() const { return editor_; }
+  const std::vector<Operation>& recipe() const { return recipe_; }
+  // Its operations in the recipe's words, made once (the panel draws them every frame).
+  const std::vector<std::string>& recipe_lines() const { return recipe_lines_; }
+  const std::string& file() const { return file_; }
+  // The title the viewer shows: the file, or "new input".
+  std::string title() const;
+
+  // The recipe's operations, changed (issue 27 items 3 and 4): appended (a region refined),
+  // removed, moved up or down (by one), switched off or on. An operation switched off stays
+  // in the list and is not run. Each makes the mesh stale. Indices out of range do nothing.
+  void append_operation(Operation op);
+  void remove_operation(std::size_t i);
+  void move_operation(std::size_t i, int direction);
+  void switch_operation(std::size_t i, bool on);
+  bool operation_on(std::size_t i) const { return i < enabled_.size() && enabled_[i]; }
+  // The recipe file `meshstep run` reads: the operations switched on, one a line, in the
+  // recipe's words (those switched off as comments). Written atomically; throws InputError.
+  void save_recipe(const std::string& path) const;
+  std::string recipe_text() const;
+
+  // Whether the input or the recipe changed since the mesh was last made (or refused).
+  bool stale() const { return made_revision_ != editor_.revision() + recipe_revision_; }
+  // Makes the mesh of the input as it is now. Returns the session to show: the new run, or
+  // the input alone while there never was a good mesh; null when the core refused the
+  // input and the last good mesh stays on screen. notices() then say why.
+  std::unique_ptr<Session> remesh();
+
+  const std::vector<InputNotice>& notices() const { return notices_; }
+  bool refused() const { return !notices_.empty() && notices_.front().refused; }
+  std::size_t mesh_triangles() const { return mesh_triangles_; }  // of the last good mesh
+  double remesh_ms() const { return remesh_ms_; }                  // the last remesh(), all of it
+  std::size_t remeshes() const { return remeshes_; }
+
+  // Saves the input to PATH (a .poly, written atomically), which becomes file(). Throws
+  // InputError ("PATH: why").
+  void save(const std::string& path);
+
+ private:
+  std::string temporary(const std::string& name) const;
+  void find_idle_holes(const Pslg& input);
+
+  PslgEditor editor_;
+  std::vector<Operation> recipe_;
+  std::vector<std::string> recipe_lines_;
+  std::vector<bool> enabled_;          // per operation: run or switched off
+  std::uint64_t recipe_revision_ = 0;  // goes up with every change of the recipe
+  void recipe_changed();
+  std::string file_;
+  std::string folder_;  // this workbench's temporary folder
+  std::uint64_t made_revision_ = UINT64_MAX;
+  std::vector<InputNotice> notices_;
+  std::size_t mesh_triangles_ = 0, remeshes_ = 0;
+  double remesh_ms_ = 0.0;
+  bool has_mesh_ = false;
+  std::string shown_log_;  // the log of the session last returned
+};
+
+}  // namespace meshstep::viewer

@@ -1,0 +1,177 @@
+#include "workbench_host.hpp"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "meshstep/error.hpp"
+#include "meshstep/io/formats.hpp"
+#include "meshstep/io/triangle_io.hpp"
+#include "meshstep/replay/run_header.hpp"
+
+namespace meshstep::viewer {
+
+std::vector<Operation> recipe_of(const replay::LogReader& log) {
+  const replay::RunHeader& run = log.run();
+  if (!run.operations.empty()) return run.operations;
+  if (log.header().algorithm == "triangulate") return {};
+  // One refinement: what its header keeps typed. (Its caps and flags other than these are
+  // not in the header: the workbench's run may then differ from the recorded one.)
+  Operation op;
+  op.algorithm = log.header().algorithm;
+  op.selection = run.selection;
+  op.encroachment = run.encroachment;
+  op.min_angle = run.min_angle;
+  op.max_angle = run.max_angle;
+  op.max_aspect = run.max_aspect;
+  op.max_area = run.max_area;
+  if (run.insertion == "bisection") op.insertion = PointInsertion::bisection;
+  else if (run.insertion == "cavity") op.insertion = PointInsertion::cavity;
+  if (run.region && run.region->kind() == RefineRegion::Kind::box) {
+    op.region = RegionSpec{std::pair{run.region->low(), run.region->high()}, {}};
+  }
+  return {op};
+}
+
+namespace {
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) continue;
+    out += c;
+  }
+  return out + '"';
+}
+
+}  // namespace
+
+std::string workbench_state_fields(const WorkbenchHost& host) {
+  const Workbench* bench = host.bench();
+  std::string out;
+  const auto field = [&](const char* key, const std::string& value) {
+    out += std::string("  \"") + key + "\": " + value + ",\n";
+  };
+  field("editing", host.editing ? "true" : "false");
+  if (!bench) return out;
+  const Pslg& in = bench->editor().input();
+  field("input", "{\"vertices\": " + std::to_string(in.points.size()) + ", \"segments\": " +
+                     std::to_string(in.segments.size()) + ", \"holes\": " + std::to_string(in.holes.size()) +
+                     ", \"regions\": " + std::to_string(in.regions.size()) + "}");
+  std::string recipe = "[";
+  for (const Operation& op : bench->recipe()) recipe += (recipe.size() > 1 ? ", " : "") + quoted(print_operation(op));
+  field("recipe", recipe + "]");
+  field("refusal", bench->refused() ? quoted(bench->notices().front().text) : "null");
+  std::string notices = "[";
+  for (const InputNotice& n : bench->notices())
+    notices += std::string(notices.size() > 1 ? ", " : "") + "{\"element\": " + quoted(to_string(n.element.kind)) +
+               ", \"index\": " + std::to_string(n.element.index + in.first_index) +
+               ", \"refused\": " + (n.refused ? "true" : "false") + ", \"text\": " + quoted(n.text) + "}";
+  field("input_notices", notices + "]");
+  field("mesh_triangles", std::to_string(bench->mesh_triangles()));
+  char ms[32];
+  std::snprintf(ms, sizeof ms, "%.3f", bench->remesh_ms());
+  field("remesh_ms", ms);
+  field("undo_depth", std::to_string(bench->editor().undo_depth()));
+  field("edit_message", quoted(host.message));
+  field("input_file", quoted(bench->file()));
+  return out;
+}
+
+void WorkbenchHost::start_new() {
+  std::vector<Operation> recipe = bench_ ? bench_->recipe() : std::vector<Operation>{};
+  bench_ = std::make_unique<Workbench>(Pslg{}, std::move(recipe), "");
+  tool = {};
+  editing = true;
+}
+
+std::string WorkbenchHost::start_from(const Session& session, const std::optional<std::vector<Operation>>& known) {
+  const replay::LogReader* log = session.log();
+  // The input file: the log's (as recorded), or the file shown when it is an input.
+  const std::string input = log ? log->header().input : session.title();
+  std::error_code ec;
+  if (!io::is_planar_input(input) || !std::filesystem::exists(input, ec))
+    return input + ": only a run of a .poly or .node input that is still there can be edited (or start a new "
+                   "input: Ctrl+N)";
+  try {
+    Pslg pslg = io::read_pslg(input);
+    std::vector<Operation> recipe = known                                       ? *known
+                                    : !known_input_.empty() && input == known_input_ ? known_recipe_
+                                    : log                                            ? recipe_of(*log)
+                                                                                     : std::vector<Operation>{};
+    // Saved as a .poly: a .node input is saved beside itself with the new extension.
+    std::string file = input;
+    if (!file.ends_with(".poly")) file = file.substr(0, file.find_last_of('.')) + ".poly";
+    bench_ = std::make_unique<Workbench>(std::move(pslg), std::move(recipe), file);
+    tool = {};
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  editing = true;
+  return "";
+}
+
+std::string WorkbenchHost::toggle(const Session* session) {
+  if (editing) {
+    editing = false;
+    return "";
+  }
+  if (bench_) {
+    editing = true;
+    return "";
+  }
+  if (!session) {
+    start_new();
+    return "";
+  }
+  return start_from(*session);
+}
+
+std::string WorkbenchHost::save(const std::string& path) {
+  if (!bench_) return message = "nothing to save: no input is being edited (E, or Ctrl+N)";
+  const std::string file = path.empty() ? bench_->file() : path;
+  if (file.empty()) return message = "a new input: type its name under Save as (in the Edit panel)";
+  try {
+    bench_->save(file);
+    message = "saved " + file;
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  return message;
+}
+
+void WorkbenchHost::undo() {
+  tool.chain_first.reset();
+  tool.chain_last.reset();
+  tool.selected.reset();
+  if (bench_ && !bench_->editor().undo()) message = "nothing to undo";
+}
+
+void WorkbenchHost::redo() {
+  tool.chain_first.reset();
+  tool.chain_last.reset();
+  tool.selected.reset();
+  if (bench_ && !bench_->editor().redo()) message = "nothing to redo";
+}
+
+bool WorkbenchHost::in_view(const scene::Camera& camera) const {
+  if (!bench_) return false;
+  const Pslg& in = bench_->editor().input();
+  if (in.points.empty()) return false;  // nothing to frame
+  const BBox view = camera.visible();
+  const auto inside = [&](Point p) { return p.x >= view.lo.x && p.x <= view.hi.x && p.y >= view.lo.y && p.y <= view.hi.y; };
+  for (const Point& p : in.points)
+    if (!inside(p)) return false;
+  for (const Point& p : in.holes)
+    if (!inside(p)) return false;
+  for (const Region& r : in.regions)
+    if (!inside(r.point)) return false;
+  return true;
+}
+
+std::unique_ptr<Session> WorkbenchHost::take_session() {
+  if (!bench_ || !bench_->stale()) return nullptr;
+  return bench_->remesh();
+}
+
+}  // namespace meshstep::viewer

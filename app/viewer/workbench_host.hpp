@@ -1,0 +1,84 @@
+// Where the viewer's loop keeps its workbench (workbench.hpp): started by New (Ctrl+N, the
+// start page, a script's `new`) or by Edit (E) on the run shown, whose input and recipe it
+// takes; and the edit mode, in which the canvas takes clicks as edits. The loop asks it,
+// before each frame, for a new session to show when an edit made the mesh stale.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "edit_canvas.hpp"
+#include "meshstep/refine/run_spec.hpp"
+#include "meshstep/scene/camera.hpp"
+#include "session.hpp"
+#include "workbench.hpp"
+
+namespace meshstep::viewer {
+
+// The recipe of a recorded run, as its log's header tells it: a recipe's operations; none
+// for a triangulation; else the one refinement, rebuilt from its typed header (algorithm,
+// selection, bounds, caps, region).
+std::vector<Operation> recipe_of(const replay::LogReader& log);
+
+class WorkbenchHost;
+// The `state` fields of the workbench, each "  \"key\": value,\n": "editing"; "input" (its
+// counts: vertices, segments, holes, regions); "recipe" (its operations' lines); "refusal"
+// (the core's words when it refused the input, else null); "input_notices" (every notice:
+// element, index and text); "mesh_triangles" (of the last good mesh); "undo_depth";
+// "edit_message"; "input_file".
+std::string workbench_state_fields(const WorkbenchHost& host);
+
+class WorkbenchHost {
+ public:
+  Workbench* bench() { return bench_.get(); }
+  const Workbench* bench() const { return bench_.get(); }
+  // Edit mode: the canvas draws the input over the mesh and takes clicks as edits.
+  bool editing = false;
+
+  // An empty input (keeping the recipe of a workbench already open). Edit mode on.
+  void start_new();
+  // The input of the run `session` shows and its recipe (`known`: the operation the input
+  // was opened with, when the loop knows it; else recipe_of its log). Returns "" or why it
+  // cannot be (a mesh with no input file, a log whose input is gone). Edit mode on.
+  std::string start_from(const Session& session, const std::optional<std::vector<Operation>>& known = std::nullopt);
+  // The recipe an input was opened with (the loop knows it: the command line's or the
+  // start page's options), used by start_from for a run of that input rather than what its
+  // log's header keeps.
+  void know_recipe(std::string input, std::vector<Operation> recipe) {
+    known_input_ = std::move(input);
+    known_recipe_ = std::move(recipe);
+  }
+  // E: edit mode on (starting from the session when there is no workbench yet) or off.
+  std::string toggle(const Session* session);
+
+  // The session to show after an edit (workbench.hpp: remesh), or null: nothing changed,
+  // or the core refused the input and the last good mesh stays.
+  std::unique_ptr<Session> take_session();
+  // Whether the viewer now shows the workbench's run (the loop carries its camera over).
+  bool showing = false;
+  // Whether every point of the input is in the camera's view: the next run keeps the view
+  // then (a click is always in view: the picture does not jump under the pointer), else
+  // it is fitted again (a script's coordinates, or an empty input).
+  bool in_view(const scene::Camera& camera) const;
+  // The canvas tool's state (edit_canvas.hpp).
+  EditCanvasState tool;
+  // Why the last edit asked for was refused (an EditRefused's words), or what was saved;
+  // the edit panel shows it and `state` reports it.
+  std::string message;
+  void say(std::string text) { message = std::move(text); }
+  // Ctrl+S: saves to the workbench's file; without one (a new input), says that Save as
+  // (the panel's field) needs a name. Returns what it said.
+  std::string save(const std::string& path = "");
+  // Undo and redo (Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y); the polyline being drawn ends.
+  void undo();
+  void redo();
+
+ private:
+  std::unique_ptr<Workbench> bench_;
+  std::string known_input_;
+  std::vector<Operation> known_recipe_;
+};
+
+}  // namespace meshstep::viewer

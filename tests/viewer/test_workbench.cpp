@@ -1,0 +1,400 @@
+// The workbench (issue 27): an input drawn from nothing in the viewer, re-meshed at each
+// edit, undone and redone, saved; the core's refusals shown in place; the recipe run again;
+// the canvas edited by the mouse and keys. Driven by scripts off screen (EGL, OSMesa) and in
+// a window under xvfb-run, as test_viewer_program.cpp.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "meshstep/error.hpp"
+#include "meshstep/io/triangle_io.hpp"
+#include "meshstep/refine/run_spec.hpp"
+#include "meshstep/io/write_pslg.hpp"
+#include "meshstep/scene/image.hpp"
+#include "program_support.hpp"
+#include "script.hpp"
+#include "workbench.hpp"
+
+namespace meshstep::viewer {
+namespace {
+
+using testing::field;
+using testing::has;
+using testing::read_text;
+using testing::Result;
+using testing::run;
+
+namespace fs = std::filesystem;
+
+// The number after "KEY": inside the object that follows "OBJECT": in the state.
+long long inner(const std::string& json, const std::string& object, const std::string& key) {
+  const auto at = json.find("\"" + object + "\": {");
+  if (at == std::string::npos) return -1;
+  const std::string tag = "\"" + key + "\": ";
+  const auto k = json.find(tag, at);
+  return k == std::string::npos ? -1 : std::atoll(json.c_str() + k + tag.size());
+}
+
+// The input's counts, as "vertices segments holes regions".
+std::string counts(const std::string& json) {
+  std::ostringstream s;
+  s << inner(json, "input", "vertices") << " " << inner(json, "input", "segments") << " "
+    << inner(json, "input", "holes") << " " << inner(json, "input", "regions");
+  return s.str();
+}
+
+double mesh_area(const TriMesh& m) {
+  double total = 0;
+  for (const auto& t : m.triangles) {
+    const Point a = m.points[t[0]], b = m.points[t[1]], c = m.points[t[2]];
+    total += 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  }
+  return total;
+}
+
+std::vector<unsigned long long> frame_allocations(const fs::path& frames) {
+  std::ifstream in(frames);
+  std::vector<unsigned long long> out;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream f(line);
+    unsigned long long index = 0, count = 0;
+    double end_ms = 0, frame_ms = 0;
+    f >> index >> end_ms >> frame_ms >> count;
+    out.push_back(count);
+  }
+  return out;
+}
+
+// A 4 x 3 rectangle with a 1 x 1 square hole, segment by segment: each end snaps to the
+// vertex the segment before made.
+const char* kRectangleWithHole =
+    "edit add-segment 0 0 4 0\n"
+    "edit add-segment 4 0 4 3\n"
+    "edit add-segment 4 3 0 3\n"
+    "edit add-segment 0 3 0 0\n"
+    "edit add-segment 1.5 1 2.5 1\n"
+    "edit add-segment 2.5 1 2.5 2\n"
+    "edit add-segment 2.5 2 1.5 2\n"
+    "edit add-segment 1.5 2 1.5 1\n"
+    "edit hole 2 1.5\n";
+
+// In process: the workbench's model, without a window.
+TEST(WorkbenchModel, FindsTheElementTheCoresMessageNames) {
+  EXPECT_EQ(element_named("vertex 3 has a coordinate that is not a finite number", 0),
+            (ElementRef{InputElement::vertex, 3}));
+  EXPECT_EQ(element_named("coordinates too far apart in magnitude: 1e-300 of hole point 2 (1e-300, 0) is more "
+                          "than 2^140 (about 1e42) times smaller than 1 of vertex 0 (1, 0)",
+                          0),
+            (ElementRef{InputElement::hole, 2}));
+  EXPECT_EQ(element_named("segment 4 names a vertex that does not exist", 1), (ElementRef{InputElement::segment, 3}));
+  EXPECT_EQ(element_named("region point 1 ...", 1), (ElementRef{InputElement::region, 0}));
+  EXPECT_EQ(element_named("no element here, vertex x", 0).kind, InputElement::none);
+}
+
+TEST(WorkbenchModel, RemeshesWhenStaleKeepsTheLastGoodMeshAndRunsTheRecipe) {
+  Pslg square;
+  square.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  square.segments = {{0, 1, 0}, {1, 2, 0}, {2, 3, 0}, {3, 0, 0}};
+  Workbench bench(square, {parse_operation("refine --max-area 0.01")}, "");
+  EXPECT_TRUE(bench.stale());
+  std::unique_ptr<Session> first = bench.remesh();
+  ASSERT_NE(first, nullptr);
+  EXPECT_FALSE(bench.stale());
+  EXPECT_FALSE(bench.refused());
+  ASSERT_NE(first->log(), nullptr);
+  EXPECT_GT(bench.mesh_triangles(), 100u);  // area 1 in triangles of at most 0.01
+  EXPECT_EQ(first->scene().mesh.triangles.size(), bench.mesh_triangles());  // shown at the run's end
+  const std::size_t good = bench.mesh_triangles();
+  bench.editor().add_vertex({1e-300, 0.5});
+  EXPECT_TRUE(bench.stale());
+  EXPECT_EQ(bench.remesh(), nullptr);  // refused: the viewer keeps what it shows
+  EXPECT_TRUE(bench.refused());
+  EXPECT_EQ(bench.notices().front().element, (ElementRef{InputElement::vertex, 4}));
+  EXPECT_EQ(bench.mesh_triangles(), good);
+  bench.editor().undo();
+  EXPECT_NE(bench.remesh(), nullptr);
+  EXPECT_FALSE(bench.refused());
+  EXPECT_EQ(bench.mesh_triangles(), good);  // the same input, the same recipe: the same mesh
+}
+
+TEST(WorkbenchModel, ScriptsCheckTheEditActionsWords) {
+  const fs::path file = fs::temp_directory_path() / ("workbench_script_" + std::to_string(::getpid()) + ".txt");
+  const auto refusal = [&](const std::string& text) {
+    std::ofstream(file) << text;
+    try {
+      read_script(file.string());
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(refusal("new\nedit add-vertex 1 2\nedit region 0 0 3\nedit region 0 0 3 0.5\nundo\nredo\nsave a.poly\n"
+                    "refine-region 0 0 1 1 --max-area 0.1\nrecipe off 1\nsave-recipe a.recipe\n"),
+            "");
+  EXPECT_TRUE(has(refusal("edit add-vertex 1\n"), ":1: expected: edit add-vertex X Y"));
+  EXPECT_TRUE(has(refusal("new\nedit add-segment 0 0 1 y\n"), ":2: 'y' is not a number"));
+  EXPECT_TRUE(has(refusal("edit squash 1 1\n"), ":1: unknown edit 'squash' (add-vertex, add-segment, move, delete"));
+  EXPECT_TRUE(has(refusal("save out.txt\n"), ":1: expected: save FILE.poly"));
+  EXPECT_TRUE(has(refusal("undo 3\n"), ":1: expected: undo"));
+  // A region operation's options are the recipe line's, checked before anything runs.
+  EXPECT_TRUE(has(refusal("refine-region 0 0 1 1 --min-angle -3\n"), ":1: refine-region: --min-angle")) << refusal("refine-region 0 0 1 1 --min-angle -3\n");
+  EXPECT_TRUE(has(refusal("refine-region 1 1 0 0 --max-area 1\n"), ":1: refine-region: "));
+  EXPECT_TRUE(has(refusal("recipe sideways 1\n"), ":1: expected: recipe remove|off|on|up|down N"));
+  fs::remove(file);
+}
+
+class WorkbenchProgram : public ::testing::TestWithParam<std::string> {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("viewer_workbench_" + std::to_string(::getpid()) + "_" + GetParam());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  // The viewer with no file (the start page), or on FILE, with this script.
+  Result view(const std::string& script, const std::string& file = "", const std::string& extra = "") {
+    return testing::view_log(MESHSTEP_VIEW_BINARY, file, dir_, GetParam(), "1024x640", script, extra);
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+TEST_P(WorkbenchProgram, ARectangleWithASquareHoleFromNothingUndoneRedoneAndSaved) {
+  const std::string saved = path("drawn.poly");
+  VIEW_OR_SKIP(r, "new\nstate " + path("empty.json") + "\n" +
+                      "edit add-segment 0 0 4 0\nedit add-segment 4 0 4 3\nedit add-segment 4 3 0 3\n"
+                      "edit add-segment 0 3 0 0\nstate " + path("rectangle.json") + "\n" +
+                      "edit add-segment 1.5 1 2.5 1\nedit add-segment 2.5 1 2.5 2\nedit add-segment 2.5 2 1.5 2\n"
+                      "edit add-segment 1.5 2 1.5 1\nedit hole 2 1.5\nstate " + path("holed.json") +
+                      "\nundo\nstate " + path("undo1.json") + "\nundo\nstate " + path("undo2.json") +
+                      "\nredo\nredo\nstate " + path("redone.json") + "\nsave " + saved + "\nscreenshot " +
+                      path("workbench.png") + "\nquit\n");
+  const std::string empty = read_text(path("empty.json")), rectangle = read_text(path("rectangle.json"));
+  const std::string holed = read_text(path("holed.json")), undo1 = read_text(path("undo1.json"));
+  const std::string undo2 = read_text(path("undo2.json")), redone = read_text(path("redone.json"));
+  EXPECT_TRUE(has(empty, "\"editing\": true")) << empty;
+  EXPECT_EQ(counts(empty), "0 0 0 0") << empty;
+  EXPECT_TRUE(has(empty, "\"refusal\": null")) << empty;  // nothing to mesh is not a refusal
+  EXPECT_EQ(counts(rectangle), "4 4 0 0") << rectangle;
+  EXPECT_EQ(field(rectangle, "mesh_triangles"), 2) << rectangle;
+  EXPECT_TRUE(has(rectangle, "\"recipe\": []")) << rectangle;  // a new input: the triangulation alone
+  EXPECT_TRUE(has(rectangle, "\"refusal\": null")) << rectangle;
+  // The square's ring of 8 vertices: 8 triangles round the hole.
+  EXPECT_EQ(counts(holed), "8 8 1 0") << holed;
+  EXPECT_EQ(field(holed, "mesh_triangles"), 8) << holed;
+  // The timeline is the new run's: its steps, its statistics.
+  EXPECT_GT(field(holed, "step_count"), 0) << holed;
+  EXPECT_EQ(inner(holed, "stats", "triangles"), 8) << holed;
+  // Without the hole: the square is meshed too (2 more triangles).
+  EXPECT_EQ(counts(undo1), "8 8 0 0") << undo1;
+  EXPECT_EQ(field(undo1, "mesh_triangles"), 10) << undo1;
+  // Without the square's last side: no closed square, still 10 triangles (a CDT of 8 points).
+  EXPECT_EQ(counts(undo2), "8 7 0 0") << undo2;
+  EXPECT_EQ(field(undo2, "mesh_triangles"), 10) << undo2;
+  EXPECT_EQ(field(undo2, "undo_depth"), field(holed, "undo_depth") - 2) << undo2;
+  EXPECT_EQ(counts(redone), counts(holed)) << redone;
+  EXPECT_EQ(field(redone, "mesh_triangles"), 8) << redone;
+
+  // The saved file triangulates validly, with the hole: the rectangle's area less the square's.
+  const std::string out = path("out");
+  const Result t = run(std::string(MESHSTEP_BINARY) + " triangulate " + saved + " -o " + out + " -q");
+  ASSERT_EQ(t.status, 0) << t.output;
+  const Result c = run(std::string(MESHSTEP_BINARY) + " check " + out);
+  EXPECT_EQ(c.status, 0) << c.output;
+  const TriMesh mesh = io::read_mesh(out);
+  EXPECT_EQ(mesh.triangles.size(), 8u);
+  EXPECT_DOUBLE_EQ(mesh_area(mesh), 12.0 - 1.0);
+  EXPECT_EQ(mesh.holes.size(), 1u);
+
+  const scene::Image shot = scene::read_png(path("workbench.png"));
+  EXPECT_EQ(shot.width, 1024);
+}
+
+TEST_P(WorkbenchProgram, WhatTheCoreRefusesIsShownInPlaceAndTheLastGoodMeshStays) {
+  VIEW_OR_SKIP(r, "new\nedit add-vertex 0 0\nedit add-vertex 1 0\nedit add-vertex 0 1\nstate " + path("good.json") +
+                      "\nedit add-vertex 1e-300 0.5\nstate " + path("refused.json") + "\nscreenshot " +
+                      path("refused.png") + "\nundo\nedit add-vertex 1 0\nedit hole 5 5\nstate " +
+                      path("warned.json") + "\nquit\n");
+  const std::string good = read_text(path("good.json")), refused = read_text(path("refused.json"));
+  const std::string warned = read_text(path("warned.json"));
+  EXPECT_EQ(field(good, "mesh_triangles"), 1) << good;
+  // 1e-300 among unit coordinates is outside the range rule: the core's words, at vertex 3.
+  EXPECT_TRUE(has(refused, "\"refusal\": \"coordinates too far apart in magnitude: 1e-300 of vertex 3")) << refused;
+  EXPECT_TRUE(has(refused, "{\"element\": \"vertex\", \"index\": 3, \"refused\": true")) << refused;
+  EXPECT_EQ(counts(refused), "4 0 0 0") << refused;  // nothing lost
+  EXPECT_EQ(field(refused, "mesh_triangles"), 1) << refused;
+  EXPECT_EQ(inner(refused, "stats", "triangles"), 1) << refused;  // the last good mesh, still shown
+  // Two vertices at one place are merged (a warning), and a hole point outside every domain
+  // removes nothing (the core says nothing of it; the workbench does).
+  EXPECT_TRUE(has(warned, "\"refusal\": null")) << warned;
+  EXPECT_TRUE(has(warned, "{\"element\": \"vertex\", \"index\": 3, \"refused\": false, \"text\": \"1 duplicate "
+                          "vertices merged (e.g. vertex 3 is at the same place as vertex 1)\"}"))
+      << warned;
+  EXPECT_TRUE(has(warned, "{\"element\": \"hole\", \"index\": 0, \"refused\": false, \"text\": \"hole point 0 "
+                          "removes nothing"))
+      << warned;
+}
+
+TEST_P(WorkbenchProgram, AnEditThatMakesNoSenseStopsTheScriptWithItsLine) {
+  const Result r = view("new\nedit add-vertex 0 0\nedit delete 5 5\nquit\n");
+  if (r.status == 77) GTEST_SKIP() << r.output;
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_TRUE(has(r.output, "script.txt:3: edit delete: nothing at 5 5")) << r.output;
+}
+
+// The recipe of the run opened runs again after each edit, as `meshstep run` runs it: the
+// saved input and recipe give, through `meshstep run`, the mesh the window shows.
+TEST_P(WorkbenchProgram, TheRunsRecipeRunsAgainAfterAnEdit) {
+  const std::string input = path("plate.poly");
+  fs::copy_file(MESHSTEP_ASSETS "/examples/plate.poly", input);
+  const std::string saved = path("moved.poly");
+  // The input's first vertex, moved a little: read its place from the file.
+  const Pslg plate = io::read_poly(input);
+  const Point p = plate.points[0];
+  char move[256];
+  std::snprintf(move, sizeof move, "edit move %.17g %.17g %.17g %.17g\n", p.x, p.y, p.x + 0.01, p.y);
+  VIEW_OR_SKIP(r, std::string("state ") + path("before.json") + "\n" + move + "state " + path("after.json") +
+                      "\nsave " + saved + "\nquit\n",
+               input, "--algorithm lepp-centroid --min-angle 25");
+  const std::string before = read_text(path("before.json")), after = read_text(path("after.json"));
+  EXPECT_TRUE(has(after, "\"recipe\": [\"refine --algorithm lepp-centroid --min-angle 25")) << after;
+  const std::string recipe = path("plate.recipe");
+  std::ofstream(recipe) << "refine --algorithm lepp-centroid --min-angle 25\n";
+  const std::string out = path("moved_out");
+  const Result m = run(std::string(MESHSTEP_BINARY) + " run " + recipe + " " + saved + " -o " + out + " -q");
+  ASSERT_EQ(m.status, 0) << m.output;
+  EXPECT_EQ(static_cast<long long>(io::read_mesh(out).triangles.size()), field(after, "mesh_triangles")) << after;
+  EXPECT_EQ(inner(after, "stats", "triangles"), field(after, "mesh_triangles")) << after;
+  // The recipe ran (every angle at least 25 degrees; the triangulation alone has smaller),
+  // on the input as edited.
+  const auto min_angle = [](const std::string& json) {
+    const auto at = json.find("\"min_angle\": ");
+    return at == std::string::npos ? -1.0 : std::atof(json.c_str() + at + 13);
+  };
+  EXPECT_GE(min_angle(after), 25.0) << after;
+  EXPECT_EQ(io::read_poly(saved).points[0].x, p.x + 0.01);
+  EXPECT_EQ(io::read_poly(saved).points[0].y, p.y);
+  EXPECT_TRUE(has(before, "\"editing\": false")) << before;
+}
+
+// A region refined from a script (issue 27 item 3): the operation goes to the end of the
+// recipe and runs at once; the saved recipe and input give, through `meshstep run`, the mesh
+// the window shows. Switched off (item 4), the operation no longer runs.
+TEST_P(WorkbenchProgram, ARegionRefinedFromAScriptIsReproducedBySavedRecipeAndInput) {
+  const std::string input = path("plate.poly");
+  fs::copy_file(MESHSTEP_ASSETS "/examples/plate.poly", input);
+  const std::string saved = path("saved.poly"), recipe = path("saved.recipe");
+  VIEW_OR_SKIP(r, "edit move 10 0 10 0.25\nstate " + path("plain.json") +
+                      "\nrefine-region 0 0 3 3 --max-area 0.05\nstate " + path("refined.json") + "\nsave " + saved +
+                      "\nsave-recipe " + recipe + "\nrecipe off 1\nstate " + path("off.json") + "\nquit\n",
+               input);
+  const std::string plain = read_text(path("plain.json")), refined = read_text(path("refined.json"));
+  const std::string off = read_text(path("off.json"));
+  EXPECT_TRUE(has(plain, "\"recipe\": []")) << plain;
+  EXPECT_TRUE(has(refined, "\"recipe\": [\"refine --max-area 0.05 --region 0,0,3,3\"]")) << refined;
+  EXPECT_GT(field(refined, "mesh_triangles"), field(plain, "mesh_triangles") + 50) << refined;
+  EXPECT_EQ(field(off, "mesh_triangles"), field(plain, "mesh_triangles")) << off;
+  const std::string out = path("reproduced");
+  const Result m = run(std::string(MESHSTEP_BINARY) + " run " + recipe + " " + saved + " -o " + out + " -q");
+  ASSERT_EQ(m.status, 0) << m.output << read_text(recipe);
+  const TriMesh mesh = io::read_mesh(out);
+  EXPECT_EQ(static_cast<long long>(mesh.triangles.size()), field(refined, "mesh_triangles")) << read_text(recipe);
+  // Refined in the box only: every triangle with its centroid in it meets the bound.
+  for (const auto& t : mesh.triangles) {
+    const Point a = mesh.points[t[0]], b = mesh.points[t[1]], c = mesh.points[t[2]];
+    const Point g{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
+    const double area = 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    if (g.x >= 0 && g.x <= 3 && g.y >= 0 && g.y <= 3) {
+      EXPECT_LE(area, 0.05);
+    }
+  }
+}
+
+// The canvas through the pointer and the keys: three clicks with the segment tool and a
+// fourth on the first vertex close a triangle; Ctrl+Z takes the last segment back, Ctrl+Y
+// gives it again; a drag moves a vertex (one edit).
+TEST_P(WorkbenchProgram, TheMouseDrawsAPolygonAndTheKeysUndoAndRedo) {
+  // The canvas of a 1024x640 window: left of the side panel; its middle, roughly, at
+  // (320, 300). Pixels 120 apart are far more than the snapping distance.
+  VIEW_OR_SKIP(r, "key Ctrl+N\nframes 2\nmouse 260 360\nclick\nmouse 420 360\nclick\nmouse 340 220\nclick\n"
+                  "state " + path("open.json") + "\nmouse 260 360\nclick\nstate " + path("closed.json") +
+                  "\nkey Ctrl+Z\nstate " + path("undone.json") + "\nkey Ctrl+Y\nstate " + path("redone.json") +
+                  "\nsave " + path("a.poly") + "\nmouse 340 220\ndrag 0 -60\nframes 2\nstate " +
+                  path("dragged.json") + "\nsave " + path("b.poly") + "\nscreenshot " +
+                  path("mouse.png") + "\nquit\n");
+  const std::string open = read_text(path("open.json")), closed = read_text(path("closed.json"));
+  const std::string undone = read_text(path("undone.json")), redone = read_text(path("redone.json"));
+  const std::string dragged = read_text(path("dragged.json"));
+  EXPECT_EQ(counts(open), "3 2 0 0") << open;
+  EXPECT_EQ(counts(closed), "3 3 0 0") << closed;  // the click on the first vertex closed it
+  EXPECT_EQ(field(closed, "mesh_triangles"), 1) << closed;
+  EXPECT_EQ(counts(undone), "3 2 0 0") << undone;
+  EXPECT_EQ(counts(redone), "3 3 0 0") << redone;
+  EXPECT_EQ(counts(dragged), "3 3 0 0") << dragged;
+  EXPECT_EQ(field(dragged, "undo_depth"), field(redone, "undo_depth") + 1) << dragged;
+  // The drag moved the apex 60 pixels up, and nothing else; the view stayed put.
+  const Pslg a = io::read_poly(path("a.poly")), b = io::read_poly(path("b.poly"));
+  ASSERT_EQ(a.points.size(), 3u);
+  ASSERT_EQ(b.points.size(), 3u);
+  const auto at = dragged.find("\"pixels_per_unit\": ");
+  ASSERT_NE(at, std::string::npos);
+  const double pixels_per_unit = std::atof(dragged.c_str() + at + 19);
+  EXPECT_EQ(b.points[0].x, a.points[0].x);
+  EXPECT_EQ(b.points[1].y, a.points[1].y);
+  EXPECT_EQ(b.points[2].x, a.points[2].x);
+  EXPECT_NEAR((b.points[2].y - a.points[2].y) * pixels_per_unit, 60.0, 1e-6);
+  // The first two clicks 160 pixels apart, on one horizontal line.
+  EXPECT_EQ(a.points[0].y, a.points[1].y);
+  EXPECT_NEAR((a.points[1].x - a.points[0].x) * pixels_per_unit, 160.0, 1e-6);
+}
+
+// A region refined through the mouse and the panel's form (issue 27 item 3): the box tool,
+// a box dragged over the mesh, a bound typed into the form built from the registry's
+// records, "Refine the box". The panel's places are those of a 1024x640 window.
+TEST_P(WorkbenchProgram, TheMouseRefinesABoxWithTheFormsOperation) {
+  const std::string input = path("plate.poly");
+  fs::copy_file(MESHSTEP_ASSETS "/examples/plate.poly", input);
+  const std::string saved = path("saved.poly"), recipe = path("saved.recipe");
+  VIEW_OR_SKIP(r, "key E\nframes 2\nstate " + path("plain.json") +
+                      "\nmouse 663 163\nclick\nmouse 40 300\ndrag 200 140\nframes 2\nmouse 710 346\nclick\n"
+                      "type 0.05\nmouse 706 397\nclick\nframes 2\nstate " + path("refined.json") + "\nsave " + saved +
+                      "\nsave-recipe " + recipe + "\nscreenshot " + path("box.png") + "\nquit\n",
+               input);
+  const std::string plain = read_text(path("plain.json")), refined = read_text(path("refined.json"));
+  // The form's algorithm (the first of the registry's) and bound, the box as dragged.
+  EXPECT_TRUE(has(refined, "\"recipe\": [\"refine --algorithm circumcenter --max-area 0.05 --region 0.26")) << refined;
+  EXPECT_GT(field(refined, "mesh_triangles"), field(plain, "mesh_triangles") + 50) << refined;
+  const std::string out = path("reproduced");
+  const Result m = run(std::string(MESHSTEP_BINARY) + " run " + recipe + " " + saved + " -o " + out + " -q");
+  ASSERT_EQ(m.status, 0) << m.output << read_text(recipe);
+  EXPECT_EQ(static_cast<long long>(io::read_mesh(out).triangles.size()), field(refined, "mesh_triangles"))
+      << read_text(recipe);
+}
+
+// In edit mode, with the input drawn over the mesh and a notice beside it, an idle frame
+// still allocates nothing.
+TEST_P(WorkbenchProgram, IdleFramesInEditModeDoNotAllocate) {
+  const fs::path frames = dir_ / "frames.txt";
+  VIEW_OR_SKIP(r, std::string("new\n") + kRectangleWithHole + "edit region 0.5 0.5 2 0.1\nedit hole 9 9\nframes 24\nquit\n", "",
+               "--frame-log " + frames.string());
+  const std::vector<unsigned long long> allocations = frame_allocations(frames);
+  ASSERT_GE(allocations.size(), 24u);
+  for (std::size_t i = allocations.size() - 20; i < allocations.size(); ++i)
+    EXPECT_EQ(allocations[i], 0u) << "idle frame " << i;
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, WorkbenchProgram, ::testing::Values("egl", "osmesa", "window"),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+}  // namespace
+}  // namespace meshstep::viewer
