@@ -139,5 +139,50 @@ TEST(LabelPlacement, EveryStepOfTheLessonAt1280x720) {
   EXPECT_GT(asked_overlaps, 0u) << "some moment had labels asking for overlapping places";
 }
 
+// Does segment p-q touch the box? An end inside, or a crossing of one of its four sides.
+bool segment_meets_box(const Point& p, const Point& q, const Box& b) {
+  const auto in = [&](const Point& x) { return x.x > b.x0 && x.x < b.x1 && x.y > b.y0 && x.y < b.y1; };
+  if (in(p) || in(q)) return true;
+  const auto orient = [](const Point& a, const Point& c, const Point& d) {
+    return (c.x - a.x) * (d.y - a.y) - (c.y - a.y) * (d.x - a.x);
+  };
+  const auto cross = [&](const Point& a, const Point& c) {
+    return orient(p, q, a) * orient(p, q, c) < 0 && orient(a, c, p) * orient(a, c, q) < 0;
+  };
+  const Point tl{b.x0, b.y0}, tr{b.x1, b.y0}, br{b.x1, b.y1}, bl{b.x0, b.y1};
+  return cross(tl, tr) || cross(tr, br) || cross(br, bl) || cross(bl, tl);
+}
+
+// Step 0 of lesson.poly at 1280x720: the fourteen vertex names all show, and none lies on a
+// segment of the outline, the hole or the crack (there is room beside every vertex).
+TEST(LabelPlacement, VertexNamesAtStepZeroStayOffTheSegments) {
+  testing::TempDir dir("meshstep_labels_");
+  const std::string log_path = dir.file("lesson.mslog");
+  const testing::CommandResult run = testing::run_meshstep(
+      "refine " + std::string(MESHSTEP_ASSETS) + "/examples/lesson.poly --min-angle 30 --record " + log_path + " -o " +
+          dir.file("out") + " -q",
+      dir.path());
+  ASSERT_EQ(run.status, 0) << run.err;
+  const replay::LogReader log(log_path);
+  replay::Replay cursor(log);
+  cursor.seek_event(replay::step_position(log, 0));
+  const Scene s = build_scene(cursor, SceneOptions{});
+  const Camera camera = fit_scene(s, 1280, 720);
+  const std::vector<PlacedLabel> placed = place_labels(s, camera, estimated_text_extent);
+  ASSERT_EQ(placed.size(), 14u);
+  const Shape* segments = s.find("segments");
+  ASSERT_NE(segments, nullptr);
+  std::size_t asked_on_a_segment = 0;
+  for (const PlacedLabel& l : placed) {
+    const Box asked = asked_box(s, camera, s.labels[l.label]);
+    for (std::size_t i = 0; i + 1 < segments->points.size(); i += 2) {
+      const Point p = camera.to_screen(segments->points[i]), q = camera.to_screen(segments->points[i + 1]);
+      EXPECT_FALSE(segment_meets_box(p, q, box_of(l))) << "vertex " << s.labels[l.label].text << "'s name is on a segment";
+      asked_on_a_segment += segment_meets_box(p, q, asked);
+    }
+  }
+  EXPECT_GT(asked_on_a_segment, 0u) << "where they asked to be, some names were on segments";
+}
+
 }  // namespace
 }  // namespace meshstep::scene

@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
+#include <utility>
 
 #include "meshstep/scene/layout.hpp"
 
@@ -81,6 +83,77 @@ class Grid {
   std::vector<std::vector<std::size_t>> cells_;
 };
 
+// Does the segment a-b pass through the box? (Liang-Barsky: the part of it inside.)
+bool crosses(const Box& b, const Point& a, const Point& c) {
+  double t0 = 0.0, t1 = 1.0;
+  const double d[2] = {c.x - a.x, c.y - a.y};
+  const double lo[2] = {b.x0 - a.x, b.y0 - a.y}, hi[2] = {b.x1 - a.x, b.y1 - a.y};
+  for (int i = 0; i < 2; ++i) {
+    if (d[i] == 0.0) {
+      if (lo[i] > 0.0 || hi[i] < 0.0) return false;
+      continue;
+    }
+    double ta = lo[i] / d[i], tb = hi[i] / d[i];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+// The visible segments (the input's outline), which a name should rather not cross: a
+// vertex's name on its own segment reads as part of the drawing. Soft: a name that finds
+// no place clear of them takes one that crosses them. Each segment is filed under the grid
+// cells it passes through (sampled every few pixels), so a label looks at the few near it.
+class SegmentGrid {
+ public:
+  SegmentGrid(const Scene& scene, const Camera& camera)
+      : columns_(camera.width() / kCell + 1), rows_(camera.height() / kCell + 1),
+        cells_(static_cast<std::size_t>(columns_) * rows_) {
+    if (!scene.visible.has(Layer::segments)) return;
+    for (const Shape& s : scene.shapes) {
+      if (s.layer != Layer::segments || s.kind != ShapeKind::lines) continue;
+      if (s.points.size() > 2 * kMaxSegments) return;  // a refined mesh's: too many to matter
+      for (std::size_t i = 0; i + 1 < s.points.size(); i += 2) {
+        const Point a = camera.to_screen(s.points[i]), b = camera.to_screen(s.points[i + 1]);
+        if (!std::isfinite(a.x + a.y + b.x + b.y)) continue;
+        const std::size_t id = ends_.size();
+        ends_.push_back({a, b});
+        const double length = std::hypot(b.x - a.x, b.y - a.y);
+        const int samples = static_cast<int>(std::min(length / 8.0, 4000.0)) + 1;
+        std::size_t last = SIZE_MAX;
+        for (int k = 0; k <= samples; ++k) {
+          const double t = static_cast<double>(k) / samples;
+          const double x = a.x + t * (b.x - a.x), y = a.y + t * (b.y - a.y);
+          if (x < -kCell || y < -kCell || x > camera.width() + kCell || y > camera.height() + kCell) continue;
+          const std::size_t cell = index(x, y);
+          if (cell != last && (cells_[cell].empty() || cells_[cell].back() != id)) cells_[cell].push_back(id);
+          last = cell;
+        }
+      }
+    }
+  }
+  bool hits(const Box& b) const {
+    for (int y = clamp_cell(b.y0, rows_); y <= clamp_cell(b.y1, rows_); ++y)
+      for (int x = clamp_cell(b.x0, columns_); x <= clamp_cell(b.x1, columns_); ++x)
+        for (const std::size_t id : cells_[static_cast<std::size_t>(y) * columns_ + x])
+          if (crosses(b, ends_[id].first, ends_[id].second)) return true;
+    return false;
+  }
+
+ private:
+  static constexpr int kCell = 32;
+  static constexpr std::size_t kMaxSegments = 5000;
+  static int clamp_cell(double v, int n) { return std::clamp(static_cast<int>(std::floor(v / kCell)), 0, n - 1); }
+  std::size_t index(double x, double y) const {
+    return static_cast<std::size_t>(clamp_cell(y, rows_)) * columns_ + clamp_cell(x, columns_);
+  }
+  int columns_, rows_;
+  std::vector<std::vector<std::size_t>> cells_;
+  std::vector<std::pair<Point, Point>> ends_;
+};
+
 }  // namespace
 
 double estimated_text_width(std::string_view text, double size_px) {
@@ -105,6 +178,7 @@ std::vector<PlacedLabel> place_labels(const Scene& scene, const Camera& camera, 
   const double width = camera.width(), height = camera.height();
   const double k = scene.text_scale;
   Grid blocked(obstacles(scene, camera), camera.width(), camera.height());
+  const SegmentGrid segments(scene, camera);
   std::vector<Box> placed_boxes;
 
   std::vector<std::size_t> order(scene.labels.size());
@@ -132,15 +206,24 @@ std::vector<PlacedLabel> place_labels(const Scene& scene, const Camera& camera, 
                                                    {centred, above}, {centred, below}, {right, level}, {left, level}}})
         spots.push_back(p);
     }
-    for (const Point& spot : spots) {
-      const double x = std::round(spot.x), base = std::round(spot.y);
-      const Box box{x - kHaloPx, base - e.ascent, x + e.width + kHaloPx, base + e.descent};
-      if (box.x0 < 0.0 || box.y0 < 0.0 || box.x1 > width || box.y1 > height) continue;
-      if (blocked.hits(box)) continue;
-      if (std::any_of(placed_boxes.begin(), placed_boxes.end(), [&](const Box& b) { return b.overlaps(box); })) continue;
-      placed_boxes.push_back(box);
-      out.push_back({i, x, base, size, box.x0, box.y0, box.x1, box.y1});
-      break;
+    // Names (of vertices, regions) first look for a place clear of the segments too, then
+    // for one that only crosses them; the step's words stay near their points instead.
+    bool done = false;
+    for (const bool avoid_segments : {true, false}) {
+      if (avoid_segments && label.priority >= 2) continue;
+      for (const Point& spot : spots) {
+        const double x = std::round(spot.x), base = std::round(spot.y);
+        const Box box{x - kHaloPx, base - e.ascent, x + e.width + kHaloPx, base + e.descent};
+        if (box.x0 < 0.0 || box.y0 < 0.0 || box.x1 > width || box.y1 > height) continue;
+        if (blocked.hits(box)) continue;
+        if (std::any_of(placed_boxes.begin(), placed_boxes.end(), [&](const Box& b) { return b.overlaps(box); })) continue;
+        if (avoid_segments && segments.hits(box)) continue;
+        placed_boxes.push_back(box);
+        out.push_back({i, x, base, size, box.x0, box.y0, box.x1, box.y1});
+        done = true;
+        break;
+      }
+      if (done) break;
     }
   }
   std::sort(out.begin(), out.end(), [](const PlacedLabel& a, const PlacedLabel& b) { return a.label < b.label; });

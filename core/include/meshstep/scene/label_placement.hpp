@@ -2,7 +2,9 @@
 //
 // A label asks for a place (its offset from its point); where that place would overlap a
 // label already placed or cover a vertex marker, the label tries a few other places round
-// its point, nearest first, and is left out when none is free. Labels are placed in order
+// its point, nearest first, and is left out when none is free. A name (a vertex's, a
+// region's) would also rather not cross a segment: a place clear of them wins if there is
+// one; the step's own words keep close to their points instead. Labels are placed in order
 // of their priority (Label::priority, higher first), then in the scene's order, so the
 // step's own words keep their place and vertex names give way; the result depends on
 // nothing but the scene and the camera. The GL renderer and the SVG writer both draw what
