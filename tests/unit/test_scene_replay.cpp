@@ -888,7 +888,13 @@ TEST_F(SceneReplay, CaptionSaysWhereAndWhat) {
   const replay::LogReader log(circumcenter_);
   replay::Replay cursor(log);
   const std::string n = std::to_string(log.step_count());
-  EXPECT_EQ(scene_at(cursor, 0).caption, "before the run \u00B7 " + n + " steps");
+  // Before the first triangle the picture is the input, and the caption says what it holds
+  // (plate.poly: its vertices, segments and holes, from the log's header).
+  const Pslg in = io::read_poly(plate());
+  EXPECT_EQ(scene_at(cursor, 0).caption, "before the run \u00B7 " + n + " steps \u00B7 input: " +
+                                             std::to_string(in.points.size()) + " vertices, " +
+                                             std::to_string(in.segments.size()) + " segments, " +
+                                             std::to_string(in.holes.size()) + " holes");
   std::size_t refine = 0, split = 0;
   for (std::uint64_t k = 0; k < log.step_count(); ++k) {
     const std::string c = scene_at(cursor, log.step_start(k + 1)).caption;
