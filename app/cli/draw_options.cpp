@@ -51,12 +51,13 @@ BBox parse_view(const std::string& text) {
 }
 
 // "fill,edges,segments" is exactly those layers; "-caption,-legend" is the default set
-// without those; "all" and "none" start from every layer or none.
+// (every layer but voronoi) without those, "+voronoi" the default set with it; "all" and
+// "none" start from every layer or none.
 scene::LayerSet parse_layers(const std::string& text) {
   using scene::Layer;
   using scene::LayerSet;
-  if (text.empty()) return LayerSet::all();
-  LayerSet set = LayerSet::all();
+  if (text.empty()) return LayerSet::standard();
+  LayerSet set = LayerSet::standard();
   bool first_plain = true;
   for (std::string_view item : split(text, ',')) {
     if (item == "all") {
@@ -98,10 +99,11 @@ void add_draw_options(CLI::App* cmd, DrawArgs& args) {
                   "height (a terrain's or a surface's run: the mean height of the corners)")
       ->default_str("none");
   cmd->add_option("--layers", args.layers,
-                  "Layers to draw: a list of fill, edges, highlight, overlay, segments, vertices,\n"
-                  "holes, labels, caption, legend (exactly those), or changes to all of them\n"
-                  "(-caption,-legend); 'all' and 'none' too")
-      ->default_str("all");
+                  "Layers to draw: a list of fill, edges, voronoi, highlight, overlay, segments,\n"
+                  "vertices, holes, labels, caption, legend (exactly those), or changes to the\n"
+                  "default set, every layer but voronoi (-caption,-legend or +voronoi); 'all'\n"
+                  "(voronoi too) and 'none' too")
+      ->default_str("all but voronoi");
   cmd->add_option("--theme", args.theme, "light (print), dark (screen) or high-contrast (projector)")->default_str("light");
   cmd->add_option("--gl", args.gl,
                   "OpenGL context for PNG pictures: auto (EGL, then OSMesa), egl or osmesa (the\n"

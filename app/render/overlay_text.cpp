@@ -1,5 +1,7 @@
 #include "overlay_text.hpp"
 
+#include "meshstep/scene/label_placement.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -89,24 +91,20 @@ void add_legend(const scene::Scene& s, const scene::Layout& layout, FontCache& f
 }
 
 void add_labels(const scene::Scene& s, const scene::Camera& camera, FontCache& fonts, UiBatch& batch) {
-  const float w = static_cast<float>(camera.width()), h = static_cast<float>(camera.height());
   const Rgba halo = panel_color(s, 160);
-  for (const scene::Label& label : s.labels) {
-    if (label.text.empty()) continue;
-    const Point at = camera.to_screen(label.at);
-    // Scene::text_scale: the label and its offset from its point grow together.
-    const double x = at.x + label.dx_px * s.text_scale, baseline = at.y + label.dy_px * s.text_scale;
-    if (!(std::abs(x) < 1e6 && std::abs(baseline) < 1e6)) continue;  // far off, or not finite
-    const FontAtlas& font = fonts.at(label.size_px * s.text_scale);
-    // Whole pixels: text drawn texel for pixel.
-    const float left = std::round(f(x)), base = std::round(f(baseline));
-    const float right = left + text_width(font, label.text);
-    const float top = base - std::ceil(font.ascent()), bottom = base + std::ceil(font.descent());
-    if (right + 2.0f < 0 || left - 2.0f > w || bottom < 0 || top > h) continue;
+  // Placed so that no two overlap and none covers a vertex (scene/label_placement.hpp),
+  // measured with the fonts that draw them.
+  const scene::MeasureText measure = [&](std::string_view text, double size_px) {
+    const FontAtlas& font = fonts.at(static_cast<float>(size_px));
+    return scene::TextExtent{text_width(font, text), std::ceil(font.ascent()), std::ceil(font.descent())};
+  };
+  for (const scene::PlacedLabel& p : scene::place_labels(s, camera, measure)) {
+    const scene::Label& label = s.labels[p.label];
+    const FontAtlas& font = fonts.at(static_cast<float>(p.size_px));
     batch.begin(scene::Layer::labels, font);
     // A translucent box behind the text, so that it reads over the mesh.
-    batch.rectangle(left - 2.0f, top, right + 2.0f, bottom, halo);
-    batch.text(label.text, left, base, label.color);
+    batch.rectangle(f(p.x0), f(p.y0), f(p.x1), f(p.y1), halo);
+    batch.text(label.text, f(p.left), f(p.baseline), label.color);
   }
 }
 

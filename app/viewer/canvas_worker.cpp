@@ -76,6 +76,7 @@ void CanvasWorker::draw(const CanvasRequest& wanted, Session& session, View3d& v
   session.seek(wanted.position);
   session.set_color_by(wanted.color_by);
   session.set_theme(wanted.theme);
+  session.set_layer(scene::Layer::voronoi, wanted.layers.has(scene::Layer::voronoi));  // built only when shown
   // Copied into the buffers the picture had before (their capacity is reused).
   session.build_moment(out.moment);
   if (out.moment.serial != stats_serial_) {  // measured once per moment, not per pan

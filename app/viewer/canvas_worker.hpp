@@ -36,7 +36,7 @@ struct CanvasRequest {
   std::uint64_t position = 0;
   scene::ColorBy color_by = scene::ColorBy::none;
   scene::Theme theme = scene::Theme::light;
-  scene::LayerSet layers = scene::LayerSet::all();
+  scene::LayerSet layers = scene::LayerSet::standard();
   float text_scale = 1.0f;  // Scene::text_scale
   Point center{0, 0};
   double pixels_per_unit = 1.0;

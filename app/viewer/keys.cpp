@@ -85,18 +85,24 @@ std::vector<KeyAction> make_actions() {
   add({GLFW_KEY_DOWN, false, true}, "Ctrl+Down", "3D: elevation -5\u00B0", [](Viewer& v) { v.turn_orbit(0.0, -5.0); });
   add({GLFW_KEY_Z}, "Z", "3D: heights twice as high", [](Viewer& v) { v.scale_heights(2.0); });
   add({GLFW_KEY_Z, true}, "Shift+Z", "3D: heights half as high", [](Viewer& v) { v.scale_heights(0.5); });
-  // Layers on F2..F10 and F12 (F11 is full screen), in the scene's layer order.
-  static constexpr std::array<const char*, scene::kLayerCount> kLayerKeys = {"F2", "F3", "F4", "F5", "F6",
-                                                                              "F7", "F8", "F9", "F10", "F12"};
+  // Layers on F2..F10 and F12 (F11 is full screen), in the scene's layer order; the Voronoi
+  // diagram, off unless a lecture asks for it, on Shift+V beside them.
   static const std::array<std::string, scene::kLayerCount> kLayerTexts = [] {
     std::array<std::string, scene::kLayerCount> t;
     for (std::size_t i = 0; i < scene::kLayerCount; ++i) t[i] = std::string("layer: ") + scene::name(Layer(i));
     return t;
   }();
+  static constexpr std::array<const char*, 10> kLayerKeys = {"F2", "F3", "F4", "F5", "F6", "F7", "F8", "F9", "F10", "F12"};
+  std::size_t function_key = 0;
   for (std::size_t i = 0; i < scene::kLayerCount; ++i) {
     const auto layer = static_cast<Layer>(i);
-    add({GLFW_KEY_F2 + static_cast<int>(i) + (i >= 9 ? 1 : 0)}, kLayerKeys[i], kLayerTexts[i].c_str(),
-        [layer](Viewer& v) { v.toggle_layer(layer); });
+    const auto toggle = [layer](Viewer& v) { v.toggle_layer(layer); };
+    if (layer == Layer::voronoi) {
+      add({GLFW_KEY_V, true}, "Shift+V", kLayerTexts[i].c_str(), toggle);
+      continue;
+    }
+    const std::size_t k = function_key++;
+    add({GLFW_KEY_F2 + static_cast<int>(k) + (k >= 9 ? 1 : 0)}, kLayerKeys.at(k), kLayerTexts[i].c_str(), toggle);
   }
   static constexpr std::array<const char*, 9> kDigits = {"1", "2", "3", "4", "5", "6", "7", "8", "9"};
   static constexpr std::array<const char*, 9> kCtrlDigits = {"Ctrl+1", "Ctrl+2", "Ctrl+3", "Ctrl+4", "Ctrl+5",

@@ -229,8 +229,11 @@ void Session::set_text_scale(float scale) {
 }
 
 void Session::set_layer(scene::Layer layer, bool on) {
+  // The Voronoi layer's shapes are built only while it is on (scene/build.hpp); any other
+  // layer switched needs no new scene.
+  if (layer == scene::Layer::voronoi && options_.layers.has(layer) != on) scene_stale_ = true;
   options_.layers.set(layer, on);
-  scene_.visible = options_.layers;  // a layer switched needs no new scene
+  scene_.visible = options_.layers;
 }
 
 const scene::Scene& Session::scene() {

@@ -54,7 +54,7 @@ struct Settings {
   bool explain_open = true, layers_open = true, stats_open = true, code_open = true, plots_open = false;
   scene::ColorBy color_by = scene::ColorBy::none;
   scene::Theme theme = scene::Theme::light;
-  scene::LayerSet layers = scene::LayerSet::all();
+  scene::LayerSet layers = scene::LayerSet::standard();
   double speed = 4.0;  // Playback::kMinSpeed..Playback::kMaxSpeed
   Unit unit = Unit::step;
   bool follow = false;

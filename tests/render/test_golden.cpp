@@ -27,6 +27,7 @@
 
 #include "golden_runs.hpp"
 #include "meshstep/check/quality.hpp"
+#include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/replay/replay.hpp"
 #include "meshstep/scene/build.hpp"
@@ -392,6 +393,51 @@ std::optional<Scene> region_case() {
   return s;
 }
 
+// Step 0 of the recorded run: the input before the first triangle, its vertices named by
+// their numbers in lesson.poly.
+std::optional<Scene> step_zero_case() {
+  const replay::LogReader* log = lesson_run(kOffcenter);
+  if (!log) return std::nullopt;
+  const Pslg input = io::read_pslg(asset("lesson.poly"));
+  const Scene s = scene_at(Moment{log, log->step_start(0), {}, 0});
+  EXPECT_TRUE(s.mesh.triangles.empty());
+  EXPECT_EQ(shape(s, "input_vertices").points, input.points);
+  EXPECT_EQ(shape(s, "segments").points.size(), 2 * input.segments.size());
+  EXPECT_EQ(shape(s, "holes").points, input.holes);
+  EXPECT_EQ(s.labels.size(), input.points.size());
+  return s;
+}
+
+// A small Delaunay triangulation with its Voronoi diagram, as a textbook draws the two:
+// twelve points, the diagram's vertices the triangles' circumcenters (computed here).
+std::optional<Scene> voronoi_case() {
+  Pslg points;
+  for (const auto& [x, y] : std::vector<std::pair<double, double>>{
+           {0.0, 0.0}, {4.0, 1.5}, {8.5, 0.0}, {1.5, 3.0}, {5.5, 2.5}, {9.0, 3.5},
+           {0.5, 6.5}, {3.5, 5.0}, {7.0, 6.0}, {2.5, 8.5}, {6.0, 9.0}, {9.5, 8.0}})
+    points.points.push_back({x, y});
+  const TriMesh mesh = triangulate(points);
+  scene::SceneOptions options;
+  options.layers.set(scene::Layer::voronoi);
+  const Scene s = scene::build_scene(mesh, options);
+  const scene::Shape& centers = shape(s, "voronoi_vertices");
+  // Every circumcenter within the picture's box is marked (a flat hull triangle's lies far
+  // below it), and every mark is a circumcenter.
+  std::size_t inside = 0;
+  for (const auto& t : mesh.triangles) {
+    const Point o = circumcenter(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+    if (o.x < s.bounds.lo.x || o.x > s.bounds.hi.x || o.y < s.bounds.lo.y || o.y > s.bounds.hi.y) continue;
+    ++inside;
+    EXPECT_TRUE(std::any_of(centers.points.begin(), centers.points.end(), [&](const Point& c) { return distance(c, o) < 1e-9; }));
+  }
+  EXPECT_EQ(centers.points.size(), inside);
+  EXPECT_GE(inside, mesh.triangles.size() - 2);
+  EXPECT_FALSE(shape(s, "voronoi_edges").points.empty());
+  EXPECT_FALSE(shape(s, "voronoi_rays").points.empty());
+  EXPECT_EQ(shape(s, "voronoi_sites").points.size(), points.points.size());
+  return s;
+}
+
 // A Gaussian hill on a 9x9 grid over [-4, 4]^2, each cell cut along its diagonal, seen from
 // the default orbit camera with heights doubled.
 std::optional<Scene> surface_hill_case() {
@@ -510,6 +556,8 @@ std::optional<Scene> terrain_step_3d_case() {
 const std::vector<GoldenCase>& cases() {
   static const std::vector<GoldenCase> list = {
       {"input", input_case},
+      {"step_zero", step_zero_case},
+      {"voronoi", voronoi_case},
       {"insertion_flips", insertion_case},
       {"segment_recovery", segment_recovery_case},
       {"encroached_circle", [] { return encroached_case(kOffcenter + std::string(" --encroachment circle"), false); }},

@@ -39,6 +39,7 @@ TEST(LogHeaderFields, ComeBackBitForBitThroughALog) {
   in.holes = {{0.3, 1.0 / 3.0}};
   in.regions = {{{0.2, 0.2}, 1.5, 0.01}};
   in.has_segment_markers = true;
+  in.segments = {{0, 1, 5}, {1, 2, 5}, {3, 0, 0}};
   LogHeader header;
   header.parameters = "input_vertices=4";
   describe_input(header, in);
@@ -58,6 +59,27 @@ TEST(LogHeaderFields, ComeBackBitForBitThroughALog) {
   ASSERT_EQ(read.regions.size(), 1u);
   EXPECT_EQ(read.regions[0].max_area, 0.01);
   EXPECT_TRUE(read.has_segment_markers);
+  ASSERT_EQ(read.segments.size(), in.segments.size());
+  for (std::size_t i = 0; i < in.segments.size(); ++i) {
+    EXPECT_EQ(read.segments[i].a, in.segments[i].a) << "segment " << i;
+    EXPECT_EQ(read.segments[i].b, in.segments[i].b) << "segment " << i;
+  }
+}
+
+// An older log has no segments field: it reads, with no segments.
+TEST(LogHeaderFields, ALogWithoutSegmentsReadsWithNone) {
+  testing::TempDir dir("meshstep_header_fields_");
+  const std::string path = dir.file("old.mslog");
+  LogHeader header;
+  header.parameters = "input_vertices=3";
+  LogWriter writer(path, header);
+  TriangulateOptions options;
+  options.record = &writer;
+  Pslg in;
+  in.points = {{0, 0}, {1, 0}, {0, 1}};
+  triangulate(in, options);
+  writer.finish();
+  EXPECT_TRUE(LogReader(path).header().segments.empty());
 }
 
 TEST(LogHeaderFields, MarkersAreStoredAsRuns) {
@@ -87,6 +109,11 @@ TEST(LogHeaderFields, NothingBeyondTheInputsVertices) {
   EXPECT_NE(refusal([] { parse_vertex_attributes_field("1\n1\n2\n3\n", 2); }).find("more vertices than the input's 2"),
             std::string::npos);
   EXPECT_EQ(parse_vertex_markers_field("0 4\n1 6\n", 10).size(), 10u);
+  EXPECT_EQ(refusal([] { parse_segments_field("0 1\n1 3\n", 3); }),
+            "segment 2: a vertex index beyond the input's 3 vertices");
+  EXPECT_EQ(refusal([] { parse_segments_field("0 1 2\n", 3); }), "segment 1: more than 2 numbers");
+  EXPECT_EQ(refusal([] { parse_segments_field("0 -1\n", 3); }), "segment 1: not a number");
+  EXPECT_EQ(parse_segments_field("0 1\n1 2\n", 3).size(), 2u);
 }
 
 // In a log: the field's name and line, as an InputError naming the file.

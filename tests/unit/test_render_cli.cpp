@@ -74,6 +74,27 @@ TEST_F(RenderCli, SvgNeedsNoOpenGLAndDrawsTheMesh) {
   EXPECT_NE(svg.find("segments"), std::string::npos) << "the segments' group";
 }
 
+// The Voronoi layer is off unless --layers asks for it: +voronoi adds it to the default
+// set, a plain list with it draws it, 'all' includes it; step 0 draws the input.
+TEST_F(RenderCli, VoronoiOnlyWhenAskedAndStepZeroDrawsTheInput) {
+  const auto svg_with = [&](const std::string& options) {
+    const CommandResult r = run_meshstep("render " + log_ + " " + options + " -o " + file("v.svg").string(), dir_.path());
+    EXPECT_EQ(r.status, 0) << options << ": " << r.err;
+    return slurp(file("v.svg"));
+  };
+  EXPECT_EQ(svg_with("").find("voronoi_edges"), std::string::npos);
+  EXPECT_EQ(svg_with("--layers -caption").find("voronoi_edges"), std::string::npos);
+  for (const char* on : {"--layers +voronoi", "--layers fill,edges,voronoi", "--layers all"}) {
+    const std::string svg = svg_with(on);
+    EXPECT_NE(svg.find("class=\"voronoi_edges\""), std::string::npos) << on;
+    EXPECT_NE(svg.find("class=\"voronoi_vertices\""), std::string::npos) << on;
+  }
+  const std::string input = svg_with("--step 0");
+  EXPECT_NE(input.find("input: 14 vertices, 12 segments, 1 hole"), std::string::npos);
+  EXPECT_NE(input.find("class=\"segments\""), std::string::npos);
+  EXPECT_NE(input.find(">14</text>"), std::string::npos) << "vertex 14 named";
+}
+
 TEST_F(RenderCli, VertexMarkersOnlyWhereThePictureHasRoomForThem) {
   // The refined lesson has 54 vertices: marked at 1280x720 (room for 1,024), left out at
   // 160x100 (room for 17), where they would hide the mesh.

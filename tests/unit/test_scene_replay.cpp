@@ -63,6 +63,7 @@ std::string record(const testing::TempDir& dir, const std::string& name, const s
                  " input_vertices=" + std::to_string(in.points.size()) +
                  " first_index=" + std::to_string(in.first_index);
   h.insertion = to_string(o.triangulate.insertion);
+  replay::describe_input(h, in);  // segments and holes, as `meshstep refine --record` writes them
   const std::string path = dir.file(name);
   replay::LogWriter writer(path, h);
   o.triangulate.record = &writer;
@@ -225,10 +226,14 @@ std::vector<Point> sorted_points(std::vector<Point> p) {
 // triangle in the same order, point for point; its points are numbered by vertex id), its
 // i-th triangle is the i-th live face slot that is not a ghost face, its segments are the
 // constrained edges, its markers the vertices present; every highlighted triangle is one of
-// the slots written by the step so far.
+// the slots written by the step so far. Before the first triangle (step 0 and the first
+// step's vertices) the mesh has nothing to show and the scene shows the input instead: all
+// of its vertices and all of its segments, whichever the preamble has introduced so far.
 TEST_F(SceneReplay, MeshIsTheCursorsAndTrianglesFollowSlotOrder) {
   const replay::LogReader log(circumcenter_);
   replay::Replay cursor(log);
+  const Pslg in = io::read_poly(plate());
+  std::size_t before_first_triangle = 0;
   for (std::uint64_t p = 0; p <= log.event_count(); ++p) {
     const Scene s = scene_at(cursor, p);
     const TriMesh m = cursor.mesh();
@@ -236,14 +241,20 @@ TEST_F(SceneReplay, MeshIsTheCursorsAndTrianglesFollowSlotOrder) {
     for (std::size_t t = 0; t < m.triangles.size(); ++t)
       for (int i = 0; i < 3; ++i)
         ASSERT_EQ(s.mesh.points[s.mesh.triangles[t][i]], m.points[m.triangles[t][i]]) << "position " << p;
+    const bool input_shown = m.triangles.empty();
+    before_first_triangle += input_shown;
     auto expected_segments = edge_set(), drawn_segments = edge_set();
-    for (const Segment& seg : m.segments) expected_segments.insert(ordered(m.points[seg.a], m.points[seg.b]));
+    if (input_shown)
+      for (const Segment& seg : in.segments) expected_segments.insert(ordered(in.points[seg.a], in.points[seg.b]));
+    else
+      for (const Segment& seg : m.segments) expected_segments.insert(ordered(m.points[seg.a], m.points[seg.b]));
     if (const Shape* seg = s.find("segments"))
       for (std::size_t i = 0; i + 1 < seg->points.size(); i += 2)
         drawn_segments.insert(ordered(seg->points[i], seg->points[i + 1]));
     EXPECT_EQ(drawn_segments, expected_segments) << "position " << p;
-    const std::vector<Point> input(m.points.begin(), m.points.begin() + m.input_vertex_count),
-        steiner(m.points.begin() + m.input_vertex_count, m.points.end());
+    const std::vector<Point> input = input_shown ? in.points
+                                                 : std::vector<Point>(m.points.begin(), m.points.begin() + m.input_vertex_count),
+                             steiner(m.points.begin() + m.input_vertex_count, m.points.end());
     const Shape *input_markers = s.find("input_vertices"), *steiner_markers = s.find("steiner_vertices");
     EXPECT_EQ(input_markers ? sorted_points(input_markers->points) : std::vector<Point>{}, sorted_points(input));
     EXPECT_EQ(steiner_markers ? sorted_points(steiner_markers->points) : std::vector<Point>{}, sorted_points(steiner));
@@ -279,6 +290,7 @@ TEST_F(SceneReplay, MeshIsTheCursorsAndTrianglesFollowSlotOrder) {
           EXPECT_EQ(changed->points[3 * i + k], s.mesh.points[s.mesh.triangles[s.highlighted[i]][k]]);
     }
   }
+  EXPECT_GE(before_first_triangle, 2u) << "the positions before the first triangle: step 0 and the first vertices";
 }
 
 // After a refinement step with flip insertion, the faces it made are exactly the faces
@@ -876,7 +888,13 @@ TEST_F(SceneReplay, CaptionSaysWhereAndWhat) {
   const replay::LogReader log(circumcenter_);
   replay::Replay cursor(log);
   const std::string n = std::to_string(log.step_count());
-  EXPECT_EQ(scene_at(cursor, 0).caption, "before the run \u00B7 " + n + " steps");
+  // Before the first triangle the picture is the input, and the caption says what it holds
+  // (plate.poly: its vertices, segments and holes, from the log's header).
+  const Pslg in = io::read_poly(plate());
+  EXPECT_EQ(scene_at(cursor, 0).caption, "before the run \u00B7 " + n + " steps \u00B7 input: " +
+                                             std::to_string(in.points.size()) + " vertices, " +
+                                             std::to_string(in.segments.size()) + " segments, " +
+                                             std::to_string(in.holes.size()) + " holes");
   std::size_t refine = 0, split = 0;
   for (std::uint64_t k = 0; k < log.step_count(); ++k) {
     const std::string c = scene_at(cursor, log.step_start(k + 1)).caption;

@@ -221,6 +221,7 @@ TEST(Svg, TheWellFormednessCheckerCatchesBrokenDocuments) {
 
 TEST(Svg, IsWellFormed) {
   Scene s = test_scene();
+  s.visible = LayerSet::all();  // the Voronoi layer, off by default, too
   s.caption = "refine · step 1 of 3 · <split> & \"go\"";
   s.labels.push_back({{5, 5}, "A & B <1>", {255, 255, 255, 255}, 12.0f, 2.0f, -2.0f});
   Shape markers;

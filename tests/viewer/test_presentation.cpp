@@ -117,9 +117,11 @@ TEST_P(Presentation, TheCanvasWordsGrowWithTheUiScale) {
   const std::string one = path("one.png"), two = path("two.png");
   VIEW_OR_SKIP(r, "seek step 30\nframes 2\ncanvas " + one + "\nui-scale 2\nframes 2\ncanvas " + two + "\nquit\n");
   const scene::Image a = scene::read_png(one), b = scene::read_png(two);
-  // The caption band is 30 px high at scale 1 and 60 at 2: the same words, twice as large,
-  // leave about four times the ink.
-  EXPECT_GT(dark_pixels_in_rows(b, 60), 2 * dark_pixels_in_rows(a, 30))
+  // The caption band is 30 px high at scale 1 and 60 at 2: the same words, larger, leave
+  // more ink. Not four times: step 30's caption is wider than the canvas beside the panel at
+  // scale 2, and a caption that would run under the panel is set smaller to fit (down to 60%
+  // of its scaled size; scene/layout.cpp), here about 1.8 times the ink.
+  EXPECT_GT(2 * dark_pixels_in_rows(b, 60), 3 * dark_pixels_in_rows(a, 30))
       << dark_pixels_in_rows(b, 60) << " vs " << dark_pixels_in_rows(a, 30);
 }
 

@@ -179,7 +179,7 @@ TEST_F(ViewerSettings, EveryFieldRoundTrips) {
   EXPECT_NE(text.find("\ntheme = dark\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nui_scale = 1.75\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nunit = phase\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("\nlayers = fill, edges, overlay, segments, vertices, holes, caption\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nlayers = fill, edges, voronoi, overlay, segments, vertices, holes, caption\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\ntimeline_marks = rejected, flips, triangulate\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nview_3d = true\nazimuth = -123.5\nelevation = 12.25\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nrecent = /home/me/runs/square with spaces.msl\n"), std::string::npos) << text;

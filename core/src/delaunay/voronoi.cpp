@@ -23,21 +23,22 @@ Point circumcenter(const Point& a, const Point& b, const Point& c) {
 
 }  // namespace
 
-VoronoiDiagram voronoi_of(const TriMesh& mesh) {
+VoronoiDiagram voronoi_of(const TriMesh& mesh) { return voronoi_of(mesh.points, mesh.triangles); }
+
+VoronoiDiagram voronoi_of(std::span<const Point> points, std::span<const std::array<std::uint32_t, 3>> triangles) {
   VoronoiDiagram out;
-  out.vertices.reserve(mesh.triangles.size());
-  for (const auto& t : mesh.triangles)
-    out.vertices.push_back(circumcenter(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]));
+  out.vertices.reserve(triangles.size());
+  for (const auto& t : triangles) out.vertices.push_back(circumcenter(points[t[0]], points[t[1]], points[t[2]]));
   // Every triangle's edges, keyed by their ends; an edge met twice is interior.
   struct Side {
     std::uint32_t lo, hi, triangle;
     std::uint32_t from, to;  // the edge as the (counterclockwise) triangle runs it
   };
   std::vector<Side> sides;
-  sides.reserve(3 * mesh.triangles.size());
-  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
+  sides.reserve(3 * triangles.size());
+  for (std::uint32_t t = 0; t < triangles.size(); ++t)
     for (int i = 0; i < 3; ++i) {
-      const std::uint32_t u = mesh.triangles[t][i], v = mesh.triangles[t][(i + 1) % 3];
+      const std::uint32_t u = triangles[t][i], v = triangles[t][(i + 1) % 3];
       sides.push_back({std::min(u, v), std::max(u, v), t, u, v});
     }
   std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
@@ -46,14 +47,14 @@ VoronoiDiagram voronoi_of(const TriMesh& mesh) {
   for (std::size_t i = 0; i < sides.size();) {
     const Side& s = sides[i];
     if (i + 1 < sides.size() && sides[i + 1].lo == s.lo && sides[i + 1].hi == s.hi) {
-      out.edges.push_back({s.triangle, sides[i + 1].triangle, {}});
+      out.edges.push_back({s.triangle, sides[i + 1].triangle, {}, s.from, s.to});
       i += 2;
       continue;
     }
     // A boundary edge: the mesh is on its left (counterclockwise triangles), so the outward
     // normal is the edge turned clockwise.
-    const Point &p = mesh.points[s.from], &q = mesh.points[s.to];
-    out.edges.push_back({s.triangle, kNoIndex, {q.y - p.y, p.x - q.x}});
+    const Point &p = points[s.from], &q = points[s.to];
+    out.edges.push_back({s.triangle, kNoIndex, {q.y - p.y, p.x - q.x}, s.from, s.to});
     i += 1;
   }
   return out;

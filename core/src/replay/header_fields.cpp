@@ -101,6 +101,24 @@ std::vector<Point> parse_holes_field(const std::string& text) {
   return holes;
 }
 
+std::string segments_field(const std::vector<Segment>& segments) {
+  std::string out;
+  for (const Segment& s : segments) out += std::to_string(s.a) + ' ' + std::to_string(s.b) + '\n';
+  return out;
+}
+
+std::vector<Segment> parse_segments_field(const std::string& text, std::size_t vertex_count) {
+  std::vector<Segment> segments;
+  NumberLines lines(text, "segment");
+  while (lines.more()) {
+    const std::vector<std::uint64_t> v = lines.line<std::uint64_t>(2);
+    if (v[0] >= vertex_count || v[1] >= vertex_count)
+      lines.fail("a vertex index beyond the input's " + std::to_string(vertex_count) + " vertices");
+    segments.push_back({static_cast<std::uint32_t>(v[0]), static_cast<std::uint32_t>(v[1]), 0});
+  }
+  return segments;
+}
+
 // Runs of equal markers, "marker count" a line: a boundary marked 1 among interior 0s
 // takes a few lines, not one number a vertex.
 std::string vertex_markers_field(const std::vector<int>& markers) {
@@ -161,6 +179,7 @@ void describe_input(LogHeader& header, const Pslg& in) {
   header.attributes_per_vertex = in.attributes_per_vertex;
   header.vertex_attributes = in.vertex_attributes;
   header.has_segment_markers = in.has_segment_markers;
+  header.segments = in.segments;
 }
 
 }  // namespace meshstep::replay

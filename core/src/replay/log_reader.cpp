@@ -62,6 +62,7 @@ void LogReader::read_input_fields() {
       if (key == "vertex_attributes")
         std::tie(header_.attributes_per_vertex, header_.vertex_attributes) = parse_vertex_attributes_field(value, limit);
       if (key == "segment_markers") header_.has_segment_markers = value == "1";
+      if (key == "segments") header_.segments = parse_segments_field(value, limit);
     } catch (const std::invalid_argument& e) {
       throw InputError(path_, 0, "the header's " + key + " field is malformed: " + e.what());
     }

@@ -122,6 +122,7 @@ struct LogWriter::Impl {
     if (header.attributes_per_vertex > 0)
       put_field(fields, "vertex_attributes", vertex_attributes_field(header.attributes_per_vertex, header.vertex_attributes));
     if (header.has_segment_markers) put_field(fields, "segment_markers", "1");
+    if (!header.segments.empty()) put_field(fields, "segments", segments_field(header.segments));
     std::vector<std::uint8_t> bytes(format::kFileMagic, format::kFileMagic + 8);
     format::put_le(bytes, encoder.format_version());
     format::put_le(bytes, static_cast<std::uint32_t>(fields.size()));

@@ -127,7 +127,7 @@ void add_regions(Scene& scene, std::span<const Region> regions) {
       std::snprintf(text, sizeof text, "region %g, area \u2264 %g", r.attribute, r.max_area);
     else
       std::snprintf(text, sizeof text, "region %g", r.attribute);
-    scene.labels.push_back({r.point, text, base.text, 12.0f, 9.0f, -9.0f});
+    scene.labels.push_back({r.point, text, base.text, 12.0f, 9.0f, -9.0f, 1});
   }
 }
 
@@ -180,6 +180,7 @@ Scene build_scene(const TriMesh& mesh, const SceneOptions& options) {
   in.min_angle_bound = detail::quality_bound(options, nullptr);
   scene.legend = detail::fill_triangles(options.color_by, options.theme, in, scene.mesh);
 
+  if (options.layers.has(Layer::voronoi)) detail::add_voronoi(scene, options);
   const std::span<const Point> points = mesh.points;
   const std::size_t input_count = std::min(mesh.input_vertex_count, points.size());
   detail::add_segments(scene, points, mesh.segments);

@@ -125,13 +125,24 @@ Scene build_scene(const replay::Replay& cursor, const SceneOptions& options, con
   }
   scene.legend = detail::fill_triangles(options.color_by, options.theme, in, scene.mesh);
 
+  if (options.layers.has(Layer::voronoi)) detail::add_voronoi(scene, options);
   add_changed_faces(scene, story, cursor.slots(), mesh.slot_of);
   detail::add_overlays(scene, story, log);
-  detail::add_segments(scene, scene.mesh.points, mesh.segments);
-  detail::add_vertex_markers(scene, mesh.input_vertices, mesh.steiner_vertices, options);
+  // Before the first triangle the mesh has nothing to show: the input stands in for it, all
+  // of it, whichever of its vertices the preamble has introduced so far.
+  const bool before_first_triangle = scene.mesh.triangles.empty();
+  BBox box = mesh.box;
+  if (before_first_triangle) {
+    const BBox input = detail::add_input_moment(scene, log, options);
+    if (!input.empty()) box.add(input.lo), box.add(input.hi);
+  } else {
+    detail::add_segments(scene, scene.mesh.points, mesh.segments);
+    detail::add_vertex_markers(scene, mesh.input_vertices, mesh.steiner_vertices, options);
+  }
   detail::add_regions(scene, regions);
   scene.caption = detail::step_caption(story, log);
-  scene.bounds = detail::scene_bounds(scene, mesh.box);
+  if (before_first_triangle && !story.in_step) scene.caption += " \u00B7 " + detail::input_description(log);
+  scene.bounds = detail::scene_bounds(scene, box);
   return scene;
 }
 

@@ -1,5 +1,7 @@
 #include "meshstep/scene/layout.hpp"
 
+#include "meshstep/scene/label_placement.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -12,6 +14,8 @@ constexpr double kCaptionFont = 16.0;
 constexpr double kLegendFont = 13.0;
 constexpr double kLegendWidth = 150.0;    // px kept free on the right for the legend
 constexpr double kEdge = 12.0;            // px between the legend and the picture's border
+constexpr double kCaptionShrink = 0.6;    // the smallest a long caption is set, of its size
+constexpr double kEstimateSlack = 0.97;   // the width estimate may be a little short
 
 // Sizes scaled by k (Scene::text_scale): the words grow, and the room kept for them.
 LegendLayout legend_layout(const Legend& legend, int width, int height, double top, double k) {
@@ -55,7 +59,14 @@ Layout layout(const Scene& scene, int width, int height) {
   const double band = kCaptionBand * k;
   if (scene.visible.has(Layer::caption) && !scene.caption.empty()) {
     out.caption_band = Rect{0.0, 0.0, static_cast<double>(width), band};
-    out.caption = {{10.0 * k, 0.5 * band + 0.35 * kCaptionFont * k}, kCaptionFont * k, false};
+    // A caption wider than the picture (a long step at a large UI scale, a canvas narrowed
+    // by the viewer's side panel) is set smaller, down to kCaptionShrink of its size, rather
+    // than run on under the panel. Whole pixels: the renderer keeps one atlas per size.
+    double size = kCaptionFont * k;
+    const double room = width - 2.0 * 10.0 * k, wide = estimated_text_width(scene.caption, size);
+    if (wide > room && room > 0.0)
+      size = std::max(std::floor(size * room / wide * kEstimateSlack), std::ceil(kCaptionShrink * size));
+    out.caption = {{10.0 * k, 0.5 * band + 0.35 * size}, size, false};
     out.margins.top = band + 16.0 * k;
   }
   if (scene.visible.has(Layer::legend) && scene.legend)

@@ -26,6 +26,15 @@ void add_vertex_markers(Scene& scene, std::span<const Point> input, std::span<co
 void add_holes(Scene& scene, std::span<const Point> holes);
 void add_regions(Scene& scene, std::span<const Region> regions);
 
+// The moment before a run's first triangle: the input's vertices (in input order, named),
+// its segments and holes, from the log (build_input_moment.cpp). Returns their box.
+BBox add_input_moment(Scene& scene, const replay::LogReader& log, const SceneOptions& options);
+// "input: 14 vertices, 12 segments, 1 hole" (what the log's header knows of the input).
+std::string input_description(const replay::LogReader& log);
+
+// The Voronoi layer of the scene's mesh (build_voronoi.cpp); lightens the mesh's edges.
+void add_voronoi(Scene& scene, const SceneOptions& options);
+
 // The current step explained over the mesh (overlay layer, world labels).
 void add_overlays(Scene& scene, const StepStory& story, const replay::LogReader& log);
 

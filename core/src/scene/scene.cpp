@@ -7,7 +7,7 @@ namespace meshstep::scene {
 namespace {
 
 constexpr std::array<const char*, kLayerCount> kLayerNames = {
-    "fill", "edges", "highlight", "overlay", "segments", "vertices", "holes", "labels", "caption", "legend"};
+    "fill", "edges", "voronoi", "highlight", "overlay", "segments", "vertices", "holes", "labels", "caption", "legend"};
 constexpr std::array<const char*, static_cast<std::size_t>(ColorBy::count_)> kColorByNames = {
     "none", "angle", "quality", "area", "region", "age", "height"};
 

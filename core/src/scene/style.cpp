@@ -34,6 +34,10 @@ constexpr BaseStyle kLightBase{
     .hole = kInk,
     .region_point = bluish_green,
     .text = kInk,
+    .voronoi = vermillion,
+    .voronoi_width_px = 2.0f,
+    .voronoi_site = kInk,
+    .faint_edge = {0, 0, 0, 38},
 };
 
 constexpr BaseStyle kDarkBase{
@@ -49,6 +53,10 @@ constexpr BaseStyle kDarkBase{
     .hole = kPaper,
     .region_point = kGreenOnDark,
     .text = kPaper,
+    .voronoi = kVermillionOnDark,
+    .voronoi_width_px = 2.0f,
+    .voronoi_site = kPaper,
+    .faint_edge = {255, 255, 255, 40},
 };
 
 // A projector washes out grey and thin lines: opaque black edges at twice the width, and
@@ -66,6 +74,10 @@ constexpr BaseStyle kHighContrastBase{
     .hole = {0, 0, 0, 255},
     .region_point = bluish_green,
     .text = {0, 0, 0, 255},
+    .voronoi = vermillion,
+    .voronoi_width_px = 3.5f,
+    .voronoi_site = {0, 0, 0, 255},
+    .faint_edge = {0, 0, 0, 110},
 };
 
 // Translucent fills: strong enough to tint any colour map, weak enough to read it through.

@@ -34,6 +34,12 @@ struct BaseStyle {
   Rgba hole;
   Rgba region_point;
   Rgba text;
+  // The Voronoi layer, drawn as a textbook draws it beside the triangulation: the diagram in
+  // one strong colour, the sites as dots, the Delaunay edges under it lighter (faint_edge).
+  Rgba voronoi;
+  float voronoi_width_px;
+  Rgba voronoi_site;
+  Rgba faint_edge;
 };
 
 // One stroke-and-fill pair of an overlay role: `fill` for its translucent triangles,

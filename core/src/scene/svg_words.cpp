@@ -6,31 +6,13 @@
 #include <string>
 
 #include "meshstep/scene/colormap.hpp"
+#include "meshstep/scene/label_placement.hpp"
 #include "meshstep/scene/layout.hpp"
 #include "scene/svg_parts.hpp"
 
 namespace meshstep::scene::detail {
 
 namespace {
-
-// DejaVu Sans's ascent and descent, in ems: the extent of a label's halo.
-constexpr double kAscentEm = 0.928, kDescentEm = 0.236;
-
-// An estimate of a DejaVu Sans line's width (SVG has no text measuring at writing time):
-// the usual advances of its narrow, wide and other characters, in ems.
-double estimated_text_width(std::string_view text, double size_px) {
-  double ems = 0.0;
-  for (const char ch : text) {
-    const unsigned char b = static_cast<unsigned char>(ch);
-    if ((b & 0xC0) == 0x80) continue;  // a UTF-8 continuation byte: counted with its lead byte
-    if (b >= 0x80) ems += 0.65;
-    else if (std::string_view(" .,:;'!|il()[]").find(ch) != std::string_view::npos) ems += 0.32;
-    else if (ch >= 'A' && ch <= 'Z') ems += 0.70;
-    else if (ch == 'm' || ch == 'w' || ch == 'M' || ch == 'W') ems += 0.85;
-    else ems += 0.60;
-  }
-  return ems * size_px;
-}
 
 void write_rect(SvgText& out, double x, double y, double w, double h, Rgba fill) {
   out.raw("<rect");
@@ -99,21 +81,12 @@ Rgba panel_color(const Scene& s, std::uint8_t alpha) {
 
 void write_labels(SvgContext& c) {
   const Rgba halo = panel_color(c.scene, 160);
-  for (const Label& label : c.scene.labels) {
-    if (label.text.empty()) continue;
-    const Point at = c.to_screen(label.at);
-    // Scene::text_scale: the label and its offset from its point grow together.
-    const double k = c.scene.text_scale, size = label.size_px * k;
-    const double x = at.x + label.dx_px * k, baseline = at.y + label.dy_px * k;
-    if (!(std::abs(x) < 1e6 && std::abs(baseline) < 1e6)) continue;  // far off, or not finite
-    // Whole pixels, as the GL renderer places text.
-    const double left = std::round(x), base = std::round(baseline);
-    const double right = left + estimated_text_width(label.text, size);
-    const double top = base - std::ceil(kAscentEm * size), bottom = base + std::ceil(kDescentEm * size);
-    if (!c.view.overlaps({left - 2.0, top}, {right + 2.0, bottom})) continue;
+  // Placed as the GL renderer places them (scene/label_placement.hpp), measured by estimate.
+  for (const PlacedLabel& p : place_labels(c.scene, c.camera, estimated_text_extent)) {
+    const Label& label = c.scene.labels[p.label];
     // A translucent box behind the text, so that it reads over the mesh.
-    write_rect(c.out, left - 2.0, top, right - left + 4.0, bottom - top, halo);
-    write_text(c.out, {left, base}, size, false, label.color, label.text);
+    write_rect(c.out, p.x0, p.y0, p.x1 - p.x0, p.y1 - p.y0, halo);
+    write_text(c.out, {p.left, p.baseline}, p.size_px, false, label.color, label.text);
   }
 }
 

@@ -150,7 +150,8 @@ class LogReader {
   RunHeader run_;
   // The raw text of the fields that describe the input, parsed by read_input_fields().
   std::map<std::string, std::string> input_fields_ = {
-      {"regions", {}}, {"holes", {}}, {"vertex_markers", {}}, {"vertex_attributes", {}}, {"segment_markers", {}}};
+      {"regions", {}}, {"holes", {}}, {"vertex_markers", {}}, {"vertex_attributes", {}}, {"segment_markers", {}},
+      {"segments", {}}};
   std::uint32_t format_version_ = 0;
   std::size_t blocks_start_ = 0;
   bool complete_ = false;

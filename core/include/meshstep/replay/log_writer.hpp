@@ -43,12 +43,16 @@ struct LogHeader {
   //   "vertex_markers"     "marker count": runs of the input vertices' markers
   //   "vertex_attributes"  the count per vertex, then one vertex's attributes a line
   //   "segment_markers"    "1" when the input's segments had markers
+  //   "segments"           "a b": the input's segments by 0-based input vertex index, so that
+  //                        the moment before the first triangle can show the input (a log
+  //                        without it shows the input's vertices, holes and regions only)
   std::vector<Region> regions;
   std::vector<Point> holes;
   std::vector<int> vertex_markers;  // empty: the input had none
   std::size_t attributes_per_vertex = 0;
   std::vector<double> vertex_attributes;
   bool has_segment_markers = false;
+  std::vector<Segment> segments;  // markers are not kept (segment_markers says if there were)
 };
 
 // Fills the header's description of the input (regions, holes, markers, attributes).
@@ -60,6 +64,9 @@ std::string regions_field(const std::vector<Region>& regions);
 std::vector<Region> parse_regions_field(const std::string& text);
 std::string holes_field(const std::vector<Point>& holes);
 std::vector<Point> parse_holes_field(const std::string& text);
+// Segment indices are checked against the input's vertex count.
+std::string segments_field(const std::vector<Segment>& segments);
+std::vector<Segment> parse_segments_field(const std::string& text, std::size_t vertex_count);
 std::string vertex_markers_field(const std::vector<int>& markers);
 std::vector<int> parse_vertex_markers_field(const std::string& text, std::size_t vertex_limit);
 std::string vertex_attributes_field(std::size_t per_vertex, const std::vector<double>& values);

@@ -23,7 +23,8 @@ namespace meshstep::scene {
 struct SceneOptions {
   ColorBy color_by = ColorBy::none;
   Theme theme = Theme::light;
-  LayerSet layers = LayerSet::all();
+  // Layer::voronoi is built only when it is in the set (its shapes cost a sort of the edges).
+  LayerSet layers = LayerSet::standard();
   // The smallest-angle bound that ColorBy::quality measures against, in degrees. 0: the
   // run's own (min_angle in the log's parameters), else 30.
   double min_angle_bound = 0.0;

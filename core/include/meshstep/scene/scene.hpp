@@ -31,6 +31,7 @@ struct Rgba {
 enum class Layer : std::uint8_t {
   fill,       // triangles filled by the chosen quantity
   edges,      // mesh edges
+  voronoi,    // the mesh's dual: circumcenters, their edges, rays on the hull, sites (off by default)
   highlight,  // the faces the current step changed
   overlay,    // the current event explained (bad triangle, Lepp path, circles, flips...)
   segments,   // constrained edges (input segments and their pieces)
@@ -50,6 +51,9 @@ std::optional<Layer> parse_layer(std::string_view text);
 class LayerSet {
  public:
   static LayerSet all() { return LayerSet((1u << kLayerCount) - 1); }
+  // What a picture shows unless asked otherwise: every layer but the Voronoi diagram, which
+  // is drawn over the mesh only when a lecture wants it.
+  static LayerSet standard() { return all().set(Layer::voronoi, false); }
   static LayerSet none() { return LayerSet(0); }
   bool has(Layer l) const { return bits_ >> static_cast<unsigned>(l) & 1u; }
   LayerSet& set(Layer l, bool on = true) {
@@ -141,6 +145,9 @@ struct Label {
   Rgba color;
   float size_px = 14.0f;
   float dx_px = 0.0f, dy_px = 0.0f;  // screen offset (y down)
+  // Which labels give way where they would overlap (scene/label_placement.hpp): the lower
+  // moves or goes first. Vertex names 0, region names 1, the step's own words 2.
+  std::uint8_t priority = 2;
 };
 
 struct Scene {
@@ -156,7 +163,7 @@ struct Scene {
   std::string caption;        // one line: "refine · step 12 of 340 · ..."
   Rgba caption_color;
   std::optional<Legend> legend;
-  LayerSet visible = LayerSet::all();
+  LayerSet visible = LayerSet::standard();
   // The caption, the legend and the labels drawn this many times their size (the viewer's
   // UI scale, so that the canvas's words read as far as its panels' do). 1 in a file.
   float text_scale = 1.0f;
