@@ -140,6 +140,7 @@ Scene build_scene(const replay::Replay& cursor, const SceneOptions& options, con
     detail::add_vertex_markers(scene, mesh.input_vertices, mesh.steiner_vertices, options);
   }
   detail::add_regions(scene, regions);
+  detail::add_refine_region(scene, log, cursor.position());
   scene.caption = detail::step_caption(story, log);
   if (before_first_triangle && !story.in_step) scene.caption += " \u00B7 " + detail::input_description(log);
   scene.bounds = detail::scene_bounds(scene, box);

@@ -32,6 +32,11 @@ BBox add_input_moment(Scene& scene, const replay::LogReader& log, const SceneOpt
 // "input: 14 vertices, 12 segments, 1 hole" (what the log's header knows of the input).
 std::string input_description(const replay::LogReader& log);
 
+// The outline of the region the refinement at `position` is limited to (--region, or a
+// recipe operation's), dashed; nothing for a run over the whole domain
+// (build_refine_region.cpp).
+void add_refine_region(Scene& scene, const replay::LogReader& log, std::uint64_t position);
+
 // The Voronoi layer of the scene's mesh (build_voronoi.cpp); lightens the mesh's edges.
 void add_voronoi(Scene& scene, const SceneOptions& options);
 
