@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <optional>
 #include <chrono>
 #include <pthread.h>
 #include <signal.h>
@@ -15,6 +16,7 @@
 #include <cstdlib>
 
 #include "allocations.hpp"
+#include "compare_view.hpp"
 #include "file_dialog.hpp"
 #include "host.hpp"
 #include "ui_look.hpp"
@@ -58,6 +60,17 @@ void watch_for_interrupts(bool window) {
 }  // namespace
 
 int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Opener& opener) {
+  // Runs side by side are opened before any window: a file that is no log is refused first.
+  std::optional<SideBySide> side_by_side;
+  if (options.side_by_side.size() > 1) {
+    side_by_side = open_side_by_side(options.side_by_side);
+    session = std::move(side_by_side->leader);
+    if (options.start_step >= 0) {
+      if (const std::string refused = session->go_to_step(options.start_step, "--step"); !refused.empty())
+        throw InputError(session->title(), 0, refused);
+    }
+    if (options.start_event >= 0) session->seek(static_cast<std::uint64_t>(options.start_event));
+  }
   watch_for_interrupts(!options.offscreen);
   IMGUI_CHECKVERSION();
   count_imgui_allocations();
@@ -83,12 +96,15 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   std::unique_ptr<Viewer> viewer;
   std::string problem;  // the last file that could not be opened, and why
   bool stopped_run = false;  // `problem` says why the run shown stopped short
-  const auto show = [&](std::unique_ptr<Session> next) {
+  const auto show = [&](std::unique_ptr<Session> next, bool side = false) {
     Settings carried = options.settings ? *options.settings : Settings{};
     if (options.ui_scale > 0.0f) carried.ui_scale = options.ui_scale;
     if (viewer) viewer->capture(carried);
     const std::string path = next->title();
-    viewer = std::make_unique<Viewer>(std::move(next), CanvasOptions{options.canvas, host->gl_library()});
+    // Side by side, every run's canvas has a worker of its own (compare_view.hpp), none
+    // the viewer's.
+    viewer = std::make_unique<Viewer>(std::move(next), CanvasOptions{side ? CanvasMode::this_thread : options.canvas,
+                                                                     host->gl_library()});
     // The title names what the window shows now: a live run's log, a file opened later.
     host->set_title("meshstep view: " + path);
     viewer->window_title = host->title();
@@ -152,7 +168,12 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     }
     live.reset();
   };
-  if (session) show(std::move(session));
+  if (session && side_by_side) {
+    show(std::move(session), true);
+    viewer->show_side_by_side(std::move(*side_by_side));
+  } else if (session) {
+    show(std::move(session));
+  }
   if (!options.live_input.empty()) open(options.live_input, options.live_refine);
 
   ScriptPlayer script(options.script, options.script_path);

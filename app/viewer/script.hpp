@@ -37,6 +37,8 @@
 //                       index, the plots over the whole run)
 //   open FILE           open a log, mesh or input as a dropped file would (an input is
 //                       triangulated); without INPUT the script starts on the start page
+//   sync step|vertices|fraction   runs side by side: how the others follow the timeline's run
+//   difference on|off   runs side by side: the difference overlay (D)
 //   quit
 #pragma once
 

@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "compare_view.hpp"
 #include "keys.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/atomic_file.hpp"
@@ -156,7 +157,8 @@ class ScriptPlayer {
 
   static void wait_for_background(Viewer& viewer) {
     if (!viewer.session().log()) return;
-    while (!viewer.history().ready() || !viewer.plots().ready()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    while (!viewer.history().ready() || !viewer.plots().ready() || (viewer.compare() && !viewer.compare()->plots_ready()))
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
     viewer.settle_timeline_marks();
   }
 
@@ -321,6 +323,15 @@ class ScriptPlayer {
     }
     if (v == "select") {
       viewer->select_at({std::strtod(a.args[0].c_str(), nullptr), std::strtod(a.args[1].c_str(), nullptr)});
+      return false;
+    }
+    if (v == "sync" || v == "difference") {
+      CompareView* compare = viewer->compare();
+      if (!compare)
+        throw InputError(path_, static_cast<std::size_t>(a.line),
+                         v + ": only for runs side by side (meshstep view A.mslog B.mslog [C.mslog D.mslog])");
+      if (v == "sync") compare->set_sync_mode(*parse_sync_mode(a.args[0]));
+      else compare->difference = a.args[0] == "on";
       return false;
     }
     if (v == "wait" || v == "settle") return false;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "compare_view.hpp"
 #include "file_dialog.hpp"
 #include "meshstep/io/atomic_file.hpp"
 #include "meshstep/refine/quality.hpp"
@@ -74,6 +75,7 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
   ImGui::SameLine();
   ImGui::TextWrapped("%s", title.c_str() + (slash == std::string::npos ? 0 : slash + 1));
   ImGui::Separator();
+  if (compare_) compare_->draw_panel(w - 24.0f);
 
   draw_selection_panel();
   ImGui::SetNextItemOpen(explain_open_);

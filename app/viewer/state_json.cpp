@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "compare_view.hpp"
 #include "meshstep/scene/pseudocode.hpp"
 #include "ui_look.hpp"
 #include "viewer.hpp"
@@ -181,7 +182,9 @@ std::string state_json(Viewer& v) {
   field("canvas_rect", "{\"x\": " + number(r.x) + ", \"y\": " + number(r.y) + ", \"width\": " + number(r.z) +
                            ", \"height\": " + number(r.w) + "}");
   field("scene_builds", std::to_string(s.scene_builds()));
-  out += "  \"canvas_renders\": " + std::to_string(v.canvas_renders()) + "\n}\n";
+  field("canvas_renders", std::to_string(v.canvas_renders()));
+  // Last, so that older tests' first match of a key stays the top-level one.
+  out += "  \"runs\": " + runs_state_json(v) + "\n}\n";
   return out;
 }
 
