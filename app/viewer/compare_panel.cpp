@@ -35,7 +35,7 @@ void CompareView::draw_panel(float width) {
 
   const int n = static_cast<int>(panes_.size());
   if (ImGui::BeginTable("runs", n + 1, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_BordersInnerV)) {
-    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 0.26f * width);
+    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("  recover segments").x);
     for (int i = 0; i < n; ++i) {
       char name[16];
       std::snprintf(name, sizeof name, "run %d", i + 1);
@@ -62,20 +62,25 @@ void CompareView::draw_panel(float width) {
     row("triangles", [](const Pane& p) { ImGui::Text("%zu", p.stats.triangles); });
     row("smallest", [](const Pane& p) { ImGui::Text("%.2f\u00B0", p.stats.min_angle); });
     row("largest", [](const Pane& p) { ImGui::Text("%.2f\u00B0", p.stats.max_angle); });
-    // Steps per phase: one row per phase any run has.
+    // Steps per phase: one row per phase any run has, under a heading of their own.
     std::vector<std::string> phases;
     for (const Pane& p : panes_)
       for (const auto& [phase, steps] : p.phase_steps)
         if (std::find(phases.begin(), phases.end(), phase) == phases.end()) phases.push_back(phase);
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextDisabled("steps per phase");
     for (const std::string& phase : phases) {
-      row(phase.c_str(), [&phase](const Pane& p) {
+      std::string label = "  " + phase;  // "insert vertices", not "insert_vertices"
+      std::replace(label.begin(), label.end(), '_', ' ');
+      row(label.c_str(), [&phase](const Pane& p) {
         std::uint64_t steps = 0;
         for (const auto& [name, count] : p.phase_steps)
           if (name == phase) steps = count;
-        ImGui::Text("%llu steps", static_cast<unsigned long long>(steps));
+        ImGui::Text("%llu", static_cast<unsigned long long>(steps));
       });
     }
-    if (difference) row("edges not in the other", [](const Pane& p) { ImGui::Text("%zu", p.different.size()); });
+    if (difference) row("edges apart", [](const Pane& p) { ImGui::Text("%zu", p.different.size()); });
     ImGui::EndTable();
   }
 

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -260,21 +261,104 @@ std::size_t overlay_pixels(const scene::Image& image, int x0, int y0, int x1, in
 TEST_P(SideBySide, TheDifferenceOverlayMarksEachCanvas) {
   const std::vector<const replay::LogReader*> logs = {golden::lesson_run(kOffcenter), golden::lesson_run(kCircumcenter)};
   ASSERT_TRUE(logs[0] && logs[1]);
+  // Step 45: the two refinements have gone different ways. Step 30: they still agree (the
+  // same points so far), and the overlay has nothing to mark.
   SIDE_OR_SKIP(r, logs,
-               "seek step 30\nscreenshot " + path("off.png") + "\nkey D\nstate " + path("on.json") + "\nscreenshot " +
-                   path("on.png") + "\ndifference off\nstate " + path("off.json") + "\nquit\n");
-  const std::string on = read_text(path("on.json"));
+               "seek step 45\nscreenshot " + path("off.png") + "\nkey D\nstate " + path("on.json") + "\nscreenshot " +
+                   path("on.png") + "\nseek step 30\nstate " + path("same.json") + "\ndifference off\nstate " +
+                   path("off.json") + "\nquit\n");
+  const std::string on = read_text(path("on.json")), same = read_text(path("same.json"));
   EXPECT_TRUE(has(on, "\"difference\": true")) << on;
   EXPECT_TRUE(has(read_text(path("off.json")), "\"difference\": false"));
   const scene::Image before = scene::read_png(path("off.png")), after = scene::read_png(path("on.png"));
   for (std::size_t i = 0; i < 2; ++i) {
+    const std::string key = "edges_not_in_run_" + std::to_string(i == 0 ? 2 : 1);
     const std::string line = run_line(on, i);
-    const long long differ = field(line, "edges_not_in_run_" + std::to_string(i == 0 ? 2 : 1));
-    EXPECT_GT(differ, 0) << "two algorithms' meshes differ somewhere: " << line;
+    const long long differ = field(line, key);
+    EXPECT_GT(differ, 0) << "two algorithms' meshes differ at step 45: " << line;
+    EXPECT_EQ(field(run_line(same, i), key), 0) << "and agree at step 30: " << run_line(same, i);
     const int x = static_cast<int>(field(line, "x")), y = static_cast<int>(field(line, "y"));
     const int w = static_cast<int>(field(line, "width")), h = static_cast<int>(field(line, "height"));
     EXPECT_EQ(overlay_pixels(before, x, y, x + w, y + h), 0u) << "no purple without the overlay, canvas " << i;
-    EXPECT_GT(overlay_pixels(after, x, y, x + w, y + h), 50u) << "the overlay on canvas " << i;
+    // Each marked edge is tens of pixels long and 2.5 wide: far more than the legend's swatch.
+    EXPECT_GT(overlay_pixels(after, x, y, x + w, y + h), 20u * static_cast<std::size_t>(differ))
+        << "the overlay on canvas " << i;
+  }
+}
+
+// The pixels of a rectangle of a picture that differ from another's by more than 5.
+std::size_t changed_pixels(const scene::Image& a, const scene::Image& b, int x0, int y0, int x1, int y1) {
+  std::size_t n = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const std::uint8_t *p = a.row(y) + 4 * x, *q = b.row(y) + 4 * x;
+      n += std::abs(p[0] - q[0]) > 5 || std::abs(p[1] - q[1]) > 5 || std::abs(p[2] - q[2]) > 5;
+    }
+  return n;
+}
+
+// Linked cameras: a drag and a wheel over the second canvas move the first's picture too
+// (one camera), and the first canvas's picture moved as much as the second's did.
+TEST_P(SideBySide, APanOnOneCanvasMovesEveryCanvas) {
+  const std::vector<const replay::LogReader*> logs = {golden::lesson_run(kOffcenter), golden::lesson_run(kCircumcenter)};
+  ASSERT_TRUE(logs[0] && logs[1]);
+  SIDE_OR_SKIP(r, logs,
+               "seek step 30\nscreenshot " + path("a.png") + "\nstate " + path("a.json") +
+                   "\nmouse 700 300\ndrag 60 30\nwheel 2\nstate " + path("b.json") + "\nscreenshot " + path("b.png") +
+                   "\nquit\n");
+  const std::string a = read_text(path("a.json")), b = read_text(path("b.json"));
+  const auto number = [](const std::string& json, const std::string& key) {
+    const auto at = json.find("\"" + key + "\": ");
+    return at == std::string::npos ? NAN : std::atof(json.c_str() + at + key.size() + 4);
+  };
+  EXPECT_GT(number(b, "pixels_per_unit"), 1.3 * number(a, "pixels_per_unit")) << b;
+  EXPECT_NE(number(b, "x"), number(a, "x")) << b;
+  // At step 30 both runs have the same mesh: the same camera shows the same pictures, before
+  // and after the move, on both canvases.
+  const scene::Image before = scene::read_png(path("a.png")), after = scene::read_png(path("b.png"));
+  const std::string l0 = run_line(a, 0), l1 = run_line(a, 1);
+  const int x0 = static_cast<int>(field(l0, "x")), x1 = static_cast<int>(field(l1, "x"));
+  const int y = static_cast<int>(field(l0, "y")) + 40, w = static_cast<int>(field(l0, "width")),
+            h = static_cast<int>(field(l0, "height")) - 80;  // below the renderer's caption, above the legend
+  EXPECT_GT(changed_pixels(before, after, x0, y, x0 + w, y + h), 5000u) << "the first canvas moved with the second";
+  std::size_t differ = 0;
+  for (int yy = y; yy < y + h; ++yy)
+    for (int xx = 0; xx < w; ++xx) {
+      const std::uint8_t *p = after.row(yy) + 4 * (x0 + xx), *q = after.row(yy) + 4 * (x1 + xx);
+      differ += std::abs(p[0] - q[0]) > 5 || std::abs(p[1] - q[1]) > 5 || std::abs(p[2] - q[2]) > 5;
+    }
+  EXPECT_LT(differ, static_cast<std::size_t>(w) * static_cast<std::size_t>(h) / 50) << "the two canvases show one view";
+}
+
+// The side-by-side window with the overlay on, against tests/golden/viewer_side_by_side.png
+// (5 per channel on at most 0.1% of the pixels, as the other viewer goldens). The logs are
+// copied under fixed names: the side panel shows the leader's file name.
+TEST_P(SideBySide, WindowWithTheOverlayMatchesItsGolden) {
+  const replay::LogReader* off = golden::lesson_run(kOffcenter);
+  const replay::LogReader* circ = golden::lesson_run(kCircumcenter);
+  ASSERT_TRUE(off && circ);
+  std::filesystem::copy_file(off->path(), dir_ / "offcenter.mslog");
+  std::filesystem::copy_file(circ->path(), dir_ / "circumcenter.mslog");
+  const replay::LogReader a(path("offcenter.mslog")), b(path("circumcenter.mslog"));
+  SIDE_OR_SKIP(r, (std::vector<const replay::LogReader*>{&a, &b}),
+               "seek step 45\ndifference on\nframes 2\nscreenshot " + path("shot.png") + "\nquit\n");
+  const scene::Image actual = scene::read_png(path("shot.png"));
+  ASSERT_EQ(actual.width, 1280);
+  const std::filesystem::path golden = std::filesystem::path(MESHSTEP_GOLDEN_DIR) / "viewer_side_by_side.png";
+  if (std::getenv("MESHSTEP_UPDATE_GOLDENS") && GetParam() == "egl") {
+    scene::write_png(golden.string(), actual, 9);
+    GTEST_SKIP() << "updated " << golden;
+  }
+  ASSERT_TRUE(std::filesystem::exists(golden)) << golden << " is missing: run with MESHSTEP_UPDATE_GOLDENS=1 and look at it";
+  const scene::ImageDiff diff = scene::compare_images(scene::read_png(golden.string()), actual, 5);
+  const std::size_t allowed = static_cast<std::size_t>(actual.width) * static_cast<std::size_t>(actual.height) / 1000;
+  if (!diff.same_size || diff.differing_pixels > allowed) {
+    std::filesystem::create_directories(MESHSTEP_GOLDEN_OUT);
+    const std::string stem = std::string(MESHSTEP_GOLDEN_OUT) + "/viewer_side_by_side." + GetParam();
+    scene::write_png(stem + ".actual.png", actual);
+    if (diff.same_size) scene::write_png(stem + ".diff.png", diff.picture);
+    ADD_FAILURE() << diff.differing_pixels << " pixels differ by more than 5 (allowed " << allowed << "); see " << stem
+                  << ".actual.png and .diff.png";
   }
 }
 
