@@ -56,7 +56,7 @@ void CompareView::draw_panel(float width) {
       ImGui::Text("%llu / %llu", static_cast<unsigned long long>(c.step), static_cast<unsigned long long>(c.step_count));
     });
     row("vertices in", [](const Pane& p) {
-      ImGui::Text("%llu", static_cast<unsigned long long>(inserted_vertices(*p.session->log(), p.session->cursor_info().position)));
+      ImGui::Text("%llu", static_cast<unsigned long long>(inserted_vertices(p.insertions, p.session->cursor_info().position)));
     });
     row("Steiner", [](const Pane& p) { ImGui::Text("%zu", p.stats.steiner); });
     row("triangles", [](const Pane& p) { ImGui::Text("%zu", p.stats.triangles); });
@@ -103,22 +103,28 @@ void CompareView::draw_panel(float width) {
   std::uint64_t longest = 1;
   for (const Pane& p : panes_) longest = std::max<std::uint64_t>(longest, p.session->log()->step_count());
   static constexpr const char* kTitles[] = {"triangles", "smallest angle"};
-  for (int k = 0; k < 2; ++k) {
-    float lo = FLT_MAX, hi = -FLT_MAX;
-    bool all_ready = true;
-    for (std::size_t i = 0; i < panes_.size(); ++i) {
-      const RunPlots& plots = plots_of(panes_[i], viewer_, i == leader_);
-      if (!plots.ready()) {
-        all_ready = false;
-        continue;
+  bool all_ready = true;
+  for (std::size_t i = 0; i < panes_.size(); ++i) all_ready = all_ready && plots_of(panes_[i], viewer_, i == leader_).ready();
+  if (!all_ready) {
+    ImGui::TextDisabled("plotting the runs...");
+    return;
+  }
+  if (!plot_scales_known_) {
+    // Once, when every run's plots are ready (a scan of every value of every run).
+    for (int k = 0; k < 2; ++k) {
+      float lo = FLT_MAX, hi = -FLT_MAX;
+      for (std::size_t i = 0; i < panes_.size(); ++i) {
+        const RunPlots& plots = plots_of(panes_[i], viewer_, i == leader_);
+        for (const float v : k == 0 ? plots.triangles() : plots.smallest_angle())
+          if (!std::isnan(v)) lo = std::min(lo, v), hi = std::max(hi, v);
       }
-      for (const float v : k == 0 ? plots.triangles() : plots.smallest_angle())
-        if (!std::isnan(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+      plot_scales_[2 * k] = lo;
+      plot_scales_[2 * k + 1] = hi;
     }
-    if (!all_ready) {
-      ImGui::TextDisabled("plotting the runs...");
-      break;
-    }
+    plot_scales_known_ = true;
+  }
+  for (int k = 0; k < 2; ++k) {
+    const float lo = plot_scales_[2 * k], hi = plot_scales_[2 * k + 1];
     if (lo == FLT_MAX) continue;
     ImGui::TextDisabled("%s over the runs (one scale, %.4g to %.4g)", kTitles[k], static_cast<double>(std::min(lo, 0.0f)),
                         static_cast<double>(hi));

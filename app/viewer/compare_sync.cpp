@@ -37,9 +37,13 @@ std::uint64_t inserted_vertices(const replay::LogReader& log, std::uint64_t posi
   return n;
 }
 
-std::uint64_t synced_position(const replay::LogReader& leader, std::uint64_t leader_position,
-                              const replay::LogReader& follower, const std::vector<std::uint64_t>& follower_insertions,
-                              SyncMode mode) {
+std::uint64_t inserted_vertices(const std::vector<std::uint64_t>& insertions, std::uint64_t position) {
+  return static_cast<std::uint64_t>(std::lower_bound(insertions.begin(), insertions.end(), position) - insertions.begin());
+}
+
+std::uint64_t synced_position(const replay::LogReader& leader, const std::vector<std::uint64_t>& leader_insertions,
+                              std::uint64_t leader_position, const replay::LogReader& follower,
+                              const std::vector<std::uint64_t>& follower_insertions, SyncMode mode) {
   const std::uint64_t steps = follower.step_count();
   switch (mode) {
     case SyncMode::step:
@@ -52,7 +56,7 @@ std::uint64_t synced_position(const replay::LogReader& leader, std::uint64_t lea
       return follower.step_start(std::min(k, steps));
     }
     case SyncMode::vertices: {
-      const std::uint64_t n = inserted_vertices(leader, leader_position);
+      const std::uint64_t n = inserted_vertices(leader_insertions, leader_position);
       if (n == 0) return follower.step_start(0);
       if (n > follower_insertions.size()) return follower.event_count();  // it never gets there
       // The n-th insertion's step, and the boundary just after it.

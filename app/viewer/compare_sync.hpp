@@ -35,11 +35,15 @@ std::uint64_t inserted_vertices(const replay::LogReader& log, std::uint64_t posi
 // [n - 1]. Made once per log (a follower's lookups are then a binary search).
 std::vector<std::uint64_t> insertion_events(const replay::LogReader& log);
 
-// The follower's position for the leader's. `follower_insertions`: insertion_events of the
-// follower (used only by SyncMode::vertices).
-std::uint64_t synced_position(const replay::LogReader& leader, std::uint64_t leader_position,
-                              const replay::LogReader& follower, const std::vector<std::uint64_t>& follower_insertions,
-                              SyncMode mode);
+// The same count from the run's insertion_events: a binary search (every frame, per run).
+std::uint64_t inserted_vertices(const std::vector<std::uint64_t>& insertions, std::uint64_t position);
+
+// The follower's position for the leader's.
+// `leader_insertions`, `follower_insertions`: insertion_events of each (used only by
+// SyncMode::vertices).
+std::uint64_t synced_position(const replay::LogReader& leader, const std::vector<std::uint64_t>& leader_insertions,
+                              std::uint64_t leader_position, const replay::LogReader& follower,
+                              const std::vector<std::uint64_t>& follower_insertions, SyncMode mode);
 
 // The run's steps per phase, in the order the phases first begin (a phase that comes back
 // adds to its first entry); a step belongs to the innermost phase its first event is in.

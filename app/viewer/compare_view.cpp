@@ -37,6 +37,14 @@ std::string short_number(double v) {
 
 }  // namespace
 
+// The workers' readers together keep no more writes decoded than one reader of a log of
+// half LogReader's budget would: a log's writes take about ten times its size decoded, and
+// four 1e5-point triangulations kept whole held 1.1 GB (measured, docs/viewer.md). Logs
+// over their share are read from their blocks, about 9 times slower to seek.
+std::uint64_t keep_writes_bytes(std::size_t runs) {
+  return replay::LogReader::kKeepWritesBytes / (2 * std::max<std::size_t>(1, runs));
+}
+
 std::string run_description(const replay::LogReader& log) {
   const replay::LogHeader& h = log.header();
   const replay::RunHeader& run = log.run();
@@ -58,7 +66,8 @@ SideBySide open_side_by_side(const std::vector<std::string>& paths) {
   SideBySide out;
   std::vector<const replay::LogReader*> logs;
   for (const std::string& path : paths) {
-    out.runs.push_back(Session::open_log(path));
+    // Every picture is a worker's, with its own reader: these readers only index the runs.
+    out.runs.push_back(Session::open_log(path, 0));
     logs.push_back(out.runs.back()->log());
   }
   out.leader_index = leading_run(logs);
@@ -78,13 +87,32 @@ CompareView::CompareView(Viewer& viewer, SideBySide runs, const std::string& bac
     p.phase_steps = steps_per_phase(log);
     // The pictures come from the workers: no scene is built on this thread.
     p.session->defer_pictures(true);
-    p.worker = std::make_unique<CanvasWorker>(log.path(), backend);
-    // The leader's plots are the viewer's own (built with its other background work).
-    if (i != leader_) p.plots.build(log.path(), log.run().min_angle.value_or(0.0));
+    p.worker = std::make_unique<CanvasWorker>(log.path(), backend, CanvasWorker::Follow::fixed_log, kApproximateFrom,
+                                              keep_writes_bytes(panes_.size()));
+  }
+  start_next_plots();
+}
+
+// The other runs' plots, one after another: each pass reads a whole log, and four at once
+// would hold four logs' writes in memory together (the leader's plots are the viewer's own).
+void CompareView::start_next_plots() {
+  while (next_plots_ < panes_.size()) {
+    Pane& p = panes_[next_plots_];
+    if (next_plots_ == leader_) {
+      ++next_plots_;
+      continue;
+    }
+    if (!p.plots_started) {
+      p.plots.build(p.session->log()->path(), p.session->log()->run().min_angle.value_or(0.0));
+      p.plots_started = true;
+    }
+    if (!p.plots.ready()) return;
+    ++next_plots_;
   }
 }
 
-bool CompareView::plots_ready() const {
+bool CompareView::plots_ready() {
+  start_next_plots();
   for (std::size_t i = 0; i < panes_.size(); ++i)
     if (i != leader_ && !panes_[i].plots.ready()) return false;
   return true;
@@ -92,11 +120,12 @@ bool CompareView::plots_ready() const {
 
 void CompareView::sync() {
   const Session& lead = *panes_[leader_].session;
+  const std::vector<std::uint64_t>& lead_insertions = panes_[leader_].insertions;
   const std::uint64_t at = lead.cursor_info().position;
   for (std::size_t i = 0; i < panes_.size(); ++i) {
     if (i == leader_) continue;
     Pane& p = panes_[i];
-    const std::uint64_t want = synced_position(*lead.log(), at, *p.session->log(), p.insertions, mode_);
+    const std::uint64_t want = synced_position(*lead.log(), lead_insertions, at, *p.session->log(), p.insertions, mode_);
     if (p.session->cursor_info().position != want) p.session->seek(want);
   }
 }
@@ -208,6 +237,7 @@ void CompareView::draw_difference(const Pane& p, ImDrawList& draw) const {
 
 void CompareView::draw(float x, float y, float w, float h) {
   sync();
+  start_next_plots();
   place(x, y, w, h);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);

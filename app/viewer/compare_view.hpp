@@ -52,6 +52,9 @@ std::string run_description(const replay::LogReader& log);
 // the overlay. A JSON array, one run a line.
 std::string runs_state_json(Viewer& viewer);
 
+// The biggest log each run's worker keeps all writes of decoded, with `runs` side by side.
+std::uint64_t keep_writes_bytes(std::size_t runs);
+
 class CompareView {
  public:
   struct Pane {
@@ -69,6 +72,7 @@ class CompareView {
     EdgeSet edges;                                // of the moment shown
     std::vector<std::array<Point, 2>> different;  // its edges the run compared with lacks
     RunPlots plots;
+    bool plots_started = false;
     ImVec4 rect{0, 0, 0, 0};  // its picture's rectangle in the window
   };
 
@@ -96,10 +100,11 @@ class CompareView {
   // histograms and plots on shared axes.
   void draw_panel(float width);
   // The other runs' plots are made (the leader's are the viewer's).
-  bool plots_ready() const;
+  bool plots_ready();
 
  private:
   void fit(int pane_w, int pane_h);
+  void start_next_plots();
   void post(Pane& pane);
   bool take(Pane& pane);
   void differences();
@@ -111,7 +116,9 @@ class CompareView {
   SyncMode mode_ = SyncMode::step;
   bool differences_stale_ = true;
   int pane_w_ = 0, pane_h_ = 0;
-  bool fitted_once_with_picture_ = false;
+  std::size_t next_plots_ = 0;
+  std::array<float, 4> plot_scales_{};  // the plots' shared value ranges, found once
+  bool plot_scales_known_ = false;  // the first run whose plots are not ready yet
 };
 
 }  // namespace meshstep::viewer

@@ -100,21 +100,22 @@ TEST(CompareSync, FollowersStandWhereTheLogsSay) {
   const replay::LogReader& lead = a->step_count() > b->step_count() ? *a : *b;
   const replay::LogReader& follow = &lead == a ? *b : *a;
   EXPECT_EQ(leading_run({a, b}), &lead == a ? 0u : 1u);
-  const std::vector<std::uint64_t> insertions = insertion_events(follow);
+  const std::vector<std::uint64_t> insertions = insertion_events(follow), lead_insertions = insertion_events(lead);
   for (const SyncMode mode : {SyncMode::step, SyncMode::vertices, SyncMode::fraction}) {
     for (std::uint64_t k = 0; k <= lead.step_count(); ++k) {
       const std::uint64_t at = lead.step_start(k);
-      ASSERT_EQ(synced_position(lead, at, follow, insertions, mode), expected_position(lead, at, follow, name(mode)))
+      ASSERT_EQ(inserted_vertices(lead_insertions, at), count_inserted(lead, at)) << k;
+      ASSERT_EQ(synced_position(lead, lead_insertions, at, follow, insertions, mode), expected_position(lead, at, follow, name(mode)))
           << name(mode) << " at the leader's step " << k;
       // Inside a step too (one event before its end).
       if (at > 0)
-        ASSERT_EQ(synced_position(lead, at - 1, follow, insertions, mode),
+        ASSERT_EQ(synced_position(lead, lead_insertions, at - 1, follow, insertions, mode),
                   expected_position(lead, at - 1, follow, name(mode)))
             << name(mode) << " inside the leader's step " << k;
     }
     // At its end the leader takes the follower to its own end.
     if (mode != SyncMode::vertices)
-      EXPECT_EQ(synced_position(lead, lead.event_count(), follow, insertions, mode), follow.event_count()) << name(mode);
+      EXPECT_EQ(synced_position(lead, lead_insertions, lead.event_count(), follow, insertions, mode), follow.event_count()) << name(mode);
   }
   EXPECT_EQ(inserted_vertices(lead, lead.event_count()), count_inserted(lead, lead.event_count()));
   EXPECT_EQ(parse_sync_mode("vertices"), SyncMode::vertices);
