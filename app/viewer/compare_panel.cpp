@@ -35,7 +35,11 @@ void CompareView::draw_panel(float width) {
 
   const int n = static_cast<int>(panes_.size());
   if (ImGui::BeginTable("runs", n + 1, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_BordersInnerV)) {
-    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("  recover segments").x);
+    // The labels' column as wide as its longest label, the rest shared by the runs.
+    float label_w = ImGui::CalcTextSize("steps per phase").x;
+    for (const Pane& p : panes_)
+      for (const auto& [phase, steps] : p.phase_steps) label_w = std::max(label_w, ImGui::CalcTextSize(("  " + phase).c_str()).x);
+    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, label_w);
     for (int i = 0; i < n; ++i) {
       char name[16];
       std::snprintf(name, sizeof name, "run %d", i + 1);
@@ -51,17 +55,18 @@ void CompareView::draw_panel(float width) {
         cell(panes_[static_cast<std::size_t>(i)]);
       }
     };
-    row("step", [](const Pane& p) {
-      const CursorInfo c = p.session->cursor_info();
-      ImGui::Text("%llu / %llu", static_cast<unsigned long long>(c.step), static_cast<unsigned long long>(c.step_count));
+    // One number a cell, so that four columns fit the panel.
+    row("step", [](const Pane& p) { ImGui::Text("%llu", static_cast<unsigned long long>(p.session->cursor_info().step)); });
+    row("steps in all", [](const Pane& p) {
+      ImGui::Text("%llu", static_cast<unsigned long long>(p.session->cursor_info().step_count));
     });
     row("vertices in", [](const Pane& p) {
       ImGui::Text("%llu", static_cast<unsigned long long>(inserted_vertices(p.insertions, p.session->cursor_info().position)));
     });
     row("Steiner", [](const Pane& p) { ImGui::Text("%zu", p.stats.steiner); });
     row("triangles", [](const Pane& p) { ImGui::Text("%zu", p.stats.triangles); });
-    row("smallest", [](const Pane& p) { ImGui::Text("%.2f\u00B0", p.stats.min_angle); });
-    row("largest", [](const Pane& p) { ImGui::Text("%.2f\u00B0", p.stats.max_angle); });
+    row("smallest", [](const Pane& p) { ImGui::Text("%.1f\u00B0", p.stats.min_angle); });
+    row("largest", [](const Pane& p) { ImGui::Text("%.1f\u00B0", p.stats.max_angle); });
     // Steps per phase: one row per phase any run has, under a heading of their own.
     std::vector<std::string> phases;
     for (const Pane& p : panes_)
