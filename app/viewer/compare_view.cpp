@@ -38,9 +38,9 @@ std::string short_number(double v) {
 }  // namespace
 
 // The workers' readers together keep no more writes decoded than one reader of a log of
-// half LogReader's budget would: a log's writes take about ten times its size decoded, and
-// four 1e5-point triangulations kept whole held 1.1 GB (measured, docs/viewer.md). Logs
-// over their share are read from their blocks, about 9 times slower to seek.
+// half LogReader's budget would: with four 1e5-point triangulations (logs of 11 MB) kept
+// whole, the viewer held about 100 MiB more (docs/viewer.md). Logs over their share are
+// read from their blocks, about 9 times slower to seek, which the workers absorb.
 std::uint64_t keep_writes_bytes(std::size_t runs) {
   return replay::LogReader::kKeepWritesBytes / (2 * std::max<std::size_t>(1, runs));
 }

@@ -196,8 +196,8 @@ int main(int argc, char** argv) {
       }
       options.side_by_side = a.inputs;
       // Each run's worker replays on a thread of its own, and glibc gives each such thread
-      // an arena whose freed memory stays in the process: four 1e5-point runs held 130 MB
-      // more with the default (8 x cores arenas) than with two (measured, docs/viewer.md).
+      // an arena whose freed memory stays in the process: four 1e5-point runs held about
+      // 130 MiB more with the default (8 x cores arenas) than with two (docs/viewer.md).
       mallopt(M_ARENA_MAX, 2);
       options.start_step = a.step;
       options.start_event = a.event;
