@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 #include <chrono>
 #include <pthread.h>
 #include <signal.h>
@@ -17,6 +18,7 @@
 
 #include "allocations.hpp"
 #include "compare_view.hpp"
+#include "compare_with.hpp"
 #include "file_dialog.hpp"
 #include "host.hpp"
 #include "ui_look.hpp"
@@ -119,6 +121,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   // An input (.poly, .node) runs live: the window shows the mesh as the run makes it, and
   // opens the whole log when it ends.
   std::unique_ptr<LiveView> live;
+  std::string compare_base;  // "Compare with...": the log the live run will be shown beside
   int status = 0;
   const auto open = [&](const std::string& path, const RefineOptions& refine) {
     try {
@@ -138,7 +141,18 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   const auto end_live = [&] {
     if (!live || live->run->running()) return;
     LiveRun& run = *live->run;
-    if (run.succeeded()) {
+    if (run.succeeded() && !compare_base.empty()) {
+      try {
+        SideBySide both = open_side_by_side({compare_base, run.log()});
+        // The new run by its input's name, not its temporary log's.
+        (both.leader_index == 1 ? both.leader : both.runs[1])->set_title(run.input() + " (compared)");
+        show(std::move(both.leader), true);
+        viewer->show_side_by_side(std::move(both));
+      } catch (const InputError& e) {
+        problem = e.what();
+      }
+      compare_base.clear();
+    } else if (run.succeeded()) {
       try {
         std::unique_ptr<Session> s = Session::open_log(run.log());
         s->set_title(run.input());
@@ -210,6 +224,21 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     if (scripted) script.set_live_state(live ? live_state_json(*live) : std::string());
     const bool wants_capture = scripted && !script.done() && script.before_frame(viewer.get(), picked, problem);
     if (script.quit()) break;
+    // "Compare with...": the input run again, live; end_live shows both when it ends.
+    if (viewer && !viewer->compare_words.empty()) {
+      const std::string words = std::exchange(viewer->compare_words, std::string());
+      try {
+        const CompareWith c = compare_with(*viewer->session().log(), words);
+        live.reset();
+        live = std::make_unique<LiveView>(opener.start_live(c.input, c.refine, host->gl_library()));
+        host->set_title("meshstep view: " + c.input + " (running, to compare)");
+        compare_base = c.base_log;
+        problem.clear();
+      } catch (const std::exception& e) {  // RunSpecError, InputError: said, nothing runs
+        viewer->notify(std::string("compare with: ") + e.what());
+        if (!host->interactive()) std::fprintf(stderr, "meshstep view: compare with: %s\n", e.what());
+      }
+    }
     if (!picked.empty()) {
       open(picked, picked_refine);
       picked.clear();

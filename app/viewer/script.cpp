@@ -120,6 +120,7 @@ std::string check(const ScriptAction& a) {
     if (n == 1 && (a.args[0] == "on" || a.args[0] == "off")) return "";
     return "expected: difference on|off";
   }
+  if (v == "compare-with") return n >= 1 ? "" : "expected: compare-with OPTIONS (as refine takes them: --algorithm NAME ...)";
   if (v == "type") return n == 1 && !a.args[0].empty() ? "" : "expected: type TEXT";
   if (v == "click" || v == "quit" || v == "check" || v == "wait" || v == "settle" || v == "watch") return count(0, v.c_str());
   if (v == "screenshot" || v == "canvas" || v == "state" || v == "peek" || v == "open") return count(1, (v + " FILE").c_str());

@@ -39,6 +39,8 @@
 //                       triangulated); without INPUT the script starts on the start page
 //   sync step|vertices|fraction   runs side by side: how the others follow the timeline's run
 //   difference on|off   runs side by side: the difference overlay (D)
+//   compare-with OPTIONS  run the open run's input again with these refine options, live,
+//                       then show both side by side ("Compare with...")
 //   quit
 #pragma once
 

@@ -334,6 +334,13 @@ class ScriptPlayer {
       else compare->difference = a.args[0] == "on";
       return false;
     }
+    if (v == "compare-with") {
+      std::string words;
+      for (const std::string& w : a.args) words += (words.empty() ? "" : " ") + w;
+      viewer->compare_words = words;
+      pending_.push_back({});  // the frame on which the loop starts the run
+      return true;
+    }
     if (v == "wait" || v == "settle") return false;
     if (v == "check") {
       viewer->invariants().start(viewer->session().log() ? viewer->session().log()->path() : std::string());

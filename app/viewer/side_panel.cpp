@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "compare_view.hpp"
+#include "compare_with.hpp"
 #include "file_dialog.hpp"
 #include "meshstep/io/atomic_file.hpp"
 #include "meshstep/refine/quality.hpp"
@@ -76,6 +77,7 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
   ImGui::TextWrapped("%s", title.c_str() + (slash == std::string::npos ? 0 : slash + 1));
   ImGui::Separator();
   if (compare_) compare_->draw_panel(w - 24.0f);
+  else draw_compare_with(*this, compare_text_, sizeof compare_text_);
 
   draw_selection_panel();
   ImGui::SetNextItemOpen(explain_open_);

@@ -152,6 +152,9 @@ class Viewer {
   CompareView* compare() { return compare_.get(); }
   // The difference overlay on or off (D); with one run the canvas says it needs two.
   void toggle_difference();
+  // "Compare with..." (compare_with.hpp): the refinement's words the person (or a script)
+  // asked for; the run's loop takes them, runs the input again and shows both runs.
+  std::string compare_words;
 
  private:
   friend class CompareView;  // it lays out the canvases, fits the shared camera, feeds the session
@@ -253,6 +256,7 @@ class Viewer {
   std::string notice_;
   double notice_seconds_ = 0.0;
   std::string canvas_backend_;  // the GL library of the UI's context, for workers
+  char compare_text_[160] = "";  // the "Compare with..." field
   // Last: destroyed first, as it refers to the session and the camera.
   std::unique_ptr<CompareView> compare_;
 };

@@ -363,6 +363,33 @@ TEST_P(SideBySide, WindowWithTheOverlayMatchesItsGolden) {
   }
 }
 
+// "Compare with...": the open run's input run again with another refinement, live, then
+// both side by side; the new run is the run `meshstep refine` records with those options
+// (the same steps and events as the golden circumcenter log), and a refinement that cannot
+// be run is said on the canvas, nothing else changing.
+TEST_P(SideBySide, CompareWithRunsTheInputAgainAndShowsBoth) {
+  const replay::LogReader* off = golden::lesson_run(kOffcenter);
+  const replay::LogReader* circ = golden::lesson_run(kCircumcenter);
+  ASSERT_TRUE(off && circ);
+  SIDE_OR_SKIP(r, (std::vector<const replay::LogReader*>{off}),
+               "frames 1\ncompare-with --algorithm nosuch\nframes 1\nstate " + path("refused.json") +
+                   "\ncompare-with --algorithm circumcenter --min-angle 30\nframes 1\nseek end\nstate " +
+                   path("both.json") + "\nquit\n");
+  const std::string refused = read_text(path("refused.json"));
+  EXPECT_TRUE(has(refused, "\"notice\": \"compare with: --algorithm: 'nosuch' is not one of")) << refused;
+  EXPECT_TRUE(has(refused, "\"sync\": null")) << "still one run: " << refused;
+  const std::string both = read_text(path("both.json"));
+  const std::string first = run_line(both, 0), second = run_line(both, 1);
+  EXPECT_TRUE(has(first, "\"path\": \"" + off->path() + "\"")) << first;
+  EXPECT_TRUE(has(first, "\"caption\": \"offcenter, min angle 30\"")) << first;
+  EXPECT_TRUE(has(second, "\"caption\": \"circumcenter, min angle 30\"")) << second;
+  EXPECT_TRUE(has(second, "lesson.poly (compared)")) << second;
+  EXPECT_EQ(field(second, "step_count"), static_cast<long long>(circ->step_count())) << second;
+  EXPECT_EQ(field(second, "event_count"), static_cast<long long>(circ->event_count())) << second;
+  EXPECT_EQ(field(second, "position"), static_cast<long long>(circ->event_count())) << second;
+  EXPECT_EQ(field(first, "position"), static_cast<long long>(off->event_count())) << "the shorter run rests at its end";
+}
+
 INSTANTIATE_TEST_SUITE_P(Modes, SideBySide, ::testing::Values("egl", "osmesa", "window"),
                          [](const auto& info) { return info.param; });
 
