@@ -46,7 +46,9 @@ void draw_compare_with(Viewer& viewer, char* words, std::size_t size) {
   if (words[0] == '\0') std::snprintf(words, size, "%s", suggested_comparison(*log).c_str());
   ImGui::SetNextItemWidth(-1.0f);
   ImGui::InputText("##compare_words", words, size);
-  ImGui::TextDisabled("as refine takes them: --algorithm, --min-angle, --ds dcel, --insertion cavity...");
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextWrapped("as refine takes them: --algorithm, --min-angle, --ds dcel, --insertion cavity...");
+  ImGui::PopStyleColor();
   if (ImGui::Button("Run and compare")) viewer.compare_words = words;
 }
 

@@ -77,7 +77,6 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
   ImGui::TextWrapped("%s", title.c_str() + (slash == std::string::npos ? 0 : slash + 1));
   ImGui::Separator();
   if (compare_) compare_->draw_panel(w - 24.0f);
-  else draw_compare_with(*this, compare_text_, sizeof compare_text_);
 
   draw_selection_panel();
   ImGui::SetNextItemOpen(explain_open_);
@@ -134,6 +133,8 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
     }
     draw_run_plots(w - 24.0f);
   }
+  // Last, so that the panels above stay where they were for one run.
+  if (!compare_) draw_compare_with(*this, compare_text_, sizeof compare_text_);
   ImGui::End();
 }
 
