@@ -171,14 +171,13 @@ bool CompareView::take(Pane& p) {
   const bool first = !p.has_picture;
   p.has_picture = true;
   differences_stale_ = true;
+  // The moment moves into the run's session: the overlay reads its mesh from there, and the
+  // leader's is what the viewer's panels speak of.
+  p.session->adopt(p.picture.moment);
   if (&p == &panes_[leader_]) {
-    // The leader's mesh moves into the session; the overlay reads it from there.
-    p.session->adopt(p.picture.moment);
     viewer_.stats_ = p.picture.stats;
     viewer_.stats_of_build_ = p.session->scene_builds();
     ++viewer_.canvas_renders_;
-  } else {
-    p.session->adopt(p.picture.moment);  // a follower's too: its scene is then session->scene()
   }
   // The first picture brings the caption and legend the fit leaves room for.
   if (first && &p == &panes_[0] && !viewer_.camera_moved_) viewer_.fit_pending_ = true;
