@@ -16,11 +16,13 @@ namespace {
 constexpr int kPreviewNice = 5;
 }  // namespace
 
-CanvasWorker::CanvasWorker(std::string log_path, std::string backend, Follow follow, std::size_t approximate_from)
+CanvasWorker::CanvasWorker(std::string log_path, std::string backend, Follow follow, std::size_t approximate_from,
+                           std::uint64_t keep_writes_bytes)
     : log_path_(std::move(log_path)),
       backend_(std::move(backend)),
       follow_(follow),
       approximate_from_(approximate_from),
+      keep_writes_bytes_(keep_writes_bytes),
       thread_([this] { run(); }) {}
 
 CanvasWorker::~CanvasWorker() {
@@ -134,7 +136,7 @@ void CanvasWorker::run() {
     context->make_current_with_loaded_functions();
     renderer = std::make_unique<render::Renderer>();
     if (follow_ == Follow::fixed_log) {
-      session = Session::open_log(log_path_);
+      session = Session::open_log(log_path_, keep_writes_bytes_);
       view = std::make_unique<View3d>(session->log());
     }
   } catch (const std::exception& e) {
@@ -160,7 +162,7 @@ void CanvasWorker::run() {
         // What the run has written so far; not yet readable (no header, no whole block)
         // or gone (renamed when the run ended): no picture this time.
         try {
-          session = Session::open_log(log_path_);
+          session = Session::open_log(log_path_, keep_writes_bytes_);
           view = std::make_unique<View3d>(session->log());
         } catch (const std::exception&) {
           drawn = false;

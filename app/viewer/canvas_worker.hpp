@@ -75,8 +75,11 @@ class CanvasWorker {
   // Starts the thread; it opens LOG_PATH and an off-screen context of `backend` ("egl" or
   // "osmesa": the GL library the UI's context uses, whose functions are loaded already).
   // `approximate_from`: the meshes that get an approximate picture first, by their triangles.
+  // `keep_writes_bytes`: the biggest log whose writes the worker's reader keeps decoded
+  // (LogReader; runs side by side share one budget).
   CanvasWorker(std::string log_path, std::string backend, Follow follow = Follow::fixed_log,
-               std::size_t approximate_from = kApproximateFrom);
+               std::size_t approximate_from = kApproximateFrom,
+               std::uint64_t keep_writes_bytes = replay::LogReader::kKeepWritesBytes);
   ~CanvasWorker();
   CanvasWorker(const CanvasWorker&) = delete;
   CanvasWorker& operator=(const CanvasWorker&) = delete;
@@ -104,6 +107,7 @@ class CanvasWorker {
   const std::string log_path_, backend_;
   const Follow follow_;
   const std::size_t approximate_from_;
+  const std::uint64_t keep_writes_bytes_;
   mutable std::mutex mutex_;
   std::condition_variable wake_, drawn_;
   CanvasRequest wanted_;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "compare_view.hpp"  // complete, for ~Viewer
 #include "viewer.hpp"
 
 namespace meshstep::viewer {

@@ -59,6 +59,7 @@ std::vector<KeyAction> make_actions() {
     p.unit = p.unit == Unit::event ? Unit::step : p.unit == Unit::step ? Unit::phase : Unit::event;
   });
   add({GLFW_KEY_F}, "F", "fit the run in view", [](Viewer& v) { v.request_fit(); });
+  add({GLFW_KEY_D}, "D", "difference overlay (runs side by side)", [](Viewer& v) { v.toggle_difference(); });
   add({GLFW_KEY_L}, "L", "follow the current step while playing", [](Viewer& v) { v.follow = !v.follow; });
   add({GLFW_KEY_C}, "C", "next colouring", [](Viewer& v) { v.cycle_color_by(+1); });
   add({GLFW_KEY_C, true}, "Shift+C", "previous colouring", [](Viewer& v) { v.cycle_color_by(-1); });

@@ -4,6 +4,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <optional>
+#include <utility>
 #include <chrono>
 #include <pthread.h>
 #include <signal.h>
@@ -15,6 +17,8 @@
 #include <cstdlib>
 
 #include "allocations.hpp"
+#include "compare_view.hpp"
+#include "compare_with.hpp"
 #include "file_dialog.hpp"
 #include "host.hpp"
 #include "ui_look.hpp"
@@ -59,6 +63,17 @@ void watch_for_interrupts(bool window) {
 }  // namespace
 
 int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Opener& opener) {
+  // Runs side by side are opened before any window: a file that is no log is refused first.
+  std::optional<SideBySide> side_by_side;
+  if (options.side_by_side.size() > 1) {
+    side_by_side = open_side_by_side(options.side_by_side);
+    session = std::move(side_by_side->leader);
+    if (options.start_step >= 0) {
+      if (const std::string refused = session->go_to_step(options.start_step, "--step"); !refused.empty())
+        throw InputError(session->title(), 0, refused);
+    }
+    if (options.start_event >= 0) session->seek(static_cast<std::uint64_t>(options.start_event));
+  }
   watch_for_interrupts(!options.offscreen);
   IMGUI_CHECKVERSION();
   count_imgui_allocations();
@@ -87,12 +102,19 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   std::unique_ptr<Viewer> viewer;
   std::string problem;  // the last file that could not be opened, and why
   bool stopped_run = false;  // `problem` says why the run shown stopped short
-  const auto show = [&](std::unique_ptr<Session> next, bool edited = false) {
+  // How a session comes to be shown: opened, re-meshed after an edit (not a recent file),
+  // or as the leader of runs side by side (its canvas drawn on this thread).
+  enum class Shown { opened, edited, side_by_side };
+  const auto show = [&](std::unique_ptr<Session> next, Shown how = Shown::opened) {
+    const bool side = how == Shown::side_by_side, edited = how == Shown::edited;
     Settings carried = options.settings ? *options.settings : Settings{};
     if (options.ui_scale > 0.0f) carried.ui_scale = options.ui_scale;
     if (viewer) viewer->capture(carried);
     const std::string path = next->title();
-    viewer = std::make_unique<Viewer>(std::move(next), CanvasOptions{options.canvas, host->gl_library()});
+    // Side by side, every run's canvas has a worker of its own (compare_view.hpp), none
+    // the viewer's.
+    viewer = std::make_unique<Viewer>(std::move(next), CanvasOptions{side ? CanvasMode::this_thread : options.canvas,
+                                                                     host->gl_library()});
     // The title names what the window shows now: a live run's log, a file opened later.
     host->set_title("meshstep view: " + path);
     viewer->window_title = host->title();
@@ -108,6 +130,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   // An input (.poly, .node) runs live: the window shows the mesh as the run makes it, and
   // opens the whole log when it ends.
   std::unique_ptr<LiveView> live;
+  std::string compare_base;  // "Compare with...": the log the live run will be shown beside
   int status = 0;
   const auto open = [&](const std::string& path, const RefineOptions& refine) {
     bench = WorkbenchHost{};  // another file: the edits end (saved or not)
@@ -129,7 +152,18 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   const auto end_live = [&] {
     if (!live || live->run->running()) return;
     LiveRun& run = *live->run;
-    if (run.succeeded()) {
+    if (run.succeeded() && !compare_base.empty()) {
+      try {
+        SideBySide both = open_side_by_side({compare_base, run.log()});
+        // The new run by its input's name, not its temporary log's.
+        (both.leader_index == 1 ? both.leader : both.runs[1])->set_title(run.input() + " (compared)");
+        show(std::move(both.leader), Shown::side_by_side);
+        viewer->show_side_by_side(std::move(both));
+      } catch (const InputError& e) {
+        problem = e.what();
+      }
+      compare_base.clear();
+    } else if (run.succeeded()) {
       try {
         std::unique_ptr<Session> s = Session::open_log(run.log());
         s->set_title(run.input());
@@ -159,7 +193,12 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     }
     live.reset();
   };
-  if (session) show(std::move(session));
+  if (session && side_by_side) {
+    show(std::move(session), Shown::side_by_side);
+    viewer->show_side_by_side(std::move(*side_by_side));
+  } else if (session) {
+    show(std::move(session));
+  }
   if (!options.live_input.empty()) open(options.live_input, options.live_refine);
 
   // After an edit (the canvas's last frame, a key, a script's action): the input's new mesh,
@@ -169,7 +208,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     if (!edited) return;
     const bool keep = viewer && bench.showing && bench.in_view(viewer->camera());
     const scene::Camera camera = viewer ? viewer->camera() : scene::Camera{};
-    show(std::move(edited), true);
+    show(std::move(edited), Shown::edited);
     if (keep) viewer->keep_camera(camera);
     bench.showing = true;
   };
@@ -209,6 +248,21 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     if (scripted) script.set_live_state(live ? live_state_json(*live) : std::string());
     const bool wants_capture = scripted && !script.done() && script.before_frame(viewer.get(), picked, problem);
     if (script.quit()) break;
+    // "Compare with...": the input run again, live; end_live shows both when it ends.
+    if (viewer && !viewer->compare_words.empty()) {
+      const std::string words = std::exchange(viewer->compare_words, std::string());
+      try {
+        const CompareWith c = compare_with(*viewer->session().log(), words);
+        live.reset();
+        live = std::make_unique<LiveView>(opener.start_live(c.input, c.refine, host->gl_library()));
+        host->set_title("meshstep view: " + c.input + " (running, to compare)");
+        compare_base = c.base_log;
+        problem.clear();
+      } catch (const std::exception& e) {  // RunSpecError, InputError: said, nothing runs
+        viewer->notify(std::string("compare with: ") + e.what());
+        if (!host->interactive()) std::fprintf(stderr, "meshstep view: compare with: %s\n", e.what());
+      }
+    }
     if (!picked.empty()) {
       open(picked, picked_refine);
       picked.clear();

@@ -32,6 +32,9 @@ struct RunOptions {
   std::string live_input;
   RefineOptions live_refine;
   std::int64_t start_step = -1, start_event = -1;
+  // Two to four logs side by side (compare_view.hpp), in the command line's order; the
+  // session given to run_viewer is then null. start_step / start_event place the leader.
+  std::vector<std::string> side_by_side;
   // Who draws the canvas (viewer.hpp): automatic, this thread or a worker.
   CanvasMode canvas = CanvasMode::automatic;
   // The UI scale to start at (--ui-scale; 0: the settings', else 1).

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "edit_script.hpp"
+#include "compare_sync.hpp"
 #include "keys.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/scene/scene.hpp"
@@ -112,6 +113,15 @@ std::string check(const ScriptAction& a) {
     for (std::size_t i = 0; i < kMarkCount; ++i) known.append(i ? ", " : "").append(name(static_cast<Mark>(i)));
     return std::string("unknown kind of mark '").append(a.args[0]).append("' (").append(known).append(")");
   }
+  if (v == "sync") {
+    if (n == 1 && parse_sync_mode(a.args[0])) return "";
+    return "expected: sync step|vertices|fraction";
+  }
+  if (v == "difference") {
+    if (n == 1 && (a.args[0] == "on" || a.args[0] == "off")) return "";
+    return "expected: difference on|off";
+  }
+  if (v == "compare-with") return n >= 1 ? "" : "expected: compare-with OPTIONS (as refine takes them: --algorithm NAME ...)";
   if (v == "type") return n == 1 && !a.args[0].empty() ? "" : "expected: type TEXT";
   if (v == "click" || v == "quit" || v == "check" || v == "wait" || v == "settle" || v == "watch") return count(0, v.c_str());
   if (v == "screenshot" || v == "canvas" || v == "state" || v == "peek" || v == "open") return count(1, (v + " FILE").c_str());

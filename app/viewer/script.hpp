@@ -37,6 +37,10 @@
 //                       index, the plots over the whole run)
 //   open FILE           open a log, mesh or input as a dropped file would (an input is
 //                       triangulated); without INPUT the script starts on the start page
+//   sync step|vertices|fraction   runs side by side: how the others follow the timeline's run
+//   difference on|off   runs side by side: the difference overlay (D)
+//   compare-with OPTIONS  run the open run's input again with these refine options, live,
+//                       then show both side by side ("Compare with...")
 //   quit
 //   new | edit WHAT ... | undo | redo | save FILE.poly
 //                       the workbench: an input edited and re-meshed at once (edit_script.hpp)

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "edit_script.hpp"
+#include "compare_view.hpp"
 #include "keys.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/io/atomic_file.hpp"
@@ -161,7 +162,8 @@ class ScriptPlayer {
 
   static void wait_for_background(Viewer& viewer) {
     if (!viewer.session().log()) return;
-    while (!viewer.history().ready() || !viewer.plots().ready()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    while (!viewer.history().ready() || !viewer.plots().ready() || (viewer.compare() && !viewer.compare()->plots_ready()))
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
     viewer.settle_timeline_marks();
   }
 
@@ -333,6 +335,22 @@ class ScriptPlayer {
       run_edit_action(a, *workbench_, viewer ? &viewer->session() : nullptr, path_);
       if (v == "save" || v == "save-recipe") return false;
       pending_.push_back({});  // the frame that shows the new mesh (made before it)
+      return true;
+    }
+    if (v == "sync" || v == "difference") {
+      CompareView* compare = viewer->compare();
+      if (!compare)
+        throw InputError(path_, static_cast<std::size_t>(a.line),
+                         v + ": only for runs side by side (meshstep view A.mslog B.mslog [C.mslog D.mslog])");
+      if (v == "sync") compare->set_sync_mode(*parse_sync_mode(a.args[0]));
+      else compare->difference = a.args[0] == "on";
+      return false;
+    }
+    if (v == "compare-with") {
+      std::string words;
+      for (const std::string& w : a.args) words += (words.empty() ? "" : " ") + w;
+      viewer->compare_words = words;
+      pending_.push_back({});  // the frame on which the loop starts the run
       return true;
     }
     if (v == "wait" || v == "settle") return false;

@@ -14,10 +14,10 @@ const char* name(Unit unit) {
   return "?";
 }
 
-std::unique_ptr<Session> Session::open_log(const std::string& path) {
+std::unique_ptr<Session> Session::open_log(const std::string& path, std::uint64_t keep_writes_bytes) {
   std::unique_ptr<Session> s(new Session);
   s->title_ = path;
-  s->log_ = std::make_unique<replay::LogReader>(path);
+  s->log_ = std::make_unique<replay::LogReader>(path, keep_writes_bytes);
   s->cursor_ = std::make_unique<replay::Replay>(*s->log_);
   s->position_ = s->log_->event_count();  // the end of the run; replayed when first drawn
   return s;

@@ -54,8 +54,11 @@ bool is_big_cavity(const replay::Event& e);
 
 class Session {
  public:
-  // A recorded run; throws InputError for a file that is not a valid log.
-  static std::unique_ptr<Session> open_log(const std::string& path);
+  // A recorded run; throws InputError for a file that is not a valid log. A session whose
+  // pictures are made elsewhere (runs side by side) keeps none of the log's writes decoded
+  // (keep_writes_bytes 0: LogReader): it never replays.
+  static std::unique_ptr<Session> open_log(const std::string& path,
+                                           std::uint64_t keep_writes_bytes = replay::LogReader::kKeepWritesBytes);
   // A mesh or an input, to look at (no timeline).
   static std::unique_ptr<Session> still(TriMesh mesh, std::string title);
   static std::unique_ptr<Session> still(Pslg input, std::string title);

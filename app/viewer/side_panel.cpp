@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "compare_view.hpp"
+#include "compare_with.hpp"
 #include "file_dialog.hpp"
 #include "meshstep/io/atomic_file.hpp"
 #include "meshstep/refine/quality.hpp"
@@ -77,6 +79,7 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
   ImGui::TextWrapped("%s", title.c_str() + (slash == std::string::npos ? 0 : slash + 1));
   ImGui::Separator();
   draw_edit_panel(*this);  // the workbench (edit_panel.hpp)
+  if (compare_) compare_->draw_panel(w - 24.0f);
 
   draw_selection_panel();
   ImGui::SetNextItemOpen(explain_open_);
@@ -133,6 +136,8 @@ void Viewer::draw_side_panel(float x, float y, float w, float h) {
     }
     draw_run_plots(w - 24.0f);
   }
+  // Last, so that the panels above stay where they were for one run.
+  if (!compare_) draw_compare_with(*this, compare_text_, sizeof compare_text_);
   ImGui::End();
 }
 

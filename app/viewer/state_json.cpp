@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "compare_view.hpp"
 #include "meshstep/scene/pseudocode.hpp"
 #include "ui_look.hpp"
 #include "viewer.hpp"
@@ -183,7 +184,9 @@ std::string state_json(Viewer& v) {
                            ", \"height\": " + number(r.w) + "}");
   if (v.workbench) out += workbench_state_fields(*v.workbench);  // the workbench's, one a line
   field("scene_builds", std::to_string(s.scene_builds()));
-  out += "  \"canvas_renders\": " + std::to_string(v.canvas_renders()) + "\n}\n";
+  field("canvas_renders", std::to_string(v.canvas_renders()));
+  // Last, so that older tests' first match of a key stays the top-level one.
+  out += "  \"runs\": " + runs_state_json(v) + "\n}\n";
   return out;
 }
 

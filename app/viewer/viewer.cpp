@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "compare_view.hpp"
 #include "imgui_gl.hpp"
 #include "edit_canvas.hpp"
 #include "keys.hpp"
@@ -34,7 +35,7 @@ BBox run_box(Session& session) {
 }  // namespace
 
 Viewer::Viewer(std::unique_ptr<Session> session, const CanvasOptions& canvas)
-    : session_(std::move(session)), view3d_(session_->log()) {
+    : session_(std::move(session)), view3d_(session_->log()), canvas_backend_(canvas.backend) {
   const replay::LogReader* log = session_->log();
   if (!log) return;
   angle_bound_ = log->run().min_angle.value_or(0.0);
@@ -280,7 +281,8 @@ void Viewer::frame(int width, int height, double seconds) {
   const float timeline = timeline_shown ? std::min(kTimelineHeight * ui_scale, 0.4f * static_cast<float>(height)) : 0.0f;
   const float canvas_w = std::max(1.0f, static_cast<float>(width) - side);
   const float canvas_h = std::max(1.0f, static_cast<float>(height) - timeline);
-  draw_canvas(0, 0, canvas_w, canvas_h);
+  if (compare_) compare_->draw(0, 0, canvas_w, canvas_h);
+  else draw_canvas(0, 0, canvas_w, canvas_h);
   if (!panels_hidden) draw_side_panel(canvas_w, 0, side, static_cast<float>(height));
   if (timeline_shown) draw_timeline(0, canvas_h, canvas_w, timeline);
   if (help_open) draw_help();
@@ -325,6 +327,10 @@ void Viewer::show_worker_picture() {
 }
 
 void Viewer::settle_canvas() {
+  if (compare_) {
+    compare_->settle();
+    return;
+  }
   if (!worker_) return;
   if (camera_.width() <= 1) {  // no frame yet: there is no canvas to wait for
     start_background_jobs();
@@ -499,6 +505,17 @@ void Viewer::draw_help() {
   ImGui::TextUnformatted("Drag the canvas to pan, turn the wheel to zoom at the pointer; drag the timeline to scrub.");
   ImGui::TextUnformatted("In 3D (a terrain's run, V): drag to turn the view, right-drag to pan, the wheel zooms.");
   ImGui::End();
+}
+
+void Viewer::show_side_by_side(SideBySide runs) {
+  if (runs.runs.size() < 2) return;
+  compare_ = std::make_unique<CompareView>(*this, std::move(runs), canvas_backend_);
+  fit_pending_ = true;
+}
+
+void Viewer::toggle_difference() {
+  if (compare_) compare_->difference = !compare_->difference;
+  else say("difference overlay: open two to four runs side by side (meshstep view A.mslog B.mslog)");
 }
 
 scene::Image Viewer::canvas_picture() {

@@ -35,6 +35,8 @@
 namespace meshstep::viewer {
 
 class WorkbenchHost;
+class CompareView;
+struct SideBySide;
 
 // Who draws the canvas: this thread, or a worker of its own (canvas_worker.hpp), which the
 // viewer chooses for runs of more than kCanvasWorkerVertices vertices (automatic).
@@ -159,7 +161,18 @@ class Viewer {
   // do, before they look). Returns at once when this thread draws the canvas.
   void settle_canvas();
 
+  // Runs side by side (compare_view.hpp): the other runs of `meshstep view A B [C D]`, this
+  // viewer's session leading them. Null for one run.
+  void show_side_by_side(SideBySide runs);
+  CompareView* compare() { return compare_.get(); }
+  // The difference overlay on or off (D); with one run the canvas says it needs two.
+  void toggle_difference();
+  // "Compare with..." (compare_with.hpp): the refinement's words the person (or a script)
+  // asked for; the run's loop takes them, runs the input again and shows both runs.
+  std::string compare_words;
+
  private:
+  friend class CompareView;  // it lays out the canvases, fits the shared camera, feeds the session
   void handle_keys();
   void draw_canvas(float x, float y, float w, float h);
   void draw_side_panel(float x, float y, float w, float h);
@@ -258,6 +271,10 @@ class Viewer {
   bool picture_in_3d_ = false;
   std::string notice_;
   double notice_seconds_ = 0.0;
+  std::string canvas_backend_;  // the GL library of the UI's context, for workers
+  char compare_text_[160] = "";  // the "Compare with..." field
+  // Last: destroyed first, as it refers to the session and the camera.
+  std::unique_ptr<CompareView> compare_;
 };
 
 }  // namespace meshstep::viewer
