@@ -20,28 +20,6 @@
 namespace meshstep::app {
 namespace {
 
-std::string short_number(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", v);
-  return buffer;
-}
-
-// The run description in a few words: the algorithm, its bounds, and the parts that are not
-// the defaults (a dcel, cavities), so that two columns say how their runs differ.
-std::string caption_of(const replay::LogHeader& h, const replay::RunHeader& run) {
-  std::string text = h.algorithm;
-  const auto add = [&text](const std::string& words) { text += ", " + words; };
-  if (run.min_angle && *run.min_angle > 0.0) add("min angle " + short_number(*run.min_angle));
-  if (run.max_angle && *run.max_angle < 180.0) add("max angle " + short_number(*run.max_angle));
-  if (run.max_aspect && *run.max_aspect > 0.0) add("max aspect " + short_number(*run.max_aspect));
-  if (run.max_area && *run.max_area > 0.0) add("max area " + short_number(*run.max_area));
-  if (run.size && *run.size > 0.0) add("size " + short_number(*run.size));
-  if (h.data_structure != "tds") add(h.data_structure);
-  const std::string insertion = run.insertion.empty() ? h.insertion : run.insertion;
-  if (insertion != "flip") add(insertion);
-  return text;
-}
-
 std::string log_file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 }  // namespace
@@ -56,7 +34,7 @@ LoggedRun read_logged_run(const std::string& path) {
   const replay::LogHeader& h = log.header();
   LoggedRun r;
   r.path = path;
-  r.caption = caption_of(h, log.run());
+  r.caption = replay::describe_run(h, log.run());
   r.input = h.input;
   r.input_hash = h.input_hash;
   r.algorithm = h.algorithm;

@@ -29,12 +29,6 @@ BBox log_box(const replay::LogReader& log) {
   return box;
 }
 
-std::string short_number(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", v);
-  return buffer;
-}
-
 }  // namespace
 
 // The workers' readers together keep no more writes decoded than one reader of a log of
@@ -45,22 +39,7 @@ std::uint64_t keep_writes_bytes(std::size_t runs) {
   return replay::LogReader::kKeepWritesBytes / (2 * std::max<std::size_t>(1, runs));
 }
 
-std::string run_description(const replay::LogReader& log) {
-  const replay::LogHeader& h = log.header();
-  const replay::RunHeader& run = log.run();
-  std::string text = h.algorithm.empty() ? std::string("run") : h.algorithm;
-  const auto add = [&text](const std::string& words) { text += ", " + words; };
-  if (run.min_angle && *run.min_angle > 0.0) add("min angle " + short_number(*run.min_angle));
-  if (run.max_angle && *run.max_angle < 180.0) add("max angle " + short_number(*run.max_angle));
-  if (run.max_aspect && *run.max_aspect > 0.0) add("max aspect " + short_number(*run.max_aspect));
-  if (run.max_area && *run.max_area > 0.0) add("max area " + short_number(*run.max_area));
-  if (run.size && *run.size > 0.0) add("size " + short_number(*run.size));
-  // The parts that are not the defaults, so that two captions say how their runs differ.
-  if (!h.data_structure.empty() && h.data_structure != "tds") add(h.data_structure);
-  const std::string insertion = run.insertion.empty() ? h.insertion : run.insertion;
-  if (!insertion.empty() && insertion != "flip") add(insertion);
-  return text;
-}
+std::string run_description(const replay::LogReader& log) { return replay::describe_run(log.header(), log.run()); }
 
 SideBySide open_side_by_side(const std::vector<std::string>& paths) {
   SideBySide out;

@@ -5,6 +5,7 @@
 
 #include "compare_view.hpp"
 #include "meshstep/scene/pseudocode.hpp"
+#include "state_text.hpp"
 #include "ui_look.hpp"
 #include "viewer.hpp"
 #include "workbench_host.hpp"
@@ -12,22 +13,6 @@
 namespace meshstep::viewer {
 
 namespace {
-
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) continue;
-    out += c;
-  }
-  return out + '"';
-}
-
-std::string number(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
 
 // An event as {"step": K, "event": E}, its step counted from 1 as the caption does.
 std::string event_json(std::uint64_t e, const replay::LogReader& log) {

@@ -7,6 +7,7 @@
 #include "meshstep/io/formats.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/replay/run_header.hpp"
+#include "state_text.hpp"
 
 namespace meshstep::viewer {
 
@@ -31,20 +32,6 @@ std::vector<Operation> recipe_of(const replay::LogReader& log) {
   }
   return {op};
 }
-
-namespace {
-
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) continue;
-    out += c;
-  }
-  return out + '"';
-}
-
-}  // namespace
 
 std::string workbench_state_fields(const WorkbenchHost& host) {
   const Workbench* bench = host.bench();

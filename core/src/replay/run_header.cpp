@@ -73,6 +73,25 @@ std::string terrain_parameters(const terrain::TerrainOptions& o, const terrain::
          " max_triangles=" + std::to_string(o.max_triangles);
 }
 
+std::string describe_run(const LogHeader& h, const RunHeader& run) {
+  const auto short_number = [](double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.6g", v);
+    return std::string(buffer);
+  };
+  std::string text = h.algorithm.empty() ? std::string("run") : h.algorithm;
+  const auto add = [&text](const std::string& words) { text += ", " + words; };
+  if (run.min_angle && *run.min_angle > 0.0) add("min angle " + short_number(*run.min_angle));
+  if (run.max_angle && *run.max_angle < 180.0) add("max angle " + short_number(*run.max_angle));
+  if (run.max_aspect && *run.max_aspect > 0.0) add("max aspect " + short_number(*run.max_aspect));
+  if (run.max_area && *run.max_area > 0.0) add("max area " + short_number(*run.max_area));
+  if (run.size && *run.size > 0.0) add("size " + short_number(*run.size));
+  if (!h.data_structure.empty() && h.data_structure != "tds") add(h.data_structure);
+  const std::string insertion = run.insertion.empty() ? h.insertion : run.insertion;
+  if (!insertion.empty() && insertion != "flip") add(insertion);
+  return text;
+}
+
 std::string header_parameter(const LogHeader& header, const std::string& key, const std::string& fallback) {
   std::istringstream words(header.parameters);
   std::string word;

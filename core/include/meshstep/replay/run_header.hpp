@@ -56,6 +56,11 @@ std::string surface_parameters(double max_edge, double max_area, std::uint64_t i
 // grid index), and the choices made.
 std::string terrain_parameters(const terrain::TerrainOptions& options, const terrain::HeightGrid& grid);
 
+// The run in a few words, for a caption or a column: the algorithm, its bounds, and the
+// parts that are not the defaults (a dcel, cavities), so that two runs' descriptions say how
+// they differ: "offcenter, min angle 30", "triangulate, dcel, cavity".
+std::string describe_run(const LogHeader& header, const RunHeader& run);
+
 // A value from the header's "key=value" parameters, or `fallback` (what read_run_header
 // reads; for showing the header's words as they are).
 std::string header_parameter(const LogHeader& header, const std::string& key, const std::string& fallback = "");
