@@ -83,6 +83,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   std::unique_ptr<Viewer> viewer;
   std::string problem;  // the last file that could not be opened, and why
   bool stopped_run = false;  // `problem` says why the run shown stopped short
+  bool tour_started = false;
   const auto show = [&](std::unique_ptr<Session> next) {
     Settings carried = options.settings ? *options.settings : Settings{};
     if (options.ui_scale > 0.0f) carried.ui_scale = options.ui_scale;
@@ -93,7 +94,14 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     host->set_title("meshstep view: " + path);
     viewer->window_title = host->title();
     if (options.settings || carried != Settings{}) viewer->apply(carried);
-    if (options.settings) {
+    // A tour's log is a temporary one, and its title the tour's: no recent file to keep.
+    const bool tour_log = options.tour && !tour_started;
+    if (tour_log) {
+      tour_started = true;
+      viewer->set_tour(options.tour);
+      options.tour->go(*viewer, 0);
+    }
+    if (options.settings && !tour_log) {
       std::error_code ec;
       options.settings->add_recent(std::filesystem::absolute(path, ec).string());
     }

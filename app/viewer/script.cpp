@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "keys.hpp"
+#include "teach_script.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/scene/scene.hpp"
 #include "timeline_marks.hpp"
@@ -111,6 +112,7 @@ std::string check(const ScriptAction& a) {
     for (std::size_t i = 0; i < kMarkCount; ++i) known.append(i ? ", " : "").append(name(static_cast<Mark>(i)));
     return std::string("unknown kind of mark '").append(a.args[0]).append("' (").append(known).append(")");
   }
+  if (v == "tour" || v == "quiz") return n == 0 ? "expected: " + v + " and what to do" : check_teaching_action(a);
   if (v == "type") return n == 1 && !a.args[0].empty() ? "" : "expected: type TEXT";
   if (v == "click" || v == "quit" || v == "check" || v == "wait" || v == "settle" || v == "watch") return count(0, v.c_str());
   if (v == "screenshot" || v == "canvas" || v == "state" || v == "peek" || v == "open") return count(1, (v + " FILE").c_str());

@@ -37,6 +37,10 @@
 //                       index, the plots over the whole run)
 //   open FILE           open a log, mesh or input as a dropped file would (an input is
 //                       triangulated); without INPUT the script starts on the start page
+//   tour next|prev      the tour's next (previous) stop; tour stop K: its K-th (from 1)
+//   quiz on [KIND]      predict the next step: questions of KIND (point, flip, terminal-edge,
+//                       encroached-segment; any when none); quiz answer X Y: a click at world
+//                       point X, Y; quiz next; quiz save FILE (the summary, JSON); quiz off
 //   quit
 #pragma once
 

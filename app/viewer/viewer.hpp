@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -30,6 +31,8 @@
 #include "session.hpp"
 #include "settings.hpp"
 #include "timeline.hpp"
+#include "quiz_mode.hpp"
+#include "tour_guide.hpp"
 #include "view_3d.hpp"
 
 namespace meshstep::viewer {
@@ -88,6 +91,19 @@ class Viewer {
   int window_height() const { return window_height_; }
   void cycle_color_by(int direction);
   void toggle_layer(scene::Layer layer);
+
+  // A guided tour (tour_guide.hpp), when one plays; null otherwise. Each frame updates it.
+  TourGuide* tour() { return tour_.get(); }
+  void set_tour(std::shared_ptr<TourGuide> tour) { tour_ = std::move(tour); }
+  // The camera fits this world box (a tour stop's) instead of the run's; none: the run's.
+  void fit_box(std::optional<BBox> box);
+  // The quiz (quiz_mode.hpp), while it is on; null otherwise. A click on the canvas answers
+  // its open question instead of selecting.
+  QuizMode* quiz() { return quiz_.get(); }
+  const QuizMode* quiz() const { return quiz_.get(); }
+  // Starts it (false, and `why`, when the run has no such question after the cursor).
+  bool start_quiz(std::optional<teach::QuestionKind> kind, std::string& why);
+  void stop_quiz();
 
   // The 3D view of a terrain's run (view_3d.hpp). Switching it on for a run without heights
   // is refused: false, and the canvas says why (notice()). The orbit changes only where
@@ -241,6 +257,9 @@ class Viewer {
   bool picture_in_3d_ = false;
   std::string notice_;
   double notice_seconds_ = 0.0;
+  std::shared_ptr<TourGuide> tour_;
+  std::unique_ptr<QuizMode> quiz_;
+  std::optional<BBox> fit_box_;
 };
 
 }  // namespace meshstep::viewer

@@ -12,10 +12,10 @@ namespace {
 
 constexpr std::array<const char*, 4> kKindWords = {"point", "flip", "terminal-edge", "encroached-segment"};
 constexpr std::array<const char*, 4> kPrompts = {
-    "Where does the new point go? Click where you predict it.",
-    "Which edge flips first? Click on it.",
-    "Which edge is the terminal edge of the Lepp path? Click on it.",
-    "Which segment is encroached? Click on it.",
+    "Where does the new point go for the bad triangle outlined in orange? Click where you predict it.",
+    "The blue point goes in next. Which edge flips first? Click on it.",
+    "Follow the Lepp path from the bad triangle outlined in orange. Which edge is its terminal edge? Click on it.",
+    "Which segment does the blue point encroach? Click on it.",
 };
 
 double distance_to_segment(Point p, Point a, Point b) {
@@ -33,8 +33,12 @@ std::array<std::optional<Question>, 4> candidates(const replay::LogReader& log, 
   std::array<std::optional<Question>, 4> found;
   const auto slot = [&](QuestionKind q) -> std::optional<Question>& { return found[static_cast<std::size_t>(q)]; };
   const std::uint64_t begin = log.step_start(k - 1), end = log.step_start(k);
+  std::optional<Point> inserted;  // the step's new vertex, once it is in
   for (std::uint64_t e = begin; e < end; ++e) {
     const replay::Event ev = log.event(e);
+    if ((ev.type == EventType::split_face || ev.type == EventType::split_edge || ev.type == EventType::cavity) &&
+        !inserted && ev.ids[0] < log.vertices().size())
+      inserted = log.vertices()[ev.ids[0]].point;
     Question q;
     q.step = k;
     if (ev.type == EventType::point_selected && !slot(QuestionKind::point) && ev.ids[0] != kNone &&
@@ -52,19 +56,26 @@ std::array<std::optional<Question>, 4> candidates(const replay::LogReader& log, 
       }
       if (!std::isfinite(shortest)) continue;
       q.tolerance = 0.25 * shortest;
+      q.triangle = {ev.ids[0], ev.ids[1], ev.ids[2]};
       slot(QuestionKind::point) = q;
     } else if (ev.type == EventType::flip && ev.code == static_cast<std::uint8_t>(replay::FlipReason::delaunay) &&
                !slot(QuestionKind::flip)) {
+      // Lawson flips after an insertion: the new vertex is the hint (none: not asked).
+      if (!inserted) continue;
       q.kind = QuestionKind::flip;
       q.edge = {ev.ids[0], ev.ids[1]};
+      q.hint = inserted;
       slot(QuestionKind::flip) = q;
     } else if (ev.type == EventType::lepp_path && !slot(QuestionKind::terminal_edge)) {
+      if (ev.list.size() < 3) continue;
       q.kind = QuestionKind::terminal_edge;
       q.edge = {ev.ids[0], ev.ids[1]};
+      q.triangle = {ev.list[0], ev.list[1], ev.list[2]};  // the path starts at the bad triangle
       slot(QuestionKind::terminal_edge) = q;
     } else if (ev.type == EventType::encroached && !slot(QuestionKind::encroached_segment)) {
       q.kind = QuestionKind::encroached_segment;
       q.edge = {ev.ids[0], ev.ids[1]};
+      q.hint = ev.point;
       slot(QuestionKind::encroached_segment) = q;
     }
   }

@@ -40,6 +40,11 @@ struct Question {
   Point point;             // point: where the step puts its new point
   double tolerance = 0.0;  // point: an answer this near is right
   Edge edge{kNone, kNone}; // the others: the edge that is the answer
+  // What the question shows, so that it can be answered: the bad triangle (point,
+  // terminal-edge), or the point the step puts in (flip: the new vertex; encroached-segment:
+  // the encroaching point).
+  std::array<VertexId, 3> triangle{kNone, kNone, kNone};
+  std::optional<Point> hint;
 };
 
 // The question step k (1..n) asks, of the kind wanted (none: the first that applies, in the
