@@ -43,7 +43,9 @@ bool QuizMode::start(Viewer& viewer, std::optional<teach::QuestionKind> kind, st
     return false;
   }
   kind_ = kind;
-  return ask(viewer, viewer.session().cursor_info().completed, why);
+  // From the cursor; a log opens at its end, so with nothing after it, from the start.
+  const std::uint64_t here = viewer.session().cursor_info().completed;
+  return ask(viewer, here, why) || (here > 0 && ask(viewer, 0, why));
 }
 
 bool QuizMode::ask(Viewer& viewer, std::uint64_t from_moment, std::string& why) {

@@ -114,6 +114,7 @@ void quiz_key(Viewer& viewer) {
 std::string tour_state_json(Viewer& viewer) {
   TourGuide* tour = viewer.tour();
   if (!tour) return "null";
+  if (!viewer.quiz()) tour->update(viewer);  // as the next frame will: the cursor may have moved
   std::string steps = "[";
   for (const std::uint64_t k : tour->steps()) steps += (steps.size() > 1 ? ", " : "") + std::to_string(k);
   return "{\"stop\": " + std::to_string(tour->current() + 1) + ", \"stops\": " + std::to_string(tour->stop_count()) +

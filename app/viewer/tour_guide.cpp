@@ -45,6 +45,7 @@ bool TourGuide::go(Viewer& viewer, std::size_t i) {
 }
 
 bool TourGuide::next(Viewer& viewer) {
+  update(viewer);  // the cursor may have moved since the last frame (a script, a key)
   const std::uint64_t here = viewer.session().cursor_info().position;
   if (at_stop_) return go(viewer, current_ + 1);
   for (std::size_t i = 0; i < positions_.size(); ++i)
@@ -53,6 +54,7 @@ bool TourGuide::next(Viewer& viewer) {
 }
 
 bool TourGuide::previous(Viewer& viewer) {
+  update(viewer);
   const std::uint64_t here = viewer.session().cursor_info().position;
   if (at_stop_) return current_ > 0 && go(viewer, current_ - 1);
   for (std::size_t i = positions_.size(); i-- > 0;)

@@ -212,8 +212,9 @@ void Viewer::fit_camera(int width, int height) {
     view3d_.center_pivot();
     view3d_.aim(camera_);
   } else {
-    camera_ = scene::Camera::fit(fit_box_ ? *fit_box_ : run_box(*session_), width, height,
-                                 scene::layout(s, width, height).margins);
+    scene::Margins margins = scene::layout(s, width, height).margins;
+    if (tour_) margins.top += 30.0 * ui_scale;  // the tour's row of buttons, under the caption
+    camera_ = scene::Camera::fit(fit_box_ ? *fit_box_ : run_box(*session_), width, height, margins);
   }
   fit_pending_ = false;
   camera_moved_ = false;

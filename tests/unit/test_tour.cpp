@@ -71,7 +71,7 @@ TEST_F(TourFile, AGoodTourIsReadAsWritten) {
   ASSERT_EQ(t.operations.size(), 1u);
   EXPECT_EQ(t.operations[0].algorithm, "circumcenter");
   EXPECT_EQ(t.operations[0].min_angle, 25.0);
-  EXPECT_EQ(t.run_line, 3);
+  EXPECT_EQ(t.run_line, 4);
   EXPECT_EQ(t.color_by, scene::ColorBy::angle);
   ASSERT_TRUE(t.layers);
   EXPECT_FALSE(t.layers->apply(scene::LayerSet::all()).has(scene::Layer::labels));
@@ -80,7 +80,7 @@ TEST_F(TourFile, AGoodTourIsReadAsWritten) {
   ASSERT_EQ(t.stops.size(), 3u);
   EXPECT_EQ(t.stops[0].where, TourStop::Where::step);
   EXPECT_EQ(t.stops[0].step, 0u);
-  EXPECT_EQ(t.stops[0].line, 7);
+  EXPECT_EQ(t.stops[0].line, 8);
   EXPECT_EQ(t.stops[1].where, TourStop::Where::next);
   EXPECT_EQ(t.stops[1].next, Happening::segment_split);
   EXPECT_EQ(t.stops[1].caption, "A segment is encroached, so it is split at its midpoint.");

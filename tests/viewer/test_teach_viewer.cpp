@@ -61,16 +61,16 @@ TEST_F(TeachViewer, ATourOpensAtItsFirstStopAndMovesFromStopToStop) {
   const teach::Tour tour = teach::read_tour(tour_path);
   const replay::LogReader log(record_ruppert());
   std::ofstream(path("s.txt")) << "state " << path("1.json") << "\ntour next\nstate " << path("2.json")
-                               << "\nkey N\nstate " << path("3.json") << "\nseek step 3\nstate " << path("4.json")
-                               << "\nkey N\nstate " << path("5.json") << "\nkey P\nkey P\nstate " << path("6.json")
+                               << "\nkey N\nstate " << path("3.json") << "\nseek step 40\nstate " << path("4.json")
+                               << "\nkey N\nstate " << path("5.json") << "\ntour stop 1\nkey P\nstate " << path("6.json")
                                << "\ntour stop 6\nscreenshot " << path("end.png") << "\nstate " << path("7.json") << "\n";
   const Result r = run(std::string(MESHSTEP_VIEW_BINARY) + " --tour " + tour_path + " --window 1280x720 -q --script " +
                        path("s.txt") + " --offscreen --gl egl");
   if (r.status != 0 && has(r.output, "cannot open a window or draw")) GTEST_SKIP() << r.output;
   ASSERT_EQ(r.status, 0) << r.output;
 
-  // The steps the stops show, from the log's step kinds: the input, the carving, the first
-  // segment split after it.
+  // The steps the stops show, from the log's step kinds: the tour's first (a step number),
+  // the carving, the first segment split after it.
   std::uint64_t carve = 0, split = 0;
   for (std::uint64_t k = 0; k < log.step_count(); ++k) {
     if (!carve && log.step_kind(k) == replay::StepKind::carve) carve = k + 1;
@@ -78,27 +78,31 @@ TEST_F(TeachViewer, ATourOpensAtItsFirstStopAndMovesFromStopToStop) {
   }
   ASSERT_GT(carve, 0u);
   ASSERT_GT(split, carve);
+  ASSERT_EQ(tour.stops[0].where, teach::TourStop::Where::step);
+  const auto first = static_cast<long long>(tour.stops[0].step), last = static_cast<long long>(log.step_count());
+  ASSERT_LT(first, 40);
   const auto step_of = [](const std::string& json) { return field(json, "step"); };
   const std::string s1 = read_text(path("1.json")), s2 = read_text(path("2.json")), s3 = read_text(path("3.json"));
-  EXPECT_EQ(step_of(s1), 0);
+  EXPECT_EQ(step_of(s1), first);
   EXPECT_TRUE(has(line_of(s1, "tour"), "\"stop\": 1, \"stops\": 6, \"at_stop\": true")) << line_of(s1, "tour");
   EXPECT_TRUE(has(line_of(s1, "tour"), "\"narration\": " + quoted(tour.stops[0].caption))) << line_of(s1, "tour");
   EXPECT_EQ(step_of(s2), static_cast<long long>(carve));
   EXPECT_TRUE(has(line_of(s2, "tour"), "\"stop\": 2,")) << line_of(s2, "tour");
   EXPECT_EQ(step_of(s3), static_cast<long long>(split));
   EXPECT_TRUE(has(line_of(s3, "tour"), "\"narration\": " + quoted(tour.stops[2].caption)));
-  // Scrubbed away: no caption; N goes to the first stop after the cursor (the carving's).
+  // Scrubbed away (step 40, between stops 5 and 6): no caption; N goes to the first stop
+  // after the cursor, the end.
   const std::string s4 = read_text(path("4.json")), s5 = read_text(path("5.json"));
   EXPECT_TRUE(has(line_of(s4, "tour"), "\"at_stop\": false")) << line_of(s4, "tour");
   EXPECT_TRUE(has(line_of(s4, "tour"), "\"narration\": \"\"")) << line_of(s4, "tour");
-  EXPECT_EQ(step_of(s5), static_cast<long long>(carve));
-  EXPECT_TRUE(has(line_of(s5, "tour"), "\"stop\": 2, \"stops\": 6, \"at_stop\": true"));
-  // P twice from stop 2: stop 1, then nothing before it (the canvas says so).
+  EXPECT_EQ(step_of(s5), last);
+  EXPECT_TRUE(has(line_of(s5, "tour"), "\"stop\": 6, \"stops\": 6, \"at_stop\": true")) << line_of(s5, "tour");
+  // P at the first stop: nothing before it (the canvas says so).
   const std::string s6 = read_text(path("6.json"));
-  EXPECT_EQ(step_of(s6), 0);
+  EXPECT_EQ(step_of(s6), first);
   EXPECT_TRUE(has(s6, "tour: this is the first stop")) << line_of(s6, "notice");
   const std::string s7 = read_text(path("7.json"));
-  EXPECT_EQ(step_of(s7), static_cast<long long>(log.step_count()));
+  EXPECT_EQ(step_of(s7), last);
   EXPECT_TRUE(fs::file_size(path("end.png")) > 10000);
 }
 
@@ -158,7 +162,7 @@ TEST_F(TeachViewer, TheQuizScoresRightAndWrongAnswers) {
     std::snprintf(buf, sizeof buf, "%.17g %.17g", p.x, p.y);
     return std::string(buf);
   };
-  const std::string script = "quiz on point\nstate " + path("q1.json") + "\nquiz answer " + xy(a.point) + "\nstate " +
+  const std::string script = "seek start\nquiz on point\nstate " + path("q1.json") + "\nquiz answer " + xy(a.point) + "\nstate " +
                              path("q2.json") + "\nquiz next\nquiz answer 1000 1000\nstate " + path("q3.json") +
                              "\nquiz save " + path("summary.json") + "\nquiz off\nseek start\nquiz on flip\nstate " +
                              path("f1.json") + "\nquiz answer " + xy(a.elsewhere) + "\nstate " + path("f2.json") +

@@ -213,6 +213,7 @@ Tour parse_tour(std::string_view text, const std::string& path) {
   int input_line = 0;
   bool have_run = false;
   TourStop* stop = nullptr;
+  int caption_line = 0;  // the current stop's last caption line
   std::istringstream in{std::string(text)};
   std::string raw;
   for (int line = 1; std::getline(in, raw); ++line) {
@@ -262,14 +263,15 @@ Tour parse_tour(std::string_view text, const std::string& path) {
       if (input_line == 0) throw InputError(path, line, "stop: name the input first ('input FILE.poly')");
       if (!have_run) throw InputError(path, line, "stop: name the run first ('run refine ...', 'run triangulate' or 'recipe FILE')");
       if (stop && stop->caption.empty()) throw InputError(path, stop->line, "stop: no caption (say what the stop shows)");
+      if (stop) check_caption(stop->caption, path, caption_line);
       tour.stops.push_back(parse_stop_place(words, path, line));
       stop = &tour.stops.back();
     } else if (key == "caption") {
       if (!stop) throw InputError(path, line, "caption: belongs to a stop ('stop ...' first)");
       if (rest.empty()) throw InputError(path, line, "caption: expected one to three sentences");
-      // Several caption lines make one caption.
+      // Several caption lines make one caption, checked whole when its stop ends.
       stop->caption.append(stop->caption.empty() ? "" : " ").append(rest);
-      check_caption(stop->caption, path, line);
+      caption_line = line;
     } else if (key == "layers") {
       LayerChoice choice = parse_layers(words, path, line);
       (stop ? stop->layers : tour.layers) = std::move(choice);
@@ -292,6 +294,7 @@ Tour parse_tour(std::string_view text, const std::string& path) {
   if (!have_run) throw InputError(path, 0, "no 'run ...' or 'recipe FILE' line: a tour names its run");
   if (tour.stops.empty()) throw InputError(path, 0, "no stop: a tour has at least one ('stop step K', then its caption)");
   if (stop && stop->caption.empty()) throw InputError(path, stop->line, "stop: no caption (say what the stop shows)");
+  if (stop) check_caption(stop->caption, path, caption_line);
   return tour;
 }
 
