@@ -21,6 +21,7 @@
 #include "png_frame_writer.hpp"
 #include "common/scene_source.hpp"
 #include "staged_frames.hpp"
+#include "tour_export.hpp"
 #include "video_pipe.hpp"
 #include "render/painter.hpp"
 
@@ -29,6 +30,7 @@ namespace {
 
 struct ExportArgs {
   std::string log;
+  std::string tour;  // a guided tour instead of a log (tour_export.hpp)
   std::string frames;
   std::string video;
   std::string every = "step";
@@ -87,6 +89,31 @@ std::vector<std::string> existing_frames(const std::string& dir) {
     if (name.starts_with("frame_") && name.ends_with(".png")) frames.push_back(it->path().string());
   }
   return frames;
+}
+
+// A tour names its own run and its own moments: none of a log's options goes with it.
+int run_tour_export(const ExportArgs& args, const CLI::App& cmd) {
+  if (const int refused = refuse_overwrites(FileRoles()
+                                                .reads(args.tour)
+                                                .writes("--video", args.video, "video")
+                                                .writes("--frames", args.frames, "frames folder")
+                                                .writes_existing("--frames", args.frames, existing_frames(args.frames),
+                                                                 "frames folder")))
+    return refused;
+  return with_picture_errors("", [&] {
+    if (!args.log.empty()) throw UsageError("--tour names its own run: give no LOG (" + args.log + ") with it");
+    for (const char* option : {"--every", "--from", "--to", "--duration", "--spin", "--orbit", "--z-scale"})
+      if (cmd.count(option)) throw UsageError(std::string(option) + " is for a log's animation: a tour's stops say what it shows");
+    check_args(args);
+    TourExportArgs tour;
+    tour.tour = args.tour;
+    tour.frames = args.frames;
+    tour.video = args.video;
+    tour.fps = args.fps;
+    tour.draw = parse_draw_args(args.draw);
+    tour.quiet = args.quiet;
+    return export_tour(tour);
+  });
 }
 
 int run_export(const ExportArgs& args) {
@@ -191,7 +218,10 @@ Command add_export_command(CLI::App& parent) {
       "Export a recorded run's animation: numbered PNG frames (--frames DIR: frame_000000.png,\n"
       "...) or a video through ffmpeg (--video OUT.mp4|OUT.webm|OUT.gif). Each frame is the mesh\n"
       "at one moment with the overlays that explain the step just taken, drawn off screen.");
-  cmd->add_option("LOG", args->log, "Replay log (written with --record)")->required();
+  cmd->add_option("LOG", args->log, "Replay log (written with --record); none with --tour");
+  cmd->add_option("--tour", args->tour,
+                  "A guided tour (docs/tours.md) instead of a log: its run is recorded, then each stop is\n"
+                  "drawn with its caption and held for its seconds (4 unless the tour says)");
   cmd->add_option("--frames", args->frames, "Folder for the PNG frames (made if missing)");
   cmd->add_option("--video", args->video, "Video file: .mp4 (H.264), .webm (VP9) or .gif (needs ffmpeg)");
   cmd->add_option("--every", args->every,
@@ -214,8 +244,16 @@ Command add_export_command(CLI::App& parent) {
       "  meshstep refine assets/examples/lesson.poly --algorithm offcenter --min-angle 30 --record l.mslog\n"
       "  meshstep export l.mslog --frames frames/ --every event --to 400\n"
       "  meshstep export l.mslog --video lesson.mp4 --fps 4\n"
-      "  meshstep export l.mslog --video lesson.gif --duration 10 --size 640x360 --color-by quality");
-  return {cmd, [args] { return run_export(*args); }};
+      "  meshstep export l.mslog --video lesson.gif --duration 10 --size 640x360 --color-by quality\n"
+      "  meshstep export --tour assets/tours/ruppert.tour --video ruppert.mp4");
+  return {cmd, [args, cmd] {
+            if (!args->tour.empty()) return run_tour_export(*args, *cmd);
+            if (args->log.empty()) {
+              print_error("export: give a LOG (or --tour FILE)");
+              return kExitUsage;
+            }
+            return run_export(*args);
+          }};
 }
 
 }  // namespace meshstep::app

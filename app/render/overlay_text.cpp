@@ -53,6 +53,18 @@ void add_caption(const scene::Scene& s, const scene::Layout& layout, FontCache& 
   text_at(batch, fonts, layout.caption, s.caption, text_color(s), scene::Layer::caption);
 }
 
+void add_narration(const scene::Scene& s, const scene::Layout& layout, FontCache& fonts, UiBatch& batch) {
+  if (!layout.narration_band || layout.narration_spots.empty()) return;
+  batch.begin(kNoteLayer, fonts.at(f(layout.narration_spots[0].size_px)));
+  // Nearly opaque: sentences are read, not glanced at, and the mesh is above the band.
+  const Rect& band = *layout.narration_band;
+  rectangle(batch, band, panel_color(s, 235));
+  // A hairline along its top: the band is part of the picture, not of the mesh.
+  batch.rectangle(f(band.x), f(band.y), f(band.x + band.w), f(band.y) + 1.0f, with_alpha(text_color(s), 70));
+  for (std::size_t i = 0; i < layout.narration_spots.size() && i < layout.narration_lines.size(); ++i)
+    text_at(batch, fonts, layout.narration_spots[i], layout.narration_lines[i], text_color(s), kNoteLayer);
+}
+
 void add_legend(const scene::Scene& s, const scene::Layout& layout, FontCache& fonts, UiBatch& batch) {
   if (!layout.legend || !s.legend) return;
   const scene::LegendLayout& place = *layout.legend;

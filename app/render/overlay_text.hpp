@@ -15,6 +15,9 @@
 namespace meshstep::render {
 
 void add_caption(const scene::Scene& scene, const scene::Layout& layout, FontCache& fonts, UiBatch& batch);
+// A tour's narration (Scene::narration) on its band at the bottom, in kNoteLayer: it shows
+// whatever layers a stop switches off.
+void add_narration(const scene::Scene& scene, const scene::Layout& layout, FontCache& fonts, UiBatch& batch);
 void add_legend(const scene::Scene& scene, const scene::Layout& layout, FontCache& fonts, UiBatch& batch);
 void add_labels(const scene::Scene& scene, const scene::Camera& camera, FontCache& fonts, UiBatch& batch);
 

@@ -140,6 +140,7 @@ void Renderer::render(const scene::Scene& scene, const scene::Camera& camera, in
   if (scene.visible.has(scene::Layer::labels)) add_labels(scene, camera, s.fonts, s.text);
   add_caption(scene, layout, s.fonts, s.text);
   add_legend(scene, layout, s.fonts, s.text);
+  add_narration(scene, layout, s.fonts, s.text);
   add_note(scene, camera.height(), note, s.fonts, s.text);
   s.ui.upload(s.text);
 
@@ -167,7 +168,7 @@ void Renderer::render(const scene::Scene& scene, const scene::Camera& camera, in
     s.draw_shapes(view, layer);
     s.ui.draw(view, s.text, layer);
   }
-  if (!note.empty()) s.ui.draw(view, s.text, kNoteLayer);
+  if (!note.empty() || !scene.narration.empty()) s.ui.draw(view, s.text, kNoteLayer);
   s.target.resolve();
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

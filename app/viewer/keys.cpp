@@ -10,6 +10,7 @@
 
 #include "edit_keys.hpp"
 #include "file_dialog.hpp"
+#include "teach_script.hpp"
 #include "viewer.hpp"
 
 namespace meshstep::viewer {
@@ -58,6 +59,9 @@ std::vector<KeyAction> make_actions() {
     Playback& p = v.session().playback();
     p.unit = p.unit == Unit::event ? Unit::step : p.unit == Unit::step ? Unit::phase : Unit::event;
   });
+  add({GLFW_KEY_N}, "N", "next stop of the tour, or the quiz's next question", [](Viewer& v) { next_key(v); });
+  add({GLFW_KEY_P}, "P", "previous stop of the tour", [](Viewer& v) { previous_key(v); });
+  add({GLFW_KEY_G}, "G", "quiz: predict the next step (on / off)", [](Viewer& v) { quiz_key(v); });
   add({GLFW_KEY_F}, "F", "fit the run in view", [](Viewer& v) { v.request_fit(); });
   add({GLFW_KEY_D}, "D", "difference overlay (runs side by side)", [](Viewer& v) { v.toggle_difference(); });
   add({GLFW_KEY_L}, "L", "follow the current step while playing", [](Viewer& v) { v.follow = !v.follow; });

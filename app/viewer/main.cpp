@@ -10,12 +10,15 @@
 #include <vector>
 
 #include "common/file_roles.hpp"
+#include "common/tour_run.hpp"
 #include "meshstep/error.hpp"
 #include "render/gl_context.hpp"
 #include "compare_view.hpp"
 #include "open_input.hpp"
 #include "run.hpp"
 #include "settings.hpp"
+#include "sibling_program.hpp"
+#include "tour_guide.hpp"
 #include "ui_look.hpp"
 
 namespace {
@@ -33,6 +36,7 @@ struct Args {
   bool offscreen = false, quiet = false;
   std::string frame_log, canvas = "auto";
   std::string ui_scale;  // "" when not given
+  std::string tour;      // a guided tour (docs/tours.md): its run is recorded, then played
   // Of an input, as `meshstep refine` takes them (the window's size is --window, so that
   // --size means what it means to refine).
   std::string algorithm, min_angle, max_angle, max_area, max_aspect, size, max_memory;
@@ -78,6 +82,9 @@ int main(int argc, char** argv) {
                  "shown side by side, one timeline driving them all");
   app.add_option("--step", a.step, "Open at the mesh after this many steps (default: the end)");
   app.add_option("--event", a.event, "Open after this many events");
+  app.add_option("--tour", a.tour,
+                 "Play a guided tour (docs/tours.md): its run is recorded first, then N and P go from stop to\n"
+                 "stop, each with its caption on the canvas (no INPUT: the tour names its own)");
   app.add_option("--script", a.script, "Run the actions of this file (see docs/viewer.md), with a fixed frame time");
   app.add_flag("--offscreen", a.offscreen, "No window: draw off screen (EGL or OSMesa), for scripts");
   app.add_option("--gl", a.gl, "Off-screen OpenGL: auto, egl or osmesa")->default_str("auto");
@@ -138,6 +145,7 @@ int main(int argc, char** argv) {
                              .reads_pslg(a.input)
                              .reads_mesh(a.input)
                              .reads(a.script)
+                             .reads(a.tour)
                              .writes("--frame-log", a.frame_log, "frame log")
                              .clash()) {
     std::fprintf(stderr, "meshstep view: %s\n", clash->c_str());
@@ -179,6 +187,23 @@ int main(int argc, char** argv) {
       options.script_path = a.script;
     }
     std::unique_ptr<viewer::Session> session;
+    // A tour names its input and its run: recorded here, into a folder that lives as long as
+    // the viewer (its background jobs read the log again by its path).
+    std::optional<app::ScratchFolder> tour_scratch;
+    if (!a.tour.empty()) {
+      if (!a.input.empty()) {
+        std::fprintf(stderr, "meshstep view: --tour %s names its own input: give no INPUT (%s) with it\n", a.tour.c_str(),
+                     a.input.c_str());
+        return kExitUsage;
+      }
+      teach::Tour tour = teach::read_tour(a.tour);
+      tour_scratch.emplace();
+      if (!a.quiet) std::fprintf(stderr, "meshstep view: recording the tour's run of %s...\n", tour.input.c_str());
+      const std::string log = app::record_tour_run(tour, viewer::sibling_program("meshstep"), *tour_scratch);
+      session = viewer::Session::open_log(log);
+      session->set_title(tour.title.empty() ? a.tour : tour.title);
+      options.tour = std::make_shared<viewer::TourGuide>(std::move(tour), *session->log());
+    }
     // A mistyped path is the commonest bad input: say so, not just that it cannot be read.
     if (std::error_code ec; !a.input.empty() && !fs::exists(a.input, ec))
       throw InputError(a.input, 0, "does not exist (no such file: check the path)");

@@ -102,6 +102,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   std::unique_ptr<Viewer> viewer;
   std::string problem;  // the last file that could not be opened, and why
   bool stopped_run = false;  // `problem` says why the run shown stopped short
+  bool tour_started = false;
   // How a session comes to be shown: opened, re-meshed after an edit (not a recent file),
   // or as the leader of runs side by side (its canvas drawn on this thread).
   enum class Shown { opened, edited, side_by_side };
@@ -120,7 +121,14 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     viewer->window_title = host->title();
     viewer->workbench = &bench;
     if (options.settings || carried != Settings{}) viewer->apply(carried);
-    if (options.settings && !edited) {
+    // A tour's log is a temporary one, and its title the tour's: no recent file to keep.
+    const bool tour_log = options.tour && !tour_started;
+    if (tour_log) {
+      tour_started = true;
+      viewer->set_tour(options.tour);
+      options.tour->go(*viewer, 0);
+    }
+    if (options.settings && !edited && !tour_log) {
       std::error_code ec;
       options.settings->add_recent(std::filesystem::absolute(path, ec).string());
     }

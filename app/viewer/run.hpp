@@ -41,6 +41,9 @@ struct RunOptions {
   float ui_scale = 0.0f;
   // Options to start from and to keep (nullptr: the defaults, nothing kept: scripts).
   Settings* settings = nullptr;
+  // A guided tour to play (`--tour`), resolved against the session's log: the first viewer
+  // shown plays it from its first stop.
+  std::shared_ptr<TourGuide> tour;
   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 };
 

@@ -8,6 +8,7 @@
 #include "edit_script.hpp"
 #include "compare_sync.hpp"
 #include "keys.hpp"
+#include "teach_script.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/scene/scene.hpp"
 #include "timeline_marks.hpp"
@@ -122,6 +123,7 @@ std::string check(const ScriptAction& a) {
     return "expected: difference on|off";
   }
   if (v == "compare-with") return n >= 1 ? "" : "expected: compare-with OPTIONS (as refine takes them: --algorithm NAME ...)";
+  if (v == "tour" || v == "quiz") return n == 0 ? "expected: " + v + " and what to do" : check_teaching_action(a);
   if (v == "type") return n == 1 && !a.args[0].empty() ? "" : "expected: type TEXT";
   if (v == "click" || v == "quit" || v == "check" || v == "wait" || v == "settle" || v == "watch") return count(0, v.c_str());
   if (v == "screenshot" || v == "canvas" || v == "state" || v == "peek" || v == "open") return count(1, (v + " FILE").c_str());

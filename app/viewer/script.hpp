@@ -41,6 +41,10 @@
 //   difference on|off   runs side by side: the difference overlay (D)
 //   compare-with OPTIONS  run the open run's input again with these refine options, live,
 //                       then show both side by side ("Compare with...")
+//   tour next|prev      the tour's next (previous) stop; tour stop K: its K-th (from 1)
+//   quiz on [KIND]      predict the next step: questions of KIND (point, flip, terminal-edge,
+//                       encroached-segment; any when none); quiz answer X Y: a click at world
+//                       point X, Y; quiz next; quiz save FILE (the summary, JSON); quiz off
 //   quit
 //   new | edit WHAT ... | undo | redo | save FILE.poly
 //                       the workbench: an input edited and re-meshed at once (edit_script.hpp)

@@ -21,6 +21,7 @@
 #include "meshstep/scene/svg.hpp"
 #include "script.hpp"
 #include "state_json.hpp"
+#include "teach_script.hpp"
 #include "ui_look.hpp"
 #include "viewer.hpp"
 #include "workbench_host.hpp"
@@ -189,6 +190,10 @@ class ScriptPlayer {
         if (!refused.empty()) throw InputError(path_, static_cast<std::size_t>(a.line), "seek step: " + refused);
       }
       else viewer->session().seek(std::strtoull(a.args[1].c_str(), nullptr, 10));
+      return false;
+    }
+    if (v == "tour" || v == "quiz") {
+      run_teaching_action(a, *viewer, path_);
       return false;
     }
     if (v == "watch") {

@@ -236,6 +236,13 @@ void Session::set_layer(scene::Layer layer, bool on) {
   scene_.visible = options_.layers;
 }
 
+void Session::set_narration(std::string text) {
+  if (narration_ == text) return;
+  narration_ = std::move(text);
+  scene_.narration = narration_;
+  ++scene_builds_;  // the same mesh with other words: drawn again, not built again
+}
+
 const scene::Scene& Session::scene() {
   if (!scene_stale_ || pictures_deferred_) return scene_;
   if (log_) {
@@ -251,6 +258,7 @@ const scene::Scene& Session::scene() {
   } else if (input_) {
     scene_ = scene::build_scene(*input_, options_);
   }
+  scene_.narration = narration_;
   scene_stale_ = false;
   ++scene_builds_;
   return scene_;
@@ -282,6 +290,7 @@ void Session::adopt(Moment& moment) {
   shown_position_ = moment.position;
   scene_.visible = options_.layers;
   scene_.text_scale = options_.text_scale;
+  scene_.narration = narration_;
   ++scene_builds_;
 }
 

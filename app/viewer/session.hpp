@@ -108,6 +108,9 @@ class Session {
   // The canvas's words this many times their size (Scene::text_scale; the UI scale).
   void set_text_scale(float scale);
   void set_layer(scene::Layer layer, bool on);
+  // A tour's caption on the canvas (Scene::narration), kept across moves; "" for none.
+  void set_narration(std::string text);
+  const std::string& narration() const { return narration_; }
   bool layer(scene::Layer layer) const { return options_.layers.has(layer); }
 
   // The picture at the cursor (rebuilt if stale), and the words for it.
@@ -149,6 +152,7 @@ class Session {
   std::array<std::optional<std::uint64_t>, 10> bookmarks_{};
   scene::SceneOptions options_;
   scene::FaceAges ages_;
+  std::string narration_;
 
   scene::Scene scene_;
   scene::Explanation explanation_;

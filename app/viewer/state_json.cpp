@@ -7,6 +7,7 @@
 #include "meshstep/scene/pseudocode.hpp"
 #include "state_text.hpp"
 #include "ui_look.hpp"
+#include "teach_script.hpp"
 #include "viewer.hpp"
 #include "workbench_host.hpp"
 
@@ -156,6 +157,9 @@ std::string state_json(Viewer& v) {
   // Presentation: the UI scale, the font atlas it was rasterised into (its texture's
   // height grows with the scale), the panels hidden or not, full screen, the window and the
   // canvas's rectangle. Last: tests of older fields find the camera's by its first "x".
+  // A tour's stop and a quiz's score (teach_script.hpp), null when none is on.
+  field("tour", tour_state_json(v));
+  field("quiz", quiz_state_json(v));
   field("ui_scale", format_ui_scale(v.ui_scale));
   field("font_pixels", number(ImGui::GetIO().Fonts->Fonts.empty() ? 0.0 : ImGui::GetIO().Fonts->Fonts[0]->FontSize));
   field("font_atlas", "{\"width\": " + std::to_string(ImGui::GetIO().Fonts->TexWidth) +

@@ -215,7 +215,9 @@ void Viewer::fit_camera(int width, int height) {
     view3d_.center_pivot();
     view3d_.aim(camera_);
   } else {
-    camera_ = scene::Camera::fit(run_box(*session_), width, height, scene::layout(s, width, height).margins);
+    scene::Margins margins = scene::layout(s, width, height).margins;
+    if (tour_) margins.top += 30.0 * ui_scale;  // the tour's row of buttons, under the caption
+    camera_ = scene::Camera::fit(fit_box_ ? *fit_box_ : run_box(*session_), width, height, margins);
   }
   fit_pending_ = false;
   camera_moved_ = false;
@@ -246,6 +248,25 @@ void Viewer::follow_step() {
   camera_changed_by_hand();
 }
 
+void Viewer::fit_box(std::optional<BBox> box) {
+  fit_box_ = box;
+  fit_pending_ = true;
+}
+
+bool Viewer::start_quiz(std::optional<teach::QuestionKind> kind, std::string& why) {
+  auto quiz = std::make_unique<QuizMode>();
+  if (quiz_) quiz_->stop(*this);
+  quiz_.reset();
+  if (!quiz->start(*this, kind, why)) return false;
+  quiz_ = std::move(quiz);
+  return true;
+}
+
+void Viewer::stop_quiz() {
+  if (quiz_) quiz_->stop(*this);
+  quiz_.reset();
+}
+
 void Viewer::handle_keys() {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantCaptureKeyboard) return;
@@ -259,6 +280,8 @@ void Viewer::handle_keys() {
 void Viewer::frame(int width, int height, double seconds) {
   handle_keys();
   session_->advance(seconds);
+  // The quiz's words take the caption's band while it is on.
+  if (tour_ && !quiz_) tour_->update(*this);
   notice_seconds_ = std::max(0.0, notice_seconds_ - seconds);
 
   window_width_ = width;
@@ -401,6 +424,9 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
   const bool editing = workbench && workbench->editing && !view3d_.on();
   if (worker_ && worker_->drawing()) draw_drawing_badge(x, y);
   if (notice_shown()) draw_notice(x, y);
+  // The tour's row, under the caption's band.
+  if (tour_) tour_->draw(*this, x + 10.0f, y + 40.0f * ui_scale, w - 20.0f);
+  if (quiz_) quiz_->draw(*this, x, y, w);
 
   // 2D: drag to pan. 3D: drag to turn the orbit, right-drag to pan. The wheel zooms at the
   // pointer in both.
@@ -434,7 +460,9 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
     if (moved && session_->scene().mesh.triangles.size() <= 200000) pick_under(at, hovered_);
     // A click (pressed and released without a drag) selects.
     if (!editing && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 9.0f) {
-      if (in_3d) {
+      if (quiz_ && quiz_->asking() && !in_3d) {
+        quiz_->answer(*this, camera_.to_world(at));
+      } else if (in_3d) {
         Picked picked;
         pick_under(at, picked);
         select(picked);

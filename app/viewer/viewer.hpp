@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -30,6 +31,8 @@
 #include "session.hpp"
 #include "settings.hpp"
 #include "timeline.hpp"
+#include "quiz_mode.hpp"
+#include "tour_guide.hpp"
 #include "view_3d.hpp"
 
 namespace meshstep::viewer {
@@ -106,6 +109,19 @@ class Viewer {
   int window_height() const { return window_height_; }
   void cycle_color_by(int direction);
   void toggle_layer(scene::Layer layer);
+
+  // A guided tour (tour_guide.hpp), when one plays; null otherwise. Each frame updates it.
+  TourGuide* tour() { return tour_.get(); }
+  void set_tour(std::shared_ptr<TourGuide> tour) { tour_ = std::move(tour); }
+  // The camera fits this world box (a tour stop's) instead of the run's; none: the run's.
+  void fit_box(std::optional<BBox> box);
+  // The quiz (quiz_mode.hpp), while it is on; null otherwise. A click on the canvas answers
+  // its open question instead of selecting.
+  QuizMode* quiz() { return quiz_.get(); }
+  const QuizMode* quiz() const { return quiz_.get(); }
+  // Starts it (false, and `why`, when the run has no such question after the cursor).
+  bool start_quiz(std::optional<teach::QuestionKind> kind, std::string& why);
+  void stop_quiz();
 
   // The 3D view of a terrain's run (view_3d.hpp). Switching it on for a run without heights
   // is refused: false, and the canvas says why (notice()). The orbit changes only where
@@ -273,6 +289,9 @@ class Viewer {
   double notice_seconds_ = 0.0;
   std::string canvas_backend_;  // the GL library of the UI's context, for workers
   char compare_text_[160] = "";  // the "Compare with..." field
+  std::shared_ptr<TourGuide> tour_;
+  std::unique_ptr<QuizMode> quiz_;
+  std::optional<BBox> fit_box_;
   // Last: destroyed first, as it refers to the session and the camera.
   std::unique_ptr<CompareView> compare_;
 };

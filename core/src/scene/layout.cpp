@@ -16,6 +16,13 @@ constexpr double kLegendWidth = 150.0;    // px kept free on the right for the l
 constexpr double kEdge = 12.0;            // px between the legend and the picture's border
 constexpr double kCaptionShrink = 0.6;    // the smallest a long caption is set, of its size
 constexpr double kEstimateSlack = 0.97;   // the width estimate may be a little short
+// The narration is read from the back of a room: larger than the caption. DejaVu Sans's
+// characters average about 0.5 of its size in running English (0.505 on the shipped
+// tours); 0.53 keeps a line inside the picture without measuring glyphs here.
+constexpr double kNarrationFont = 21.0;
+constexpr double kNarrationCharWidth = 0.53;
+constexpr double kNarrationLeading = 1.3;
+constexpr std::size_t kNarrationLines = 4;
 
 // Sizes scaled by k (Scene::text_scale): the words grow, and the room kept for them.
 LegendLayout legend_layout(const Legend& legend, int width, int height, double top, double k) {
@@ -69,12 +76,56 @@ Layout layout(const Scene& scene, int width, int height) {
     out.caption = {{10.0 * k, 0.5 * band + 0.35 * size}, size, false};
     out.margins.top = band + 16.0 * k;
   }
+  if (!scene.narration.empty()) {
+    const double font = kNarrationFont * k, pad = 10.0 * k;
+    const auto columns = static_cast<std::size_t>(std::max(10.0, (width - 2.0 * pad) / (kNarrationCharWidth * font)));
+    out.narration_lines = wrap_words(scene.narration, columns, kNarrationLines);
+    const double line = kNarrationLeading * font;
+    const double band_h = static_cast<double>(out.narration_lines.size()) * line + 2.0 * pad - (line - font);
+    out.narration_band = Rect{0.0, height - band_h, static_cast<double>(width), band_h};
+    for (std::size_t i = 0; i < out.narration_lines.size(); ++i)
+      out.narration_spots.push_back({{pad, height - band_h + pad + 0.8 * font + static_cast<double>(i) * line}, font, false});
+    out.margins.bottom = band_h + 16.0 * k;
+  }
   if (scene.visible.has(Layer::legend) && scene.legend)
     if (width > 3 * kLegendWidth * k) {  // a small picture has no room for a legend
-      out.legend = legend_layout(*scene.legend, width, height, out.caption_band ? band : 0.0, k);
+      // Above the narration's band, when there is one.
+      const int free_height = out.narration_band ? static_cast<int>(out.narration_band->y) : height;
+      out.legend = legend_layout(*scene.legend, width, free_height, out.caption_band ? band : 0.0, k);
       out.margins.right = (kLegendWidth + 8.0) * k;
     }
   return out;
+}
+
+std::vector<std::string> wrap_words(std::string_view text, std::size_t columns, std::size_t max_lines) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::size_t at = 0;
+  bool cut = false;
+  while (at < text.size()) {
+    const std::size_t begin = text.find_first_not_of(" \t\n", at);
+    if (begin == std::string_view::npos) break;
+    const std::size_t end = std::min(text.find_first_of(" \t\n", begin), text.size());
+    const std::string_view word = text.substr(begin, end - begin);
+    at = end;
+    // Columns count characters, not bytes: a UTF-8 continuation byte adds none.
+    const auto chars = [](std::string_view s) {
+      std::size_t n = 0;
+      for (const char c : s) n += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+      return n;
+    };
+    if (!line.empty() && chars(line) + 1 + chars(word) > columns) {
+      if (lines.size() + 1 == max_lines) {
+        cut = true;
+        break;
+      }
+      lines.push_back(std::move(line));
+      line.clear();
+    }
+    line.append(line.empty() ? "" : " ").append(word);
+  }
+  if (!line.empty()) lines.push_back(cut ? line + "..." : line);
+  return lines;
 }
 
 Camera fit_scene(const Scene& scene, int width, int height) {

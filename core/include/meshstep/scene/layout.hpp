@@ -7,6 +7,8 @@
 #pragma once
 
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "meshstep/scene/camera.hpp"
@@ -37,9 +39,17 @@ struct LegendLayout {
 struct Layout {
   std::optional<Rect> caption_band;
   TextSpot caption;
+  // The narration (Scene::narration), wrapped: its band across the bottom, and a spot per line.
+  std::optional<Rect> narration_band;
+  std::vector<std::string> narration_lines;
+  std::vector<TextSpot> narration_spots;
   std::optional<LegendLayout> legend;
   Margins margins;  // what a camera fit should leave free
 };
+
+// `text` broken at blanks into lines of at most `columns` characters (a longer word alone on
+// its line), at most `max_lines` of them, the last ending in "..." when the text goes on.
+std::vector<std::string> wrap_words(std::string_view text, std::size_t columns, std::size_t max_lines);
 
 // The layout of a scene's caption and legend (each only when present and visible) in a
 // picture of width x height.

@@ -162,6 +162,9 @@ struct Scene {
   std::vector<Label> labels;
   std::string caption;        // one line: "refine · step 12 of 340 · ..."
   Rgba caption_color;
+  // A guided tour's caption (teach/tour.hpp): a few sentences on a band across the picture's
+  // bottom, wrapped to its width (layout.hpp), whatever layers are on. Empty: no band.
+  std::string narration;
   std::optional<Legend> legend;
   LayerSet visible = LayerSet::standard();
   // The caption, the legend and the labels drawn this many times their size (the viewer's
