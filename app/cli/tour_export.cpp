@@ -14,7 +14,7 @@
 #include "meshstep/scene/layout.hpp"
 #include "meshstep/teach/tour.hpp"
 #include "moment_scene.hpp"
-#include "painter.hpp"
+#include "render/painter.hpp"
 #include "png_frame_writer.hpp"
 #include "staged_frames.hpp"
 #include "video_pipe.hpp"
@@ -47,7 +47,7 @@ int export_tour(const TourExportArgs& args) {
     total += holds.back();
   }
 
-  Painter painter(args.draw.gl);
+  render::Painter painter(args.draw.gl);
   std::optional<StagedFrames> staged;
   std::optional<PngFrameWriter> frames;
   std::optional<VideoPipe> video;
