@@ -11,6 +11,7 @@
 #include "meshstep/refine/registry.hpp"
 #include "meshstep/refine/run_spec.hpp"
 #include "operation_options.hpp"
+#include "planar_output_options.hpp"
 #include "planar_refine.hpp"
 #include "record_option.hpp"
 #include "refine_surface.hpp"
@@ -19,17 +20,9 @@ namespace meshstep::app {
 namespace {
 
 struct RefineArgs {
-  std::string input;
-  std::string prefix;
   // The refinement's own options (algorithm, bounds, parts), from the registry's records.
   std::unique_ptr<OperationOptions> operation;
-  std::string record;
-  std::string stats;
-  bool no_output = false;
-  std::string max_memory;  // empty: default_memory_budget()
-  bool write_partial = false;
-  bool quiet = false;
-  bool verbose = false;
+  PlanarOutputOptions out;  // INPUT, -o, --record, --stats, ... (shared with `run`)
 };
 
 // A 3D surface goes to longest-edge bisection in 3D; only its own options apply.
@@ -46,38 +39,31 @@ int refine_surface(const RefineArgs& args, const Operation& op) {
     }
   }
   SurfaceRefineArgs surface;
-  surface.input = args.input;
-  surface.output = args.prefix;
+  const PlanarRefineJob job = args.out.read();
+  surface.input = job.input;
+  surface.output = job.prefix;
   surface.operation = op;
   if (op.size && !size_length(op)) {
     print_error("--size: a 3D surface takes a length, not '" + *op.size + "'");
     return kExitUsage;
   }
   surface.max_edge = size_length(op).value_or(0.0);
-  surface.stats = args.stats;
-  surface.no_output = args.no_output;
-  surface.quiet = args.quiet;
-  surface.record = args.record;
+  surface.stats = job.stats;
+  surface.no_output = job.no_output;
+  surface.quiet = job.verbosity == Verbosity::quiet;
+  surface.record = job.record;
   return run_refine_surface(surface);
 }
 
 int run_refine(const RefineArgs& args) {
   const std::optional<Operation> given = args.operation->operation();
   if (!given) return kExitUsage;
-  if (io::is_surface(args.input)) return refine_surface(args, *given);
+  if (io::is_surface(args.out.job.input)) return refine_surface(args, *given);
   if (given->flip_dihedral) {
     print_error("--flip-dihedral flips the edges of a 3D surface (.off, .obj, .ply, .stl), not of a planar mesh");
     return kExitUsage;
   }
-  PlanarRefineJob job;
-  job.input = args.input;
-  job.prefix = args.prefix;
-  job.record = args.record;
-  job.stats = args.stats;
-  job.max_memory = args.max_memory;
-  job.no_output = args.no_output;
-  job.write_partial = args.write_partial;
-  job.verbosity = args.quiet ? Verbosity::quiet : args.verbose ? Verbosity::verbose : Verbosity::normal;
+  PlanarRefineJob job = args.out.read();
   job.operations = {*given};
   return run_planar_refine(job);
 }
@@ -94,34 +80,14 @@ Command add_refine_command(CLI::App& parent) {
       "algorithm's default applies: a minimum angle of 20.7 degrees, an aspect ratio of 2.83\n"
       "for lepp-aspect; lepp-bisection and midpoint-area need --max-area or --size. INPUT may\n"
       "also be a mesh PREFIX (PREFIX.node + PREFIX.ele [+ PREFIX.area]) to refine again.");
-  cmd->add_option("INPUT", args->input, "Input .poly or .node file (Triangle's formats), .geojson or .wkt\n"
+  cmd->add_option("INPUT", args->out.job.input, "Input .poly or .node file (Triangle's formats), .geojson or .wkt\n"
                   "polygons (holes as holes), or a mesh PREFIX\n"
                   "(PREFIX.node + PREFIX.ele, optionally PREFIX.area) to refine again, as Triangle's -r;\n"
                   "or a 3D surface (.off, .obj, .ply, .stl): --algorithm lepp-bisection with --size L\n"
                   "and/or --max-area A, edges and areas in 3D; -o names the output surface file")->required();
 
   args->operation = std::make_unique<OperationOptions>(*cmd, OperationKind::refine);
-  add_record_option(*cmd, args->record);
-  cmd->add_option("-o,--output", args->prefix,
-                  "Output prefix: writes PREFIX.node, PREFIX.ele, PREFIX.poly\n"
-                  "(default: INPUT without extension plus .1, as Triangle does);\n"
-                  "or one file OUT.msh, .vtu, .obj, .off, .ply or .stl in that format (meshstep list)");
-  cmd->add_option("--stats", args->stats,
-                  "Print statistics; 'json': the last line of standard output is one JSON object\n"
-                  "(vertices, triangles, steiner, segment_splits, bad_triangles, bounds_met,\n"
-                  "stopped_by_cap, min_angle, max_angle, ms.read/triangulate/refine/write, ...)")
-      ->check(CLI::IsMember({"json"}));
-  cmd->add_flag("--no-output", args->no_output, "Refine but write no mesh files (for timing)");
-  cmd->add_option("--max-memory", args->max_memory,
-                  "Stop before the run takes more memory than SIZE (8G, 500M, ...; none: no\n"
-                  "budget). Default: a quarter of this machine's memory. A run stopped there\n"
-                  "writes nothing unless --write-partial (exit 1)")
-      ->type_name("SIZE");
-  cmd->add_flag("--write-partial", args->write_partial,
-                "When the memory budget stops the run, write the mesh reached (valid, with\n"
-                "triangles that fail the bounds left in it)");
-  cmd->add_flag("-q,--quiet", args->quiet, "Print nothing but errors (and --stats)");
-  cmd->add_flag("-v,--verbose", args->verbose, "Also print refinement counts, timings and the record summary");
+  add_planar_output_options(*cmd, args->out);
   cmd->footer(
       "Example: meshstep refine assets/examples/plate.poly --algorithm offcenter --min-angle 30 -o plate_q\n"
       "Exit status: 0 done (even if some triangles miss the bounds; see the summary),\n"

@@ -97,6 +97,23 @@ TEST_F(RunRecipeCli, TheStatsAddUpTheSkippedTrianglesOfEveryOperation) {
 }
 
 // `meshstep refine` is a recipe of one operation: the same files, byte for byte, the log too.
+// `run` takes refine's output options, registered once for both (planar_output_options.hpp):
+// --no-output runs the recipe and writes no mesh, with the same statistics.
+TEST_F(RunRecipeCli, TakesRefinesOutputOptions) {
+  const std::string input = write("square.poly", kSquare);
+  const std::string recipe = write("two.recipe", "refine --min-angle 25\nrefine --max-area 0.5 --region 2,2,6,7\n");
+  const CommandResult written = meshstep("run " + recipe + " " + input + " -q --stats json -o " + file("w"));
+  ASSERT_EQ(written.status, 0) << written.err;
+  ASSERT_TRUE(std::filesystem::exists(file("w.node")));
+  const CommandResult none = meshstep("run " + recipe + " " + input + " -q --stats json --no-output -o " + file("n"));
+  ASSERT_EQ(none.status, 0) << none.err;
+  EXPECT_FALSE(std::filesystem::exists(file("n.node")));
+  EXPECT_FALSE(std::filesystem::exists(file("n.ele")));
+  for (const char* key : {"steiner", "triangles", "min_angle"})
+    EXPECT_EQ(testing::json_field(testing::stats_line(none.out), key), testing::json_field(testing::stats_line(written.out), key))
+        << key;
+}
+
 TEST_F(RunRecipeCli, AOneLineRecipeWritesWhatRefineWrites) {
   const std::string input = write("square.poly", kSquare);
   const std::vector<std::string> lines = {
