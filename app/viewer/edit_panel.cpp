@@ -121,8 +121,11 @@ void draw_edit_panel(Viewer& v) {
   ImGui::Checkbox("snap to grid", &st.grid);
   if (st.tool == EditTool::box) draw_region_form(*host, bench);
   ImGui::TextDisabled("drag: move; right click: delete; middle drag: pan");
-  ImGui::Text("%zu vertices, %zu segments, %zu holes, %zu regions", in.points.size(), in.segments.size(),
-              in.holes.size(), in.regions.size());
+  // Counts in words that agree with them ("1 hole"), formatted by ImGui: no allocation.
+  const auto plural = [](std::size_t n) { return n == 1 ? "" : "s"; };
+  ImGui::Text("%zu %s, %zu segment%s, %zu hole%s, %zu region%s", in.points.size(),
+              in.points.size() == 1 ? "vertex" : "vertices", in.segments.size(), plural(in.segments.size()),
+              in.holes.size(), plural(in.holes.size()), in.regions.size(), plural(in.regions.size()));
   // The recipe (issue 27 item 4): each operation switched on or off, moved, removed; the
   // run is made again at once.
   if (bench.recipe().empty()) ImGui::TextUnformatted("recipe: the triangulation alone");
@@ -167,7 +170,7 @@ void draw_edit_panel(Viewer& v) {
   double max_area = region_selected ? in.regions[st.selected->index].max_area : st.region_max_area;
   ImGui::TextUnformatted(region_selected ? "Selected region point:" : "Next region point:");
   bool changed = ImGui::InputDouble("attribute", &attribute, 0.0, 0.0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue);
-  changed |= ImGui::InputDouble("max area (<= 0: none)", &max_area, 0.0, 0.0, "%.6g",
+  changed |= ImGui::InputDouble("max area (0: none)", &max_area, 0.0, 0.0, "%.6g",
                                 ImGuiInputTextFlags_EnterReturnsTrue);
   if (changed) {
     if (region_selected) {
