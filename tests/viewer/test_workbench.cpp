@@ -384,6 +384,11 @@ TEST_P(WorkbenchProgram, TheMouseRefinesABoxWithTheFormsOperation) {
 // In edit mode, with the input drawn over the mesh and a notice beside it, an idle frame
 // still allocates nothing.
 TEST_P(WorkbenchProgram, IdleFramesInEditModeDoNotAllocate) {
+  // Under the sanitizers the count is ImGui's alone (the program's operator new is ASan's),
+  // and this script's viewer died in LeakSanitizer's stop-the-world at exit ("Tracer caught
+  // signal 11") in 3 runs of 3 from this test, never when run by hand: the Release pass
+  // checks the count.
+  if (!MESHSTEP_VIEW_COUNTS_NEW) GTEST_SKIP() << "allocations are counted in the Release build";
   const fs::path frames = dir_ / "frames.txt";
   VIEW_OR_SKIP(r, std::string("new\n") + kRectangleWithHole + "edit region 0.5 0.5 2 0.1\nedit hole 9 9\nframes 24\nquit\n", "",
                "--frame-log " + frames.string());
