@@ -20,7 +20,7 @@
 #include "orbit_options.hpp"
 #include "png_frame_writer.hpp"
 #include "common/scene_source.hpp"
-#include "staged_frames.hpp"
+#include "frame_sink.hpp"
 #include "tour_export.hpp"
 #include "video_pipe.hpp"
 #include "render/painter.hpp"
@@ -91,15 +91,18 @@ std::vector<std::string> existing_frames(const std::string& dir) {
   return frames;
 }
 
+// The video or the frames folder may not replace what the export reads (a log, a tour).
+int refuse_export_overwrites(const ExportArgs& args, const std::string& input) {
+  return refuse_overwrites(FileRoles()
+                               .reads(input)
+                               .writes("--video", args.video, "video")
+                               .writes("--frames", args.frames, "frames folder")
+                               .writes_existing("--frames", args.frames, existing_frames(args.frames), "frames folder"));
+}
+
 // A tour names its own run and its own moments: none of a log's options goes with it.
 int run_tour_export(const ExportArgs& args, const CLI::App& cmd) {
-  if (const int refused = refuse_overwrites(FileRoles()
-                                                .reads(args.tour)
-                                                .writes("--video", args.video, "video")
-                                                .writes("--frames", args.frames, "frames folder")
-                                                .writes_existing("--frames", args.frames, existing_frames(args.frames),
-                                                                 "frames folder")))
-    return refused;
+  if (const int refused = refuse_export_overwrites(args, args.tour)) return refused;
   return with_picture_errors("", [&] {
     if (!args.log.empty()) throw UsageError("--tour names its own run: give no LOG (" + args.log + ") with it");
     for (const char* option : {"--every", "--from", "--to", "--duration", "--spin", "--orbit", "--z-scale"})
@@ -118,13 +121,7 @@ int run_tour_export(const ExportArgs& args, const CLI::App& cmd) {
 
 int run_export(const ExportArgs& args) {
   const Verbosity verbosity = args.quiet ? Verbosity::quiet : Verbosity::normal;
-  if (const int refused = refuse_overwrites(FileRoles()
-                                                .reads(args.log)
-                                                .writes("--video", args.video, "video")
-                                                .writes("--frames", args.frames, "frames folder")
-                                                .writes_existing("--frames", args.frames, existing_frames(args.frames),
-                                                                 "frames folder")))
-    return refused;
+  if (const int refused = refuse_export_overwrites(args, args.log)) return refused;
   return with_picture_errors("", [&] {
     check_args(args);
     const DrawSettings draw = parse_draw_args(args.draw);
@@ -166,17 +163,7 @@ int run_export(const ExportArgs& args) {
         draw.view ? draw.camera(first.bounds) : scene::fit_scene(first, draw.width, draw.height);
 
     render::Painter painter(draw.gl);
-    // Declared before the writer: on an error, the writer's threads stop before the staged
-    // frames are removed. No frame is in the folder until every one is written.
-    std::optional<StagedFrames> staged;
-    std::optional<PngFrameWriter> frames;
-    std::optional<VideoPipe> video;
-    if (!args.frames.empty()) {
-      staged.emplace(args.frames);
-      frames.emplace(staged->staging());
-    } else {
-      video.emplace(args.video, draw.width, draw.height, args.fps);
-    }
+    FrameSink sink(args.frames, args.video, draw.width, draw.height, args.fps);
     ExportProgress progress(verbosity != Verbosity::quiet, moments.size());
     const int samples = draw.samples;
     std::uint64_t last_position = UINT64_MAX;
@@ -188,18 +175,12 @@ int run_export(const ExportArgs& args) {
         painter.paint(i == 0 ? first : scene_at(i), camera, samples, image);
         last_position = moments[i];
       }
-      if (frames) frames->add(i, image);
-      else video->add(image);
+      sink.add(i, image);
       progress.frame(i + 1);
     }
-    if (frames) {
-      frames->finish();
-      staged->commit();
-    } else {
-      video->finish();
-    }
+    sink.finish();
     if (verbosity != Verbosity::quiet) {
-      const std::string where = frames ? args.frames + "/frame_000000.png .. " + PngFrameWriter::frame_name(moments.size() - 1)
+      const std::string where = sink.writes_frames() ? args.frames + "/frame_000000.png .. " + PngFrameWriter::frame_name(moments.size() - 1)
                                        : args.video;
       std::printf("%s: %zu frames of %dx%d (%s) from %s, %llu steps\n", where.c_str(), moments.size(), draw.width,
                   draw.height, painter.description().c_str(), args.log.c_str(),

@@ -16,7 +16,7 @@
 #include "moment_scene.hpp"
 #include "render/painter.hpp"
 #include "png_frame_writer.hpp"
-#include "staged_frames.hpp"
+#include "frame_sink.hpp"
 #include "video_pipe.hpp"
 
 namespace meshstep::app {
@@ -48,15 +48,7 @@ int export_tour(const TourExportArgs& args) {
   }
 
   render::Painter painter(args.draw.gl);
-  std::optional<StagedFrames> staged;
-  std::optional<PngFrameWriter> frames;
-  std::optional<VideoPipe> video;
-  if (!args.frames.empty()) {
-    staged.emplace(args.frames);
-    frames.emplace(staged->staging());
-  } else {
-    video.emplace(args.video, args.draw.width, args.draw.height, args.fps);
-  }
+  FrameSink sink(args.frames, args.video, args.draw.width, args.draw.height, args.fps);
   const BBox whole = run_bounds(log);
   scene::Image image;
   std::size_t index = 0;
@@ -82,18 +74,12 @@ int export_tour(const TourExportArgs& args) {
                                                     scene::layout(picture, args.draw.width, args.draw.height).margins);
     painter.paint(picture, camera, args.draw.samples, image);
     for (std::size_t h = 0; h < holds[i]; ++h, ++index) {
-      if (frames) frames->add(index, image);
-      else video->add(image);
+      sink.add(index, image);
     }
   }
-  if (frames) {
-    frames->finish();
-    staged->commit();
-  } else {
-    video->finish();
-  }
+  sink.finish();
   if (verbosity != Verbosity::quiet) {
-    const std::string where = frames ? args.frames + "/frame_000000.png .. " + PngFrameWriter::frame_name(total - 1) : args.video;
+    const std::string where = sink.writes_frames() ? args.frames + "/frame_000000.png .. " + PngFrameWriter::frame_name(total - 1) : args.video;
     std::printf("%s: %zu frames of %dx%d (%s), %zu stops of the tour %s (its run: %llu steps)\n", where.c_str(), total,
                 args.draw.width, args.draw.height, painter.description().c_str(), tour.stops.size(), args.tour.c_str(),
                 static_cast<unsigned long long>(log.step_count()));
