@@ -29,8 +29,9 @@ bool TourGuide::go(Viewer& viewer, std::size_t i) {
   if (session.playback().playing) session.toggle_play();
   session.seek(positions_[i]);
   // The stop's look, over the tour's, over the defaults: a stop looks the same however the
-  // person came to it.
-  scene::LayerSet layers = scene::LayerSet::all();
+  // person came to it, and as `export --tour` draws it (the standard layers: no Voronoi
+  // diagram unless the tour asks for it).
+  scene::LayerSet layers = scene::LayerSet::standard();
   if (tour_.layers) layers = tour_.layers->apply(layers);
   if (stop.layers) layers = stop.layers->apply(layers);
   for (std::size_t l = 0; l < scene::kLayerCount; ++l) {

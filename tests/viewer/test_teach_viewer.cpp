@@ -232,6 +232,8 @@ TEST_P(ShippedTourInViewer, EveryStopShowsItsCaption) {
                                    ", \"at_stop\": true"))
         << tour_line;
     EXPECT_TRUE(has(tour_line, "\"narration\": " + quoted(tour.stops[k - 1].caption))) << tour_line;
+    // No tour asks for the Voronoi diagram: its stops show what `export --tour` draws.
+    EXPECT_FALSE(has(line_of(state, "layers"), "voronoi")) << line_of(state, "layers");
   }
   EXPECT_GT(fs::file_size(path("last.png")), 10000u);
 }
