@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "common/file_roles.hpp"
 #include "common/run_log.hpp"
 #include "meshstep/delaunay/triangulate.hpp"
 #include "meshstep/error.hpp"
@@ -114,7 +115,13 @@ std::string Workbench::recipe_text() const {
   return text;
 }
 
-void Workbench::save_recipe(const std::string& path) const { io::write_file_atomically(path, recipe_text()); }
+void Workbench::save_recipe(const std::string& path) const {
+  // The input edited is the user's file: a recipe saved over it would lose it.
+  if (const std::optional<std::string> clash =
+          app::FileRoles().reads_pslg(file_).writes("save-recipe", path, "recipe file").clash())
+    throw InputError(path, 0, *clash);
+  io::write_file_atomically(path, recipe_text());
+}
 
 std::string Workbench::title() const { return file_.empty() ? std::string("new input") : file_; }
 

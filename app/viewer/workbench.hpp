@@ -61,7 +61,8 @@ class Workbench {
   void switch_operation(std::size_t i, bool on);
   bool operation_on(std::size_t i) const { return i < enabled_.size() && enabled_[i]; }
   // The recipe file `meshstep run` reads: the operations switched on, one a line, in the
-  // recipe's words (those switched off as comments). Written atomically; throws InputError.
+  // recipe's words (those switched off as comments). Written atomically; throws InputError,
+  // also for a path that is the input's own file.
   void save_recipe(const std::string& path) const;
   std::string recipe_text() const;
 

@@ -125,6 +125,26 @@ TEST(WorkbenchModel, RemeshesWhenStaleKeepsTheLastGoodMeshAndRunsTheRecipe) {
   EXPECT_EQ(bench.mesh_triangles(), good);  // the same input, the same recipe: the same mesh
 }
 
+// A recipe saved over the input being edited would lose the user's file: refused, the file
+// as it was; beside it, written.
+TEST(WorkbenchModel, ARecipeIsNeverSavedOverTheInput) {
+  const fs::path dir = fs::temp_directory_path() / ("workbench_recipe_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  Pslg square;
+  square.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  square.segments = {{0, 1, 0}, {1, 2, 0}, {2, 3, 0}, {3, 0, 0}};
+  Workbench bench(square, {parse_operation("refine --max-area 0.1")}, "");
+  const std::string input = (dir / "square.poly").string();
+  bench.save(input);
+  const std::string saved = read_text(input);
+  EXPECT_THROW(bench.save_recipe(input), InputError);
+  EXPECT_THROW(bench.save_recipe((dir / "." / "square.poly").string()), InputError);  // the same file, spelt otherwise
+  EXPECT_EQ(read_text(input), saved);
+  bench.save_recipe((dir / "square.recipe").string());
+  EXPECT_TRUE(has(read_text((dir / "square.recipe").string()), "refine --max-area 0.1"));
+  fs::remove_all(dir);
+}
+
 TEST(WorkbenchModel, ScriptsCheckTheEditActionsWords) {
   const fs::path file = fs::temp_directory_path() / ("workbench_script_" + std::to_string(::getpid()) + ".txt");
   const auto refusal = [&](const std::string& text) {
