@@ -50,6 +50,21 @@ struct CanvasRequest {
   friend bool operator==(const CanvasRequest&, const CanvasRequest&) = default;
 
   scene::Camera camera() const { return scene::Camera(center, pixels_per_unit, width, height); }
+
+  // The planar picture of the moment `position` with a session's look, through `camera`.
+  static CanvasRequest planar(std::uint64_t position, const scene::SceneOptions& o, const scene::Camera& camera) {
+    CanvasRequest r;
+    r.position = position;
+    r.color_by = o.color_by;
+    r.theme = o.theme;
+    r.layers = o.layers;
+    r.text_scale = o.text_scale;
+    r.center = camera.center();
+    r.pixels_per_unit = camera.pixels_per_unit();
+    r.width = camera.width();
+    r.height = camera.height();
+    return r;
+  }
 };
 
 struct CanvasPicture {

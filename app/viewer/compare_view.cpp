@@ -125,19 +125,9 @@ void CompareView::fit(int pane_w, int pane_h) {
 }
 
 void CompareView::post(Pane& p) {
-  const scene::SceneOptions& o = viewer_.session().options();
-  const scene::Camera& camera = viewer_.camera_;
-  CanvasRequest wanted;
-  wanted.position = p.session->cursor_info().position;
-  wanted.color_by = o.color_by;
-  wanted.theme = o.theme;
-  wanted.layers = o.layers;
-  wanted.text_scale = o.text_scale;
-  wanted.center = camera.center();
-  wanted.pixels_per_unit = camera.pixels_per_unit();
-  wanted.width = camera.width();
-  wanted.height = camera.height();
-  p.worker->request(wanted);
+  // Every canvas with the leader's look, through the one camera they share.
+  p.worker->request(
+      CanvasRequest::planar(p.session->cursor_info().position, viewer_.session().options(), viewer_.camera_));
 }
 
 // A finished picture: its pixels to the canvas's texture, its numbers to the columns; the

@@ -312,17 +312,7 @@ void Viewer::frame(int width, int height, double seconds) {
 }
 
 void Viewer::post_canvas_request() {
-  const scene::SceneOptions& o = session_->options();
-  CanvasRequest wanted;
-  wanted.position = session_->cursor_info().position;
-  wanted.color_by = o.color_by;
-  wanted.theme = o.theme;
-  wanted.layers = o.layers;
-  wanted.text_scale = o.text_scale;
-  wanted.center = camera_.center();
-  wanted.pixels_per_unit = camera_.pixels_per_unit();
-  wanted.width = camera_.width();
-  wanted.height = camera_.height();
+  CanvasRequest wanted = CanvasRequest::planar(session_->cursor_info().position, session_->options(), camera_);
   wanted.in_3d = view3d_.on();
   wanted.orbit = view3d_.orbit();
   worker_->request(wanted);
