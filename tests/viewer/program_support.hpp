@@ -23,7 +23,24 @@ struct Result {
   std::string output;  // standard output and error together
 };
 
+// Under the sanitizers, the programs these tests start are not leak-checked at their exit:
+// LeakSanitizer's stop-the-world crashed there ("Tracer caught signal 11") among Mesa's
+// llvmpipe threads, in 2 runs of 2 of the four-canvas test and 3 of 3 of the workbench's,
+// failing tests whose checks had all passed. Their memory errors are still caught, and the
+// unit and command-line tests keep the leak check. (The test binary's own options are read
+// at its start: this changes only what its children inherit.)
+inline void children_skip_leak_check() {
+  if (MESHSTEP_VIEW_COUNTS_NEW) return;  // not a sanitizer build
+  static const bool done = [] {
+    const char* given = std::getenv("ASAN_OPTIONS");
+    const std::string options = given && *given ? std::string(given) + ":detect_leaks=0" : "detect_leaks=0";
+    return ::setenv("ASAN_OPTIONS", options.c_str(), 1) == 0;
+  }();
+  (void)done;
+}
+
 inline Result run(const std::string& command) {
+  children_skip_leak_check();
   Result r;
   FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
   if (!pipe) return r;
