@@ -213,14 +213,15 @@ TEST_F(RunRecipeCli, ThePseudoCodeFollowsTheOperationAtTheCursor) {
   ASSERT_EQ(spans.size(), 2u);
   ASSERT_LT(spans[0].from_step, spans[0].to_step);
   ASSERT_LT(spans[1].from_step, spans[1].to_step);
-  std::vector<scene::Program> seen;
+  std::vector<std::string> seen;  // each phase's program, by its title
   for (const replay::PhaseSpan& p : log.phases()) {
     if (p.phase != replay::Phase::refine && p.phase != replay::Phase::improve) continue;
     if (p.end == p.begin + 2) continue;  // an empty phase: its begin and end alone
-    seen.push_back(scene::pseudocode_at(log, p.begin + 2).program);
+    seen.push_back(scene::pseudocode_at(log, p.begin + 2).code->title);
   }
-  const std::vector<scene::Program> expected = {scene::Program::lepp_centroid, scene::Program::offcenter,
-                                                scene::Program::vertex_removal};
+  const std::vector<std::string> expected = {scene::pseudocode(Selection::lepp_centroid).title,
+                                             scene::pseudocode(Selection::offcenter).title,
+                                             scene::pseudocode(scene::Program::vertex_removal).title};
   EXPECT_EQ(seen, expected);
 }
 

@@ -3,12 +3,14 @@
 // recorded terrain run, for both terrain algorithms.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <optional>
 #include <set>
 #include <string>
 
 #include "golden_runs.hpp"
 #include "meshstep/replay/replay.hpp"
+#include "meshstep/refine/registry.hpp"
 #include "meshstep/scene/pseudocode.hpp"
 
 namespace meshstep::scene {
@@ -30,6 +32,17 @@ constexpr const char* kCombined = "--algorithm combined";
 constexpr const char* kImprove = "--algorithm improve --min-angle 30 --max-area 1";  // removes a vertex on lesson.poly
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// The text of the program `at` names, with that insertion.
+const PseudoCode& program_text(const CodeAt& at, Insertion insertion) {
+  return at.program == Program::delaunay_refinement ? pseudocode(at.selection, insertion)
+                                                    : pseudocode(at.program, insertion);
+}
+
+// Whether the panel shows the Delaunay refinement program of `selection`.
+bool runs(const CodeAt& at, Selection selection) {
+  return at.program == Program::delaunay_refinement && at.selection == selection;
+}
 
 // The highlighted text (all its lines), or "" when nothing is highlighted.
 std::string highlighted(const CodeAt& at) {
@@ -121,14 +134,15 @@ TEST(PseudoCode, EveryProgramHasATitleAReferenceAndASlideOfCode) {
   EXPECT_TRUE(contains(pseudocode(Program::bowyer_watson).title, "Bowyer 1981"));
   EXPECT_TRUE(contains(pseudocode(Program::bowyer_watson).title, "Watson 1981"));
   EXPECT_TRUE(contains(pseudocode(Program::segment_recovery).title, "Sloan 1993"));
-  EXPECT_TRUE(contains(pseudocode(Program::circumcenter).title, "Ruppert 1995"));
-  EXPECT_TRUE(contains(pseudocode(Program::circumcenter).title, "Chew"));
-  EXPECT_TRUE(contains(pseudocode(Program::circumcenter).reference, "Shewchuk"));
-  EXPECT_TRUE(contains(pseudocode(Program::offcenter).title, "Üngör"));
-  EXPECT_TRUE(contains(pseudocode(Program::offcenter).reference, "Off-centers"));
-  for (const Program p : {Program::lepp_midpoint, Program::lepp_centroid, Program::lepp_bisection})
-    EXPECT_TRUE(contains(pseudocode(p).title, "Rivara")) << pseudocode(p).title;
-  EXPECT_TRUE(contains(pseudocode(Program::lepp_midpoint).reference, "Hitschfeld"));
+  EXPECT_TRUE(contains(pseudocode(Selection::circumcenter).title, "Ruppert 1995"));
+  EXPECT_TRUE(contains(pseudocode(Selection::circumcenter).title, "Chew"));
+  EXPECT_TRUE(contains(pseudocode(Selection::circumcenter).reference, "Shewchuk"));
+  EXPECT_TRUE(contains(pseudocode(Selection::offcenter).title, "Üngör"));
+  EXPECT_TRUE(contains(pseudocode(Selection::offcenter).reference, "Off-centers"));
+  for (const PseudoCode* code : {&pseudocode(Selection::lepp_midpoint), &pseudocode(Selection::lepp_centroid),
+                                 &pseudocode(Program::lepp_bisection)})
+    EXPECT_TRUE(contains(code->title, "Rivara")) << code->title;
+  EXPECT_TRUE(contains(pseudocode(Selection::lepp_midpoint).reference, "Hitschfeld"));
   EXPECT_TRUE(contains(pseudocode(Program::lepp_bisection).reference, "New longest-edge algorithms"));
   EXPECT_TRUE(contains(pseudocode(Program::vertex_removal).title, "Coll"));
   EXPECT_TRUE(contains(pseudocode(Program::lepp_surface).title, "Coll, Guerrieri, Rivara, Sellarès 2008"));
@@ -136,8 +150,40 @@ TEST(PseudoCode, EveryProgramHasATitleAReferenceAndASlideOfCode) {
   EXPECT_TRUE(contains(pseudocode(Program::greedy_terrain).title, "Garland, Heckbert 1995"));
   EXPECT_TRUE(contains(pseudocode(Program::greedy_terrain).reference, "terrains and height fields"));
   // A refinement program says how its points go in; the others have one text.
-  EXPECT_NE(&pseudocode(Program::offcenter, Insertion::flips), &pseudocode(Program::offcenter, Insertion::cavity));
+  EXPECT_NE(&pseudocode(Selection::offcenter, Insertion::flips), &pseudocode(Selection::offcenter, Insertion::cavity));
   EXPECT_EQ(&pseudocode(Program::lawson, Insertion::flips), &pseudocode(Program::lawson, Insertion::cavity));
+}
+
+// A selection's program is written by its registry record: its title, its papers and the
+// lines that choose the point, inside Ruppert's loop or Rivara's Lepp loop as the record
+// says. Nothing else names a selection's program.
+TEST(PseudoCode, EverySelectionsProgramIsItsRegistryRecords) {
+  for (const SelectionInfo& s : selections()) {
+    SCOPED_TRACE(s.name);
+    ASSERT_FALSE(s.program.choose_point.empty());
+    for (const Insertion insertion : {Insertion::flips, Insertion::cavity}) {
+      const PseudoCode& code = pseudocode(s.selection, insertion);
+      EXPECT_EQ(code.title, s.program.title);
+      EXPECT_EQ(code.reference, s.program.reference);
+      const auto first = std::find(code.lines.begin(), code.lines.end(), std::string(s.program.choose_point[0]));
+      ASSERT_NE(first, code.lines.end());
+      for (std::size_t k = 1; k < s.program.choose_point.size(); ++k)
+        EXPECT_EQ(*(first + static_cast<std::ptrdiff_t>(k)), s.program.choose_point[k]);
+      // Rivara's loop walks the Lepp before the point is chosen; Ruppert's does not.
+      const bool walks_lepp = std::any_of(code.lines.begin(), first,
+                                          [](const std::string& line) { return contains(line, "follow Lepp(t)"); });
+      EXPECT_EQ(walks_lepp, s.program.lepp);
+    }
+    EXPECT_NE(&pseudocode(s.selection, Insertion::flips), &pseudocode(s.selection, Insertion::cavity));
+  }
+}
+
+// The log's dumps name a chosen point's selection as its record does (and as the log's
+// header and the command line spell it).
+TEST(PseudoCode, TheLogNamesASelectionByItsRecord) {
+  for (const SelectionInfo& s : selections())
+    EXPECT_EQ(replay::code_name(EventType::point_selected, static_cast<std::uint8_t>(s.selection)), s.name);
+  EXPECT_EQ(replay::code_name(EventType::point_selected, 15), "15");  // no selection has that code
 }
 
 // Walks every event of a run: every event but a phase's end highlights a line within its
@@ -160,8 +206,7 @@ void expect_every_event_mapped(const char* args) {
     ASSERT_TRUE(at.code);
     const Event ev = log->event(e);
     seen.insert(ev.type);
-    EXPECT_TRUE(at.code == &pseudocode(at.program, Insertion::flips) ||
-                at.code == &pseudocode(at.program, Insertion::cavity));
+    EXPECT_TRUE(at.code == &program_text(at, Insertion::flips) || at.code == &program_text(at, Insertion::cavity));
     if (ev.type == EventType::phase_end) {
       EXPECT_EQ(at.line, -1) << "event " << e;
       continue;
@@ -263,7 +308,7 @@ TEST(PseudoCode, OffcenterRefinementLines) {
   const std::uint64_t test = find_event(*log, in_refine(EventType::criterion_test));
   ASSERT_LT(test, log->event_count());
   CodeAt at = pseudocode_at(*log, test + 1);
-  EXPECT_EQ(at.program, Program::offcenter);
+  EXPECT_TRUE(runs(at, Selection::offcenter));
   EXPECT_TRUE(contains(at.code->title, "Off-center"));
   EXPECT_TRUE(contains(highlighted(at), "while a bad triangle t")) << highlighted(at);
   // The step's beginning highlights the same decision.
@@ -273,7 +318,7 @@ TEST(PseudoCode, OffcenterRefinementLines) {
   const std::uint64_t selected = find_event(*log, in_refine(EventType::point_selected));
   ASSERT_LT(selected, log->event_count());
   at = pseudocode_at(*log, selected + 1);
-  EXPECT_EQ(at.program, Program::offcenter);
+  EXPECT_TRUE(runs(at, Selection::offcenter));
   EXPECT_TRUE(contains(at.code->lines[static_cast<std::size_t>(at.line)], "off-center")) << highlighted(at);
   EXPECT_EQ(at.lines, 3);  // with the circumcenter's alternative
 
@@ -289,7 +334,7 @@ TEST(PseudoCode, OffcenterRefinementLines) {
   const std::uint64_t flip = find_event(*log, in_refine(EventType::flip));
   ASSERT_LT(flip, log->event_count());
   at = pseudocode_at(*log, flip + 1);
-  EXPECT_EQ(at.program, Program::offcenter);
+  EXPECT_TRUE(runs(at, Selection::offcenter));
   EXPECT_TRUE(contains(highlighted(at), "in-circle")) << highlighted(at);
 
   // Encroachment: by a vertex (Ruppert's first loop), or by the selected point (split instead).
@@ -319,7 +364,7 @@ TEST(PseudoCode, OffcenterRefinementLines) {
   // The refinement phase's beginning: the first line; its end: none.
   const std::uint64_t begin = find_event(*log, in_refine(EventType::phase_begin));
   at = pseudocode_at(*log, begin + 1);
-  EXPECT_EQ(at.program, Program::offcenter);
+  EXPECT_TRUE(runs(at, Selection::offcenter));
   EXPECT_EQ(at.line, 0);
   EXPECT_TRUE(contains(highlighted(at), "constrained Delaunay triangulation"));
   const std::uint64_t end = find_event(*log, in_refine(EventType::phase_end));
@@ -329,16 +374,16 @@ TEST(PseudoCode, OffcenterRefinementLines) {
 TEST(PseudoCode, TheParametersChooseTheRefinementProgram) {
   struct Case {
     const char* args;
-    Program program;
+    Selection program;      // whose Delaunay refinement program
     const char* selection;  // in the highlighted selection line
   };
-  for (const Case& c : {Case{kCircumcenter, Program::circumcenter, "circumcenter of t"},
-                        Case{"--algorithm circumcenter --select offcenter --min-angle 30", Program::offcenter,
+  for (const Case& c : {Case{kCircumcenter, Selection::circumcenter, "circumcenter of t"},
+                        Case{"--algorithm circumcenter --select offcenter --min-angle 30", Selection::offcenter,
                              "off-center of t"},
-                        Case{kLeppMidpoint, Program::lepp_midpoint, "midpoint of e"},
-                        Case{kLeppCentroid, Program::lepp_centroid, "centroid of the two terminal triangles"},
-                        Case{kCombined, Program::lepp_centroid, "centroid of the two terminal triangles"},
-                        Case{kMidpointArea, Program::longest_edge_midpoint, "midpoint of t's longest edge"}}) {
+                        Case{kLeppMidpoint, Selection::lepp_midpoint, "midpoint of e"},
+                        Case{kLeppCentroid, Selection::lepp_centroid, "centroid of the two terminal triangles"},
+                        Case{kCombined, Selection::lepp_centroid, "centroid of the two terminal triangles"},
+                        Case{kMidpointArea, Selection::longest_edge_midpoint, "midpoint of t's longest edge"}}) {
     SCOPED_TRACE(c.args);
     const replay::LogReader* log = golden::lesson_run(c.args);
     ASSERT_TRUE(log);
@@ -346,7 +391,7 @@ TEST(PseudoCode, TheParametersChooseTheRefinementProgram) {
         find_event(*log, [](std::uint64_t, const Event& ev) { return ev.type == EventType::point_selected; });
     ASSERT_LT(selected, log->event_count());
     const CodeAt at = pseudocode_at(*log, selected + 1);
-    EXPECT_EQ(at.program, c.program);
+    EXPECT_TRUE(runs(at, c.program));
     EXPECT_EQ(at.code, &pseudocode(c.program, Insertion::flips));
     EXPECT_TRUE(contains(highlighted(at), c.selection)) << highlighted(at);
   }
@@ -372,8 +417,8 @@ TEST(PseudoCode, CavityRunsShowBowyerWatson) {
   const std::uint64_t refine = cavity_in(Phase::refine);
   ASSERT_LT(refine, log->event_count());
   at = pseudocode_at(*log, refine + 1);
-  EXPECT_EQ(at.program, Program::offcenter);
-  EXPECT_EQ(at.code, &pseudocode(Program::offcenter, Insertion::cavity));
+  EXPECT_TRUE(runs(at, Selection::offcenter));
+  EXPECT_EQ(at.code, &pseudocode(Selection::offcenter, Insertion::cavity));
   EXPECT_TRUE(contains(highlighted(at), "circumcircle contains c")) << highlighted(at);
   // The flips after a segment split.
   const std::uint64_t flip = find_event(*log, [&](std::uint64_t e, const Event& ev) {
@@ -392,7 +437,7 @@ TEST(PseudoCode, LeppDelaunayFollowsThePathAndComesBackToItsTriangle) {
       find_event(*log, [](std::uint64_t, const Event& ev) { return ev.type == EventType::lepp_path; });
   ASSERT_LT(lepp, log->event_count());
   CodeAt at = pseudocode_at(*log, lepp + 1);
-  EXPECT_EQ(at.program, Program::lepp_midpoint);
+  EXPECT_TRUE(runs(at, Selection::lepp_midpoint));
   EXPECT_TRUE(contains(highlighted(at), "follow Lepp(t)")) << highlighted(at);
   EXPECT_TRUE(contains(highlighted(at), "terminal edge")) << highlighted(at);
 
@@ -454,7 +499,7 @@ TEST(PseudoCode, FreeVerticesDeletedNearASplitShowTheirLine) {
   });
   ASSERT_LT(removal, log->event_count()) << "the run deletes no vertex near a split any more: pick another";
   const CodeAt at = pseudocode_at(*log, removal + 1);
-  EXPECT_EQ(at.program, Program::circumcenter);
+  EXPECT_TRUE(runs(at, Selection::circumcenter));
   EXPECT_TRUE(contains(highlighted(at), "deleting free vertices in its circle")) << highlighted(at);
 }
 
@@ -479,7 +524,7 @@ TEST(PseudoCode, ImprovementShowsVertexRemoval) {
   // Before the improvement phase: the refinement's own program.
   const std::uint64_t selected =
       find_event(*log, [](std::uint64_t, const Event& ev) { return ev.type == EventType::point_selected; });
-  EXPECT_EQ(pseudocode_at(*log, selected + 1).program, Program::circumcenter);
+  EXPECT_TRUE(runs(pseudocode_at(*log, selected + 1), Selection::circumcenter));
 }
 
 // --- Terrains ---------------------------------------------------------------------------

@@ -55,17 +55,78 @@ constexpr std::array kAlgorithms = {
 // than the bound (circumcenters, off-centers, Lepp centroids); the circle for midpoints,
 // which sit where the lens lets them crowd a segment (Lepp midpoints at 25 degrees on
 // p2t_debug2.poly went past 3M Steiner points with the lens, 540k with the circle).
+// The selections' pseudo-code: the lines that choose the point, and the program's title
+// and papers (the loop round them is scene/pseudocode.cpp's).
+constexpr std::string_view kRuppertReferences =
+    "J. Ruppert, \"A Delaunay refinement algorithm for quality 2-dimensional mesh generation\", "
+    "J. Algorithms 18(3), 1995; L. P. Chew, Cornell TR 89-983, 1989, and SoCG 1993; concentric shells: "
+    "J. R. Shewchuk, CGTA 22, 2002";
+constexpr std::string_view kLeppDelaunayReferences =
+    "M.-C. Rivara, \"New longest-edge algorithms for the refinement and/or improvement of "
+    "unstructured triangulations\", IJNME 40, 1997; M.-C. Rivara, N. Hitschfeld, B. Simpson, "
+    "\"Terminal-edge Delaunay (small-angle based) algorithm for the quality triangulation "
+    "problem\", Computer-Aided Design 33, 2001";
+
+constexpr std::array<std::string_view, 1> kChooseCircumcenter = {"    c ← circumcenter of t"};
+constexpr std::array<std::string_view, 3> kChooseOffcenter = {
+    "    c ← off-center of t: on the bisector of t's shortest edge pq,",
+    "        the apex of the isosceles triangle on pq with the bound's angle",
+    "    if t's circumcenter is nearer to pq: c ← the circumcenter"};
+constexpr std::array<std::string_view, 1> kChooseTerminalMidpoint = {"        p ← midpoint of e"};
+constexpr std::array<std::string_view, 1> kChooseTerminalCentroid = {
+    "        p ← centroid of the two terminal triangles (a segment: e's midpoint)"};
+constexpr std::array<std::string_view, 1> kChooseLongestMidpoint = {"    c ← midpoint of t's longest edge"};
+
 constexpr std::array kSelections = {
-    SelectionInfo{"circumcenter", "the bad triangle's circumcenter", Selection::circumcenter, Encroachment::lens,
-                  "circumcenter"},
-    SelectionInfo{"offcenter", "the off-center of the bad triangle's shortest edge (Ungor), or its circumcenter if nearer",
-                  Selection::offcenter, Encroachment::lens, "off-center"},
-    SelectionInfo{"lepp-midpoint", "the midpoint of the terminal edge of the bad triangle's longest-edge propagation path",
-                  Selection::lepp_midpoint, Encroachment::circle, "terminal-edge midpoint"},
-    SelectionInfo{"lepp-centroid", "the centroid of the terminal triangles of that path (on the boundary: the edge's midpoint)",
-                  Selection::lepp_centroid, Encroachment::lens, "terminal-triangles centroid", "terminal-edge midpoint"},
-    SelectionInfo{"longest-edge-midpoint", "the midpoint of the bad triangle's longest edge",
-                  Selection::longest_edge_midpoint, Encroachment::circle, "longest-edge midpoint"},
+    SelectionInfo{.name = "circumcenter",
+                  .description = "the bad triangle's circumcenter",
+                  .selection = Selection::circumcenter,
+                  .encroachment = Encroachment::lens,
+                  .point_name = "circumcenter",
+                  .program = {.title = "Delaunay refinement with circumcenters (Ruppert 1995, Chew 1989/1993)",
+                              .reference = kRuppertReferences,
+                              .choose_point = kChooseCircumcenter}},
+    SelectionInfo{.name = "offcenter",
+                  .description = "the off-center of the bad triangle's shortest edge (Ungor), or its circumcenter if nearer",
+                  .selection = Selection::offcenter,
+                  .encroachment = Encroachment::lens,
+                  .point_name = "off-center",
+                  .program = {.title = "Off-center refinement (Üngör 2004/2009)",
+                              .reference = "A. Üngör, \"Off-centers: a new type of Steiner points for computing "
+                                           "size-optimal quality-guaranteed Delaunay triangulations\", LATIN 2004; "
+                                           "CGTA 42(2), 2009",
+                              .choose_point = kChooseOffcenter}},
+    SelectionInfo{.name = "lepp-midpoint",
+                  .description = "the midpoint of the terminal edge of the bad triangle's longest-edge propagation path",
+                  .selection = Selection::lepp_midpoint,
+                  .encroachment = Encroachment::circle,
+                  .point_name = "terminal-edge midpoint",
+                  .program = {.title = "Lepp-Delaunay, terminal-edge midpoint (Rivara 1997/2001)",
+                              .reference = kLeppDelaunayReferences,
+                              .lepp = true,
+                              .choose_point = kChooseTerminalMidpoint}},
+    SelectionInfo{.name = "lepp-centroid",
+                  .description = "the centroid of the terminal triangles of that path (on the boundary: the edge's midpoint)",
+                  .selection = Selection::lepp_centroid,
+                  .encroachment = Encroachment::lens,
+                  .point_name = "terminal-triangles centroid",
+                  .boundary_point_name = "terminal-edge midpoint",
+                  .program = {.title = "Lepp-Delaunay, terminal-triangles centroid (Rivara 2010/2020)",
+                              .reference = "M.-C. Rivara, C. Calderon, \"Lepp terminal centroid method for quality "
+                                           "triangulation\", Computer-Aided Design 42(1), 2010; M.-C. Rivara, "
+                                           "P. Rodriguez-Moreno, \"Terminal triangles centroid algorithms for quality "
+                                           "Delaunay triangulation\", CAD 125, 2020",
+                              .lepp = true,
+                              .choose_point = kChooseTerminalCentroid}},
+    SelectionInfo{.name = "longest-edge-midpoint",
+                  .description = "the midpoint of the bad triangle's longest edge",
+                  .selection = Selection::longest_edge_midpoint,
+                  .encroachment = Encroachment::circle,
+                  .point_name = "longest-edge midpoint",
+                  .program = {.title = "Delaunay refinement with longest-edge midpoints",
+                              .reference = "Ruppert's loop (J. Ruppert, J. Algorithms 18(3), 1995) inserting the "
+                                           "midpoint of the bad triangle's longest edge: for area and size bounds",
+                              .choose_point = kChooseLongestMidpoint}},
 };
 
 constexpr std::array<std::string_view, 3> kInsertionWords = {"flip", "cavity", "bisection"};

@@ -3,6 +3,8 @@
 
 #include <stdexcept>
 
+#include "meshstep/refine/registry.hpp"
+
 namespace meshstep::replay {
 namespace {
 
@@ -16,10 +18,6 @@ constexpr const char* kFlipNames[] = {"delaunay", "segment_recovery", "vertex_re
 constexpr const char* kRemoveNames[] = {"ghost", "hole", "outside"};
 constexpr const char* kCriterionNames[] = {"min_angle", "max_angle", "max_aspect", "max_area", "local_max_area", "size",
                                            "vertical_error"};
-// meshstep::Selection's, in its order (refine.hpp; the replay library does not see it, and
-// LogNames.SelectionCodesAreNamedInOrder holds the two together).
-constexpr const char* kSelectionNames[] = {"circumcenter", "offcenter", "lepp_midpoint", "lepp_centroid",
-                                           "longest_edge_midpoint"};
 constexpr const char* kSampleChoiceNames[] = {"worst_sample", "terminal_worst", "terminal_point", "own_worst"};
 
 static_assert(std::size(kStepNames) == static_cast<std::size_t>(StepKind::count_));
@@ -29,6 +27,14 @@ static_assert(std::size(kSplitNames) == static_cast<std::size_t>(SplitReason::co
 static_assert(std::size(kFlipNames) == static_cast<std::size_t>(FlipReason::count_));
 static_assert(std::size(kRemoveNames) == static_cast<std::size_t>(RemoveReason::count_));
 static_assert(std::size(kCriterionNames) == static_cast<std::size_t>(Criterion::count_));
+
+// A selection is named as its registry record names it (and as the log's header and the
+// command line spell it): a new selection needs no name here.
+std::string selection_name(std::uint8_t code) {
+  for (const SelectionInfo& s : selections())
+    if (static_cast<std::uint8_t>(s.selection) == code) return std::string(s.name);
+  return std::to_string(code);
+}
 
 template <std::size_t N>
 std::string pick(const char* const (&names)[N], std::uint8_t code) {
@@ -71,7 +77,7 @@ std::string code_name(EventType type, std::uint8_t code) {
     }
     case EventType::point_selected:
       if (code >= kFirstSampleChoice) return pick(kSampleChoiceNames, static_cast<std::uint8_t>(code - kFirstSampleChoice));
-      return pick(kSelectionNames, code);
+      return selection_name(code);
     default: return std::to_string(code);
   }
 }

@@ -5,7 +5,10 @@
 #include <cstddef>
 #include <initializer_list>
 #include <optional>
+#include <span>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 #include "meshstep/refine/registry.hpp"
 #include "meshstep/replay/operations.hpp"
@@ -82,6 +85,12 @@ class Builder {
     entry_.spans[static_cast<std::size_t>(at)] = {static_cast<int>(entry_.code.lines.size()),
                                                   static_cast<int>(lines.size())};
     return add(lines);
+  }
+  Builder& add(At at, std::span<const std::string_view> lines) {
+    entry_.spans[static_cast<std::size_t>(at)] = {static_cast<int>(entry_.code.lines.size()),
+                                                  static_cast<int>(lines.size())};
+    for (const std::string_view l : lines) entry_.code.lines.emplace_back(l);
+    return *this;
   }
   // One more role for the last line added.
   Builder& also(At at) {
@@ -190,47 +199,6 @@ void refinement_tail(Builder& b, Insertion insertion, bool lepp) {
 }
 
 constexpr const char* kBadLoop = "while a bad triangle t remains (a bound fails; shortest edge first):";
-constexpr const char* kRuppertRefs =
-    "J. Ruppert, \"A Delaunay refinement algorithm for quality 2-dimensional mesh generation\", "
-    "J. Algorithms 18(3), 1995; L. P. Chew, Cornell TR 89-983, 1989, and SoCG 1993; concentric shells: "
-    "J. R. Shewchuk, CGTA 22, 2002";
-
-Entry circumcenter(Insertion insertion) {
-  Builder b("Delaunay refinement with circumcenters (Ruppert 1995, Chew 1989/1993)", kRuppertRefs);
-  refinement_head(b);
-  b.add(At::bad, {kBadLoop}).add(At::select, {"    c ← circumcenter of t"});
-  refinement_tail(b, insertion, false);
-  return b.take();
-}
-
-Entry offcenter(Insertion insertion) {
-  Builder b("Off-center refinement (Üngör 2004/2009)",
-            "A. Üngör, \"Off-centers: a new type of Steiner points for computing size-optimal "
-            "quality-guaranteed Delaunay triangulations\", LATIN 2004; CGTA 42(2), 2009");
-  refinement_head(b);
-  b.add(At::bad, {kBadLoop})
-      .add(At::select, {"    c ← off-center of t: on the bisector of t's shortest edge pq,",
-                        "        the apex of the isosceles triangle on pq with the bound's angle",
-                        "    if t's circumcenter is nearer to pq: c ← the circumcenter"});
-  refinement_tail(b, insertion, false);
-  return b.take();
-}
-
-Entry longest_edge_midpoint(Insertion insertion) {
-  Builder b("Delaunay refinement with longest-edge midpoints",
-            "Ruppert's loop (J. Ruppert, J. Algorithms 18(3), 1995) inserting the midpoint of the bad "
-            "triangle's longest edge: for area and size bounds");
-  refinement_head(b);
-  b.add(At::bad, {kBadLoop}).add(At::select, {"    c ← midpoint of t's longest edge"});
-  refinement_tail(b, insertion, false);
-  return b.take();
-}
-
-constexpr const char* kLeppDelaunayRefs =
-    "M.-C. Rivara, \"New longest-edge algorithms for the refinement and/or improvement of "
-    "unstructured triangulations\", IJNME 40, 1997; M.-C. Rivara, N. Hitschfeld, B. Simpson, "
-    "\"Terminal-edge Delaunay (small-angle based) algorithm for the quality triangulation "
-    "problem\", Computer-Aided Design 33, 2001";
 
 void lepp_head(Builder& b, const char* loop, const char* stop) {
   b.add(At::bad, {loop})
@@ -238,20 +206,17 @@ void lepp_head(Builder& b, const char* loop, const char* stop) {
       .add(At::lepp, {"        follow Lepp(t): step across longest edges while they grow,", stop});
 }
 
-Entry lepp_delaunay(bool centroid, Insertion insertion) {
-  Builder b(centroid ? "Lepp-Delaunay, terminal-triangles centroid (Rivara 2010/2020)"
-                     : "Lepp-Delaunay, terminal-edge midpoint (Rivara 1997/2001)",
-            centroid ? "M.-C. Rivara, C. Calderon, \"Lepp terminal centroid method for quality triangulation\", "
-                       "Computer-Aided Design 42(1), 2010; M.-C. Rivara, P. Rodriguez-Moreno, \"Terminal "
-                       "triangles centroid algorithms for quality Delaunay triangulation\", CAD 125, 2020"
-                     : kLeppDelaunayRefs);
+// A point selection's program: its record gives the title, the papers and the lines that
+// choose the point; the loop round them is Ruppert's, or Rivara's Lepp loop.
+Entry delaunay_refinement(const SelectionProgram& program, Insertion insertion) {
+  Builder b(std::string(program.title), std::string(program.reference));
   refinement_head(b);
-  lepp_head(b, kBadLoop, "            to the terminal edge e (longest of both its triangles, or a segment)");
-  if (centroid)
-    b.add(At::select, {"        p ← centroid of the two terminal triangles (a segment: e's midpoint)"});
+  if (program.lepp)
+    lepp_head(b, kBadLoop, "            to the terminal edge e (longest of both its triangles, or a segment)");
   else
-    b.add(At::select, {"        p ← midpoint of e"});
-  refinement_tail(b, insertion, true);
+    b.add(At::bad, {kBadLoop});
+  b.add(At::select, program.choose_point);
+  refinement_tail(b, insertion, program.lepp);
   return b.take();
 }
 
@@ -336,23 +301,15 @@ Entry greedy_terrain() {
 
 constexpr std::size_t kProgramCount = static_cast<std::size_t>(Program::count_);
 
-// Every text, built once: [program][insertion].
+// Every text of a fixed program, built once: [program][insertion] (delaunay_refinement's
+// slot is unused: those come from the selections' records, below).
 const std::array<std::array<Entry, 2>, kProgramCount>& entries() {
   static const std::array<std::array<Entry, 2>, kProgramCount> table = [] {
     std::array<std::array<Entry, 2>, kProgramCount> t;
-    const auto both = [&](Program p, Entry flips, Entry cavity) {
-      t[static_cast<std::size_t>(p)] = {std::move(flips), std::move(cavity)};
-    };
-    const auto one = [&](Program p, const Entry& e) { both(p, e, e); };
+    const auto one = [&](Program p, const Entry& e) { t[static_cast<std::size_t>(p)] = {e, e}; };
     one(Program::lawson, lawson());
     one(Program::bowyer_watson, bowyer_watson());
     one(Program::segment_recovery, segment_recovery());
-    both(Program::circumcenter, circumcenter(Insertion::flips), circumcenter(Insertion::cavity));
-    both(Program::offcenter, offcenter(Insertion::flips), offcenter(Insertion::cavity));
-    both(Program::longest_edge_midpoint, longest_edge_midpoint(Insertion::flips),
-         longest_edge_midpoint(Insertion::cavity));
-    both(Program::lepp_midpoint, lepp_delaunay(false, Insertion::flips), lepp_delaunay(false, Insertion::cavity));
-    both(Program::lepp_centroid, lepp_delaunay(true, Insertion::flips), lepp_delaunay(true, Insertion::cavity));
     one(Program::lepp_bisection, lepp_bisection());
     one(Program::vertex_removal, vertex_removal());
     one(Program::lepp_surface, lepp_surface());
@@ -362,20 +319,29 @@ const std::array<std::array<Entry, 2>, kProgramCount>& entries() {
   return table;
 }
 
-bool has_variants(Program p) {
-  switch (p) {
-    case Program::circumcenter:
-    case Program::offcenter:
-    case Program::longest_edge_midpoint:
-    case Program::lepp_midpoint:
-    case Program::lepp_centroid: return true;
-    default: return false;
-  }
+// Every selection's Delaunay refinement program, built once from its record, in the
+// registry's order: [selection][insertion].
+const std::vector<std::array<Entry, 2>>& refinement_entries() {
+  static const std::vector<std::array<Entry, 2>> table = [] {
+    std::vector<std::array<Entry, 2>> t;
+    for (const SelectionInfo& s : selections())
+      t.push_back({delaunay_refinement(s.program, Insertion::flips), delaunay_refinement(s.program, Insertion::cavity)});
+    return t;
+  }();
+  return table;
 }
 
-const Entry& entry(Program p, Insertion insertion) {
-  const std::size_t variant = has_variants(p) && insertion == Insertion::cavity ? 1 : 0;
-  return entries()[static_cast<std::size_t>(p)][variant];
+const Entry& entry(Selection selection, Insertion insertion) {
+  const std::span<const SelectionInfo> all = selections();
+  std::size_t i = 0;
+  while (i < all.size() && all[i].selection != selection) ++i;
+  if (i == all.size()) i = 0;  // a selection without a record: the first (registry.cpp holds them together)
+  return refinement_entries()[i][insertion == Insertion::cavity ? 1 : 0];
+}
+
+const Entry& entry(Program p, Selection selection, Insertion insertion) {
+  if (p == Program::delaunay_refinement) return entry(selection, insertion);
+  return entries()[static_cast<std::size_t>(p)][0];
 }
 
 // --- Which program ----------------------------------------------------------------------------
@@ -392,22 +358,22 @@ Insertion refinement_insertion(const replay::LogReader& log) {
 // --select's), the bisection insertion first; by the algorithm's registered selection when
 // the header does not say.
 // In a recipe's log, by the operation that recorded the phase.
-Program refinement_program(const replay::LogReader& log, const replay::PhaseSpan* span) {
+struct Choice {
+  Program program;
+  Insertion insertion;
+  Selection selection = Selection::circumcenter;
+};
+
+Choice refinement_choice(const replay::LogReader& log, const replay::PhaseSpan* span) {
   const Operation* op = span ? replay::operation_of(log, *span) : nullptr;
   const AlgorithmInfo* algorithm = find_algorithm(op ? op->algorithm : log.header().algorithm);
   const bool bisection = op ? op->insertion == PointInsertion::bisection : log.run().insertion == "bisection";
-  if (bisection || (algorithm && algorithm->insertion == RefineInsertion::bisection)) return Program::lepp_bisection;
+  if (bisection || (algorithm && algorithm->insertion == RefineInsertion::bisection))
+    return {Program::lepp_bisection, Insertion::flips};
   const std::optional<Selection> named = op ? op->selection : log.run().selection;
   const std::optional<Selection> selection =
       named ? named : algorithm ? std::optional(algorithm->selection) : std::nullopt;
-  switch (selection.value_or(Selection::circumcenter)) {
-    case Selection::offcenter: return Program::offcenter;
-    case Selection::lepp_midpoint: return Program::lepp_midpoint;
-    case Selection::lepp_centroid: return Program::lepp_centroid;
-    case Selection::longest_edge_midpoint: return Program::longest_edge_midpoint;
-    case Selection::circumcenter: break;
-  }
-  return Program::circumcenter;
+  return {Program::delaunay_refinement, refinement_insertion(log), selection.value_or(Selection::circumcenter)};
 }
 
 // The phase span event e lies in: the last one begun at or before it.
@@ -419,11 +385,6 @@ const replay::PhaseSpan* phase_of(const replay::LogReader& log, std::uint64_t e)
   }
   return found;
 }
-
-struct Choice {
-  Program program;
-  Insertion insertion;
-};
 
 // A terrain's program, by the algorithm the header names; nullopt for any other run.
 std::optional<Program> terrain_program(const replay::LogReader& log) {
@@ -439,7 +400,7 @@ Choice program_for(const replay::LogReader& log, const replay::PhaseSpan* span) 
   switch (phase) {
     case Phase::recover_segments:
     case Phase::carve: return {Program::segment_recovery, Insertion::flips};
-    case Phase::refine: return {refinement_program(log, span), refinement_insertion(log)};
+    case Phase::refine: return refinement_choice(log, span);
     case Phase::improve: return {Program::vertex_removal, Insertion::flips};
     default: {
       const Insertion insertion = triangulation_insertion(log);
@@ -658,15 +619,17 @@ std::optional<At> terrain_line(const replay::LogReader& log, std::uint64_t e, co
 
 const PseudoCode& pseudocode(Program program, Insertion insertion) {
   if (program >= Program::count_) program = Program::lawson;
-  return entry(program, insertion).code;
+  return entry(program, Selection::circumcenter, insertion).code;
 }
+
+const PseudoCode& pseudocode(Selection selection, Insertion insertion) { return entry(selection, insertion).code; }
 
 std::vector<const PseudoCode*> all_pseudocode() {
   std::vector<const PseudoCode*> out;
-  for (std::size_t p = 0; p < kProgramCount; ++p) {
-    out.push_back(&entries()[p][0].code);
-    if (has_variants(static_cast<Program>(p))) out.push_back(&entries()[p][1].code);
-  }
+  for (std::size_t p = 0; p < kProgramCount; ++p)
+    if (static_cast<Program>(p) != Program::delaunay_refinement) out.push_back(&entries()[p][0].code);
+  for (const std::array<Entry, 2>& variants : refinement_entries())
+    for (const Entry& e : variants) out.push_back(&e.code);
   return out;
 }
 
@@ -674,13 +637,13 @@ CodeAt pseudocode_at(const replay::LogReader& log, std::uint64_t position) {
   position = std::min(position, log.event_count());
   if (position == 0) {
     const Choice choice = program_for(log, log.phases().empty() ? nullptr : &log.phases().front());
-    return {&pseudocode(choice.program, choice.insertion), -1, 0, choice.program};
+    return {&entry(choice.program, choice.selection, choice.insertion).code, -1, 0, choice.program, choice.selection};
   }
   const std::uint64_t e = position - 1;
   const replay::PhaseSpan* span = phase_of(log, e);
   const Choice choice = program_for(log, span);
-  const Entry& program = entry(choice.program, choice.insertion);
-  CodeAt at{&program.code, -1, 0, choice.program};
+  const Entry& program = entry(choice.program, choice.selection, choice.insertion);
+  CodeAt at{&program.code, -1, 0, choice.program, choice.selection};
 
   const Event ev = log.event(e);
   std::optional<At> role;

@@ -46,9 +46,23 @@ struct PartInfo {
   std::string_view description;
 };
 
+// The pseudo-code of the refinement program a selection makes (the viewer's pseudo-code
+// panel, scene/pseudocode.hpp): Ruppert's loop, or Rivara's Lepp loop, round the lines that
+// choose the new point, which are the selection's own.
+struct SelectionProgram {
+  std::string_view title;      // "Off-center refinement (Üngör 2004/2009)"
+  std::string_view reference;  // the paper(s), one line
+  // The point comes from the terminal edge of Lepp(t), inside Rivara's loop ("p" there,
+  // "c" in Ruppert's).
+  bool lepp = false;
+  // The lines that choose it, indented as in the loop (4 spaces in Ruppert's, 8 in Lepp's).
+  std::span<const std::string_view> choose_point;
+};
+
 // A point selection: where a bad triangle asks for its new vertex. Adding one means its
-// function in the refiner (refine.cpp, the Selection enum) and its record here; every
-// parser, the help and `meshstep list` read the records.
+// function in the refiner (refiner.hpp, the Selection enum) and its record here: every
+// parser, the help, `meshstep list`, the step story, the log's dumps and the pseudo-code
+// panel read the records.
 struct SelectionInfo {
   std::string_view name;  // as the command line and the log header spell it
   std::string_view description;
@@ -58,6 +72,7 @@ struct SelectionInfo {
   // Lepp lies on the boundary (one terminal triangle), what it takes there instead.
   std::string_view point_name;
   std::string_view boundary_point_name = {};
+  SelectionProgram program;
 };
 std::span<const SelectionInfo> selections();
 const SelectionInfo* find_selection(std::string_view name);

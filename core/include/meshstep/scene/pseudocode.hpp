@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "meshstep/refine/refine.hpp"
 #include "meshstep/replay/log_reader.hpp"
 #include "meshstep/replay/replay.hpp"
 
@@ -32,11 +33,10 @@ enum class Program : std::uint8_t {
   lawson,                 // Delaunay insertion by flips
   bowyer_watson,          // Delaunay insertion by cavities
   segment_recovery,       // constrained Delaunay: segments recovered by flips, then carving
-  circumcenter,           // Ruppert / Chew Delaunay refinement
-  offcenter,              // Üngör's off-centers
-  longest_edge_midpoint,  // Delaunay refinement inserting longest-edge midpoints
-  lepp_midpoint,          // Rivara's Lepp-Delaunay, terminal-edge midpoint
-  lepp_centroid,          // Lepp-Delaunay, terminal-triangles centroid
+  // Delaunay refinement: Ruppert's loop, or Rivara's Lepp loop, round the lines of a point
+  // selection. One program per selection, written by the selection's registry record
+  // (refine/registry.hpp: SelectionProgram): pseudocode(Selection, Insertion).
+  delaunay_refinement,
   lepp_bisection,         // Rivara's Lepp longest-edge bisection
   vertex_removal,         // improvement: removal of Steiner vertices
   lepp_surface,           // terrain: Coll, Guerrieri, Rivara, Sellarès's Lepp-surface
@@ -48,7 +48,10 @@ enum class Program : std::uint8_t {
 // programs have one text whatever this says.
 enum class Insertion : std::uint8_t { flips, cavity };
 
+// A program other than delaunay_refinement (which gives the circumcenter selection's).
 const PseudoCode& pseudocode(Program program, Insertion insertion = Insertion::flips);
+// The Delaunay refinement program of a point selection.
+const PseudoCode& pseudocode(Selection selection, Insertion insertion = Insertion::flips);
 // Every text there is (the refinement programs once per insertion), for a list or the tests.
 std::vector<const PseudoCode*> all_pseudocode();
 
@@ -60,6 +63,7 @@ struct CodeAt {
   int line = -1;
   int lines = 0;
   Program program = Program::lawson;
+  Selection selection = Selection::circumcenter;  // which one, for delaunay_refinement
 };
 
 // At the event `position` - 1 of the log (the one a cursor at `position` applied last); at
