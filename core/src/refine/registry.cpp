@@ -71,6 +71,8 @@ constexpr std::array kSelections = {
 constexpr std::array<std::string_view, 3> kInsertionWords = {"flip", "cavity", "bisection"};
 constexpr std::array<std::string_view, 3> kOrderWords = {"smallest", "worst", "fifo"};
 constexpr std::array<std::string_view, 2> kEncroachmentWords = {"circle", "lens"};
+// SegmentSplits' words, in its order (the first is the default).
+constexpr std::array<std::string_view, 3> kSegmentSplitsWords = {"all", "interior", "none"};
 constexpr std::array<std::string_view, 2> kDataStructureWords = {"tds", "dcel"};
 
 constexpr std::array kParameters = {
@@ -119,6 +121,13 @@ constexpr std::array kParameters = {
                   "more (as Triangle; fewer splits). Default: lens, but circle for midpoint\n"
                   "selections (lepp-midpoint, midpoint-area), which crowd segments under a lens",
                   NumberRange::any, false, "", ChoiceSource::own, kEncroachmentWords},
+    ParameterInfo{"split-segments", "", ParameterKind::choice, "",
+                  "Which segments refinement may split: all; interior (never one on the domain's\n"
+                  "boundary, holes' included: Triangle's -Y); none (Triangle's -YY). Kept segments\n"
+                  "stay as the input has them, the mesh is constrained Delaunay, and a triangle\n"
+                  "whose point would encroach on one is left as it is: bounds may be missed there\n"
+                  "(counted in kept_segment_refusals). Not with bisection",
+                  NumberRange::any, false, "all", ChoiceSource::own, kSegmentSplitsWords},
     ParameterInfo{"ds", "", ParameterKind::choice, "", "Mesh data structure: tds (triangle-based) or dcel (half-edge)",
                   NumberRange::any, false, "tds", ChoiceSource::own, kDataStructureWords},
     ParameterInfo{"convex-hull", "c", ParameterKind::flag, "",
