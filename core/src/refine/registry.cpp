@@ -71,8 +71,19 @@ constexpr std::array kSelections = {
 constexpr std::array<std::string_view, 3> kInsertionWords = {"flip", "cavity", "bisection"};
 constexpr std::array<std::string_view, 3> kOrderWords = {"smallest", "worst", "fifo"};
 constexpr std::array<std::string_view, 2> kEncroachmentWords = {"circle", "lens"};
-// SegmentSplits' words, in its order (the first is the default).
-constexpr std::array<std::string_view, 3> kSegmentSplitsWords = {"all", "interior", "none"};
+// SegmentSplits' modes, in its order (the first is the default), and their words.
+constexpr std::array kSegmentSplits = {
+    PartInfo{"all", "the default: any segment a point encroaches on is split (conforming Delaunay where the "
+                    "bounds are met)"},
+    PartInfo{"interior", "never a segment on the domain's boundary, holes' included (Triangle's -Y); those "
+                         "with triangles on both sides are split as usual"},
+    PartInfo{"none", "never any segment (Triangle's -YY): the mesh's segments are the input's"},
+};
+constexpr std::array<std::string_view, kSegmentSplits.size()> kSegmentSplitsWords = [] {
+  std::array<std::string_view, kSegmentSplits.size()> words{};
+  for (std::size_t i = 0; i < words.size(); ++i) words[i] = kSegmentSplits[i].name;
+  return words;
+}();
 constexpr std::array<std::string_view, 2> kDataStructureWords = {"tds", "dcel"};
 
 constexpr std::array kParameters = {
@@ -218,6 +229,7 @@ std::string range_problem(const ParameterInfo& parameter, std::string_view text)
          std::string(text);
 }
 std::span<const PartInfo> insertions() { return kInsertions; }
+std::span<const PartInfo> segment_splits_modes() { return kSegmentSplits; }
 std::span<const PartInfo> data_structures() { return kDataStructures; }
 
 std::optional<Selection> parse_selection(std::string_view name) {
