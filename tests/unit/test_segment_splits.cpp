@@ -19,6 +19,7 @@
 #include "meshstep/refine/refine.hpp"
 #include "meshstep/refine/registry.hpp"
 #include "meshstep/refine/run_spec.hpp"
+#include "meshstep/replay/run_header.hpp"
 #include "triangulate_support.hpp"
 
 namespace meshstep {
@@ -263,6 +264,17 @@ TEST(SegmentSplits, RunDescriptionReadsAndPrintsIt) {
   EXPECT_EQ(refine_options(parse_operation("refine --split-segments none")).segment_splits, SegmentSplits::none);
   EXPECT_THROW(parse_operation("refine --split-segments boundary"), RunSpecError);
   EXPECT_THROW(parse_operation("triangulate --split-segments none"), RunSpecError);
+}
+
+// A log's header says when segments were kept, and only then (every other header stays as
+// it was).
+TEST(SegmentSplits, TheLogHeaderSaysWhichSegmentsWereKept) {
+  RefineOptions o = options_for(*find_algorithm("offcenter"));
+  EXPECT_EQ(replay::refine_parameters(o, "", 4, 0).find("split_segments"), std::string::npos);
+  o.segment_splits = SegmentSplits::interior;
+  EXPECT_NE(replay::refine_parameters(o, "", 4, 0).find(" split_segments=interior"), std::string::npos);
+  o.segment_splits = SegmentSplits::none;
+  EXPECT_NE(replay::refine_parameters(o, "", 4, 0).find(" split_segments=none"), std::string::npos);
 }
 
 }  // namespace
