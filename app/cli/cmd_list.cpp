@@ -94,6 +94,8 @@ std::vector<Section> sections() {
        rows_of(meshstep::selections())},
       {"insertions", "Insertions (--insertion): how a vertex goes in", rows_of(meshstep::insertions())},
       {"criteria", "Criteria (refine): a triangle is bad when it fails any bound given", criteria_rows()},
+      {"segment_splits", "Segment splits (refine --split-segments): which segments refinement may split",
+       rows_of(meshstep::segment_splits_modes())},
       {"data_structures", "Data structures (--ds)", rows_of(meshstep::data_structures())},
       {"file_formats", "File formats (R: meshstep reads it, W: writes it)", format_rows()},
   };

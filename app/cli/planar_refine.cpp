@@ -385,10 +385,15 @@ int run_planar_refine(const PlanarRefineJob& job) {
 
   const AngleStats angles = angle_stats(mesh);
   if (verbosity != Verbosity::quiet) {
-    const std::string outcome =
+    std::string outcome =
         report.bounds_met ? std::string("bounds met")
                           : "bounds missed by " + std::to_string(report.bad_triangles) + " triangles (" +
                                 std::to_string(report.bad_near_small_input_angle) + " near small input angles)";
+    // Kept segments are a reason of their own for bounds missed: the count says how often.
+    if (options.segment_splits != SegmentSplits::all)
+      outcome += "; " + std::string(options.segment_splits == SegmentSplits::none ? "no" : "no boundary") +
+                 " segment split, " + std::to_string(report.kept_segment_refusals) +
+                 " bad triangles set aside by kept segments";
     std::printf("%s: %zu vertices, %zu segments -> %zu triangles, %zu Steiner vertices (min angle %.2f, "
                 "max angle %.2f); %s\n",
                 job.input.c_str(), input_vertices, input_segments, mesh.triangles.size(), report.steiner_vertices,
@@ -448,6 +453,8 @@ int run_planar_refine(const PlanarRefineJob& job) {
         .field("rejected_points", report.rejected_points)
         .field("skipped_small_angle", report.skipped_small_angle)
         .field("unsplittable_segments", report.unsplittable_segments)
+        .field("split_segments", std::string(to_string(options.segment_splits)))
+        .field("kept_segment_refusals", report.kept_segment_refusals)
         .field("below_min_angle", report.below_min_angle)
         .field("bad_triangles", report.bad_triangles)
         .field("bad_near_small_input_angle", report.bad_near_small_input_angle)

@@ -87,6 +87,8 @@ py::dict stats_of(const TriMesh& mesh, const RefineOptions& options, const Refin
   s["rejected_points"] = report.rejected_points;
   s["skipped_small_angle"] = report.skipped_small_angle;
   s["unsplittable_segments"] = report.unsplittable_segments;
+  s["split_segments"] = to_string(options.segment_splits);
+  s["kept_segment_refusals"] = report.kept_segment_refusals;
   s["below_min_angle"] = report.below_min_angle;
   s["bad_triangles"] = report.bad_triangles;
   s["bad_near_small_input_angle"] = report.bad_near_small_input_angle;

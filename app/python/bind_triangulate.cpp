@@ -49,6 +49,7 @@ py::dict triangulate_dict(const py::object& given, const std::string& opts) {
   if (s.conforming) set_from_switch(op, 'D', "encroachment", "circle");
   if (s.convex_hull) set_from_switch(op, 'c', "convex-hull", "");
   if (s.max_steiner && !no_steiner) set_from_switch(op, 'S', "max-steiner", *s.max_steiner);
+  if (s.keep_segments) set_from_switch(op, 'Y', "split-segments", s.keep_segments == 1 ? "interior" : "none");
   RefineOptions options;
   try {
     options = refine_options(op);

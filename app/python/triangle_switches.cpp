@@ -3,6 +3,7 @@
 // sign and digit is the edges switch ("a0.5e" is an area of 0.5 and edges).
 #include "triangle_switches.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 namespace meshstep::python {
@@ -58,19 +59,17 @@ TriangleSwitches parse_triangle_switches(std::string_view text) {
       // Numbering from 0 is the only numbering here, and nothing is printed: z and Q ask for
       // what is done anyway (the triangle package adds them itself).
       case 'z': case 'Q': break;
-      case 'Y':
-        refuse(letter, text,
-               "is not supported: meshstep's refinement splits boundary segments wherever a point would encroach "
-               "them, and has no mode that keeps them whole");
+      // Y: no Steiner point on the boundary's segments; YY (or more): on none.
+      case 'Y': s.keep_segments = std::min(s.keep_segments + 1, 2); break;
       case 'o': case 'u': case 'F': case 'l': case 's': case 'i': case 'j': case 'v': case 'V': case 'I':
       case 'O': case 'P': case 'N': case 'E': case 'B': case 'X': case 'C': case 'g': case 'h': case 'w':
       case 'W': case 'L': case 'T': case 'k':
         refuse(letter, text,
-               "is not supported by meshstep.triangulate (it takes p, q[ANGLE], a[AREA], a, c, r, e, n, D, S[N], A, "
-               "and z and Q, which change nothing)");
+               "is not supported by meshstep.triangulate (it takes p, q[ANGLE], a[AREA], a, c, r, e, n, D, Y, YY, S[N], "
+               "A, and z and Q, which change nothing)");
       default:
         refuse(letter, text, "is not a switch (meshstep.triangulate takes p, q[ANGLE], a[AREA], a, c, r, e, n, D, "
-                             "S[N], A, z, Q)");
+                             "Y, YY, S[N], A, z, Q)");
     }
   }
   return s;

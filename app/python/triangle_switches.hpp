@@ -23,6 +23,7 @@ struct TriangleSwitches {
   bool conforming = false;             // D: every triangle Delaunay (diametral circles)
   std::optional<std::string> max_steiner;  // S[N]; "" for S alone (no Steiner point)
   bool attributes = false;             // A: triangles get their region's attribute
+  int keep_segments = 0;               // Y: 1 keeps the boundary's segments whole, 2 (YY) every segment
 };
 
 // Throws std::invalid_argument naming the first switch it does not support, or a number it

@@ -43,7 +43,7 @@ def test_a_segment_to_a_missing_vertex_raises_value_error():
         meshstep.triangulate(dict(vertices=SQUARE, segments=[[0, -1]]), "p")
 
 
-@pytest.mark.parametrize("opts,letter", [("pV", "V"), ("pqo2", "o"), ("Y", "Y"), ("p?", "?")])
+@pytest.mark.parametrize("opts,letter", [("pV", "V"), ("pqo2", "o"), ("pq30Yj", "j"), ("p?", "?")])
 def test_an_unsupported_switch_raises_value_error_naming_it(opts, letter):
     with pytest.raises(ValueError, match=re.escape(f"switch '{letter}'")):
         meshstep.triangulate(dict(vertices=SQUARE), opts)
@@ -234,3 +234,56 @@ def test_delaunay_and_convex_hull_as_the_triangle_package_has_them():
         side = e[0] * (points[:, 1] - points[i, 1]) - e[1] * (points[:, 0] - points[i, 0])
         assert side.min() >= -1e-12
     assert len(hull) == len(on_hull)
+
+
+def box_with_hole_and_wall():
+    """box_with_hole, and an interior segment (a wall with triangles on both sides) below the hole."""
+    box = box_with_hole()
+    box["vertices"] = np.vstack([box["vertices"], [[0.5, 0.5], [2.5, 0.5]]])
+    box["segments"] = np.vstack([box["segments"], [[8, 9]]])
+    return box
+
+
+def edge_set(pairs):
+    return {tuple(sorted(map(int, e))) for e in pairs}
+
+
+def boundary_edge_set(triangles):
+    """Edges with a triangle on one side only, from the triangles alone."""
+    return {e for e, n in edge_uses(triangles).items() if n == 1}
+
+
+def test_y_keeps_the_boundary_segments_and_yy_every_segment():
+    box = box_with_hole_and_wall()
+    boundary = edge_set(box["segments"][:8])  # the outer square's and the hole's
+    plain = meshstep.triangulate(box, "pq30")
+    # Without Y the boundary is split (so what follows would fail without the switch).
+    assert not boundary_edge_set(plain["triangles"]) <= boundary
+
+    y = meshstep.triangulate(box, "pq30Y")
+    assert boundary_edge_set(y["triangles"]) == boundary
+    assert boundary <= edge_set(y["segments"])
+    assert (8, 9) not in edge_set(y["segments"])  # the wall inside may be split
+    assert len(y["vertices"]) > len(box["vertices"])
+
+    yy = meshstep.triangulate(box, "pq30YY")
+    assert edge_set(yy["segments"]) == edge_set(box["segments"])
+    assert len(yy["segments"]) == len(box["segments"])
+    assert boundary_edge_set(yy["triangles"]) == boundary
+    # Three Y are two: nothing more to prohibit.
+    assert edge_set(meshstep.triangulate(box, "pq30YYY")["segments"]) == edge_set(box["segments"])
+
+
+def test_refine_split_segments_is_y_and_reports_what_it_left():
+    box = box_with_hole_and_wall()
+    t = meshstep.triangulate(box, "pq30YY")
+    mesh = meshstep.refine(box["vertices"], box["segments"], box["holes"], min_angle=30, split_segments="none")
+    assert mesh.vertices.tolist() == t["vertices"].tolist()
+    assert mesh.triangles.tolist() == t["triangles"].tolist()
+    assert mesh.stats["split_segments"] == "none"
+    assert mesh.stats["segment_splits"] == 0
+    below = int((min_angles_deg(mesh.vertices, mesh.triangles) < 30.0 - 1e-9).sum())
+    assert mesh.stats["below_min_angle"] == below
+    assert mesh.stats["bounds_met"] == (mesh.stats["bad_triangles"] == 0)
+    with pytest.raises(ValueError, match="split-segments"):
+        meshstep.refine(box["vertices"], box["segments"], split_segments="boundary")

@@ -142,7 +142,10 @@ def refine(vertices: ArrayLike,
     **options: any other option of ``meshstep refine``, with ``_`` for ``-``:
         ``max_angle=``, ``max_aspect=``, ``size=``, ``max_triangles=``, ``max_steiner=``,
         ``select=``, ``order=``, ``encroachment=``, ``insertion=``, ``convex_hull=True``,
-        ``improve=True``, ...
+        ``improve=True``, ``split_segments='interior'`` (never split a segment on the
+        domain's boundary, Triangle's ``Y``) or ``'none'`` (no segment at all, ``YY``): the
+        mesh is then constrained Delaunay, and ``stats['kept_segment_refusals']`` counts the
+        bad triangles left because their point would encroach on a kept segment, ...
 
     Returns
     -------

@@ -27,7 +27,9 @@ def triangulate(tri: Mapping[str, Any], opts: str = "") -> Dict[str, np.ndarray]
         ``a`` alone (the regions' areas, or with ``r`` the triangles' ``triangle_max_area``),
         ``c`` (keep the convex hull), ``r`` (refine ``tri['triangles']`` again), ``e`` (output
         edges), ``n`` (output neighbours), ``D`` (conforming Delaunay: encroachment by
-        diametral circles), ``S[N]`` (at most N Steiner vertices; ``S`` or ``S0``: none),
+        diametral circles), ``Y`` (no Steiner vertex on the boundary's segments: they stay as
+        given, the mesh is constrained Delaunay, and triangles near them may miss the bounds),
+        ``YY`` (none on any segment), ``S[N]`` (at most N Steiner vertices; ``S`` or ``S0``: none),
         ``A`` (output each triangle's region attribute). ``z`` and ``Q`` are accepted and
         change nothing. Any other letter raises ``ValueError`` naming it.
 

@@ -18,6 +18,7 @@ RefineReport combined_report(std::span<const RefineReport> reports) {
     total.skipped_small_angle += step.skipped_small_angle;
     total.unsplittable_segments += step.unsplittable_segments;
     total.points_out_of_range += step.points_out_of_range;
+    total.kept_segment_refusals += step.kept_segment_refusals;
     total.removed_vertices += step.removed_vertices;
     total.triangulate_ms += step.triangulate_ms;
     total.refine_ms += step.refine_ms;

@@ -189,11 +189,18 @@ TriMesh refine_chain(Pslg input, std::span<const RefineOptions> operations, std:
                      const std::function<void(std::size_t)>& before) {
   if (operations.empty()) throw InputError("a refinement needs at least one operation");
   if (reports.size() != operations.size()) throw std::invalid_argument("refine_chain: one report per operation");
-  for (const RefineOptions& options : operations)
+  for (const RefineOptions& options : operations) {
+    // Bisection cuts a triangle across the terminal edge its path reaches, whatever it is:
+    // a segment it may not cut would leave the triangles on the path unrefinable.
+    if (options.insertion == RefineInsertion::bisection && options.segment_splits != SegmentSplits::all)
+      throw InputError("longest-edge bisection (" + options.algorithm + ") splits whatever terminal edge it reaches, " +
+                       "segments included: it cannot keep segments whole (split segments " +
+                       to_string(options.segment_splits) + "); use a Delaunay algorithm");
     for (const RefineCriteria* c : criteria_of(options)) {
       check(*c);
       if (options.insertion == RefineInsertion::bisection) check_bisection(options, *c, input);
     }
+  }
   detail::validate(input);
   for (RefineReport& r : reports) r = RefineReport{};  // a caller's report may hold an earlier run's
   switch (operations.front().triangulate.data_structure) {
@@ -211,6 +218,9 @@ TriMesh refine(Pslg input, const RefineOptions& options, RefineReport* report) {
 
 // Its record's name (refine/registry.hpp), which is a literal: the pointer stays valid.
 const char* to_string(Selection s) { return selection_info(s).name.data(); }
+const char* to_string(SegmentSplits s) {
+  return s == SegmentSplits::all ? "all" : s == SegmentSplits::interior ? "interior" : "none";
+}
 const char* to_string(RefineInsertion i) { return i == RefineInsertion::bisection ? "bisection" : "delaunay"; }
 
 double lens_angle_deg(const RefineCriteria& c) {

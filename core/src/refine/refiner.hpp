@@ -87,7 +87,8 @@ class Refiner {
         const Suspect suspect = segments_.back();
         segments_.pop_back();
         const HalfEdge h = find_segment(suspect);
-        if (h != kNone && encroached_by_apex(h)) split_segment(h, kNone, nullptr);
+        // A segment kept whole stays encroached: the mesh is constrained Delaunay there.
+        if (h != kNone && may_split(h) && encroached_by_apex(h)) split_segment(h, kNone, nullptr);
         continue;
       }
       Candidate c;
@@ -112,6 +113,7 @@ class Refiner {
     report.rejected_points = rejected_;
     report.unsplittable_segments = unsplittable_;
     report.points_out_of_range = out_of_range_;
+    report.kept_segment_refusals = kept_refusals_;
     report.stopped_by_cap = capped();
     assess(report);
   }
@@ -177,6 +179,17 @@ class Refiner {
   static std::uint64_t key(VertexId a, VertexId b) { return edge_tie_key(a, b); }
 
   bool is_segment(HalfEdge h) const { return mesh_.twin(h) == kNone || mesh_.is_constrained(h); }
+
+  // May the segment of h be split (RefineOptions::segment_splits)? One with no triangle on
+  // its other side lies on the domain's boundary (the outer one or a hole's).
+  bool may_split(HalfEdge h) const {
+    switch (options_.segment_splits) {
+      case SegmentSplits::all: return true;
+      case SegmentSplits::interior: return mesh_.twin(h) != kNone;
+      case SegmentSplits::none: return false;
+    }
+    return true;
+  }
 
   bool face_in_region(HalfEdge h) const {
     return in_region(criteria_, point(mesh_.origin(h)), point(mesh_.dest(h)), point(mesh_.apex(h)));
@@ -563,11 +576,23 @@ class Refiner {
     const WalkResult w = walk(lepp_selection() ? lepp_faces_.back() : c.face, p);
     if (w.kind == WalkResult::Kind::on_vertex) return;  // a vertex there already: left as it is
     if (w.kind == WalkResult::Kind::blocked || (w.kind == WalkResult::Kind::on_edge && is_segment(w.h))) {
+      // Beyond a segment kept whole (outside the domain, for a boundary one) or on it: the
+      // triangle is set aside, never retried, so a run with kept segments ends as one without.
+      if (!may_split(w.h)) {
+        ++kept_refusals_;
+        return;
+      }
       ++rejected_;
       if (split_segment(w.h, kNone, &p)) requeue(c);
       return;
     }
     encroached_around(w.h, p, encroached_);
+    // Encroaching on a segment kept whole: set aside as above (splitting the others it
+    // encroaches would not make the point acceptable).
+    if (std::any_of(encroached_.begin(), encroached_.end(), [&](HalfEdge e) { return !may_split(e); })) {
+      ++kept_refusals_;
+      return;
+    }
     if (!encroached_.empty()) {
       // One only (the lowest vertex ids): a split moves the other handles, and the triangle comes back with the
       // others still encroached if its point still asks for them.
@@ -861,6 +886,7 @@ class Refiner {
   std::unordered_set<std::uint64_t> recreated_;  // hashes of triangles a split's flips made (collisions: a search more)
   std::size_t segment_splits_ = 0, triangles_split_ = 0, rejected_ = 0, unsplittable_ = 0, removed_ = 0;
   std::size_t out_of_range_ = 0;  // points refused for coordinates below the exact range
+  std::size_t kept_refusals_ = 0;  // bad triangles set aside for a segment kept whole
   ExactRange exact_range_;
 };
 

@@ -132,6 +132,19 @@ constexpr std::array kSelections = {
 constexpr std::array<std::string_view, 3> kInsertionWords = {"flip", "cavity", "bisection"};
 constexpr std::array<std::string_view, 3> kOrderWords = {"smallest", "worst", "fifo"};
 constexpr std::array<std::string_view, 2> kEncroachmentWords = {"circle", "lens"};
+// SegmentSplits' modes, in its order (the first is the default), and their words.
+constexpr std::array kSegmentSplits = {
+    PartInfo{"all", "the default: any segment a point encroaches on is split (conforming Delaunay where the "
+                    "bounds are met)"},
+    PartInfo{"interior", "never a segment on the domain's boundary, holes' included (Triangle's -Y); those "
+                         "with triangles on both sides are split as usual"},
+    PartInfo{"none", "never any segment (Triangle's -YY): the mesh's segments are the input's"},
+};
+constexpr std::array<std::string_view, kSegmentSplits.size()> kSegmentSplitsWords = [] {
+  std::array<std::string_view, kSegmentSplits.size()> words{};
+  for (std::size_t i = 0; i < words.size(); ++i) words[i] = kSegmentSplits[i].name;
+  return words;
+}();
 constexpr std::array<std::string_view, 2> kDataStructureWords = {"tds", "dcel"};
 
 constexpr std::array kParameters = {
@@ -180,6 +193,13 @@ constexpr std::array kParameters = {
                   "more (as Triangle; fewer splits). Default: lens, but circle for midpoint\n"
                   "selections (lepp-midpoint, midpoint-area), which crowd segments under a lens",
                   NumberRange::any, false, "", ChoiceSource::own, kEncroachmentWords},
+    ParameterInfo{"split-segments", "", ParameterKind::choice, "",
+                  "Which segments refinement may split: all; interior (never one on the domain's\n"
+                  "boundary, holes' included: Triangle's -Y); none (Triangle's -YY). Kept segments\n"
+                  "stay as the input has them, the mesh is constrained Delaunay, and a triangle\n"
+                  "whose point would encroach on one is left as it is: bounds may be missed there\n"
+                  "(counted in kept_segment_refusals). Not with bisection",
+                  NumberRange::any, false, "all", ChoiceSource::own, kSegmentSplitsWords},
     ParameterInfo{"ds", "", ParameterKind::choice, "", "Mesh data structure: tds (triangle-based) or dcel (half-edge)",
                   NumberRange::any, false, "tds", ChoiceSource::own, kDataStructureWords},
     ParameterInfo{"convex-hull", "c", ParameterKind::flag, "",
@@ -270,6 +290,7 @@ std::string range_problem(const ParameterInfo& parameter, std::string_view text)
          std::string(text);
 }
 std::span<const PartInfo> insertions() { return kInsertions; }
+std::span<const PartInfo> segment_splits_modes() { return kSegmentSplits; }
 std::span<const PartInfo> data_structures() { return kDataStructures; }
 
 std::optional<Selection> parse_selection(std::string_view name) {

@@ -64,7 +64,8 @@ std::size_t choice_of(OperationKind kind, const ParameterInfo& p, std::string_vi
 using Field = std::variant<std::string Operation::*, std::optional<Selection> Operation::*,
                            std::optional<double> Operation::*, std::optional<std::string> Operation::*,
                            std::size_t Operation::*, PointInsertion Operation::*, RefineOrder Operation::*,
-                           std::optional<Encroachment> Operation::*, DataStructure Operation::*, bool Operation::*>;
+                           std::optional<Encroachment> Operation::*, SegmentSplits Operation::*,
+                           DataStructure Operation::*, bool Operation::*>;
 struct Binding {
   std::string_view name;
   Field field;
@@ -76,7 +77,8 @@ const Binding kBindings[] = {
     {"size", &Operation::size},                   {"flip-dihedral", &Operation::flip_dihedral},
     {"max-triangles", &Operation::max_triangles}, {"max-steiner", &Operation::max_steiner},
     {"insertion", &Operation::insertion},         {"order", &Operation::order},
-    {"encroachment", &Operation::encroachment},   {"ds", &Operation::data_structure},
+    {"encroachment", &Operation::encroachment},   {"split-segments", &Operation::segment_splits},
+    {"ds", &Operation::data_structure},
     {"convex-hull", &Operation::convex_hull},     {"improve", &Operation::improve},
     {"delete-free", &Operation::delete_free},     {"keep-free", &Operation::keep_free},
 };
@@ -311,6 +313,11 @@ RefineOptions refine_options(const Operation& op, std::function<double(const Poi
     throw RunSpecError("--delete-free and --keep-free contradict each other: give one");
   if (op.delete_free) o.delete_free = FreeVertexDeletion::always;
   if (op.keep_free) o.delete_free = FreeVertexDeletion::never;
+  o.segment_splits = op.segment_splits;
+  if (o.segment_splits != SegmentSplits::all && o.insertion == RefineInsertion::bisection)
+    throw RunSpecError(std::string("--split-segments ") + to_string(o.segment_splits) +
+                       ": bisection splits whatever terminal edge it reaches, segments included; it does not go "
+                       "with bisection (use a Delaunay algorithm)");
   if ((o.improve || op.delete_free) && o.insertion == RefineInsertion::bisection)
     throw RunSpecError(std::string(o.improve ? "--improve" : "--delete-free") +
                        " removes vertices from a Delaunay mesh: it does not go with bisection");

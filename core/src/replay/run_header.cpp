@@ -53,7 +53,9 @@ std::string refine_parameters(const RefineOptions& o, const std::string& size_te
          " insertion=" + (o.insertion == RefineInsertion::bisection ? "bisection" : to_string(o.triangulate.insertion)) +
          " encroachment=" + (o.encroachment == Encroachment::lens ? "lens" : "circle") +
          " lens_angle=" + bound_text(lens_angle_deg(c)) + " input_vertices=" + std::to_string(input_vertices) +
-         " first_index=" + std::to_string(first_index) + " convex_hull=" + std::to_string(o.triangulate.convex_hull);
+         " first_index=" + std::to_string(first_index) + " convex_hull=" + std::to_string(o.triangulate.convex_hull) +
+         // Only when segments are kept: the headers of every other run stay as they were.
+         (o.segment_splits == SegmentSplits::all ? "" : std::string(" split_segments=") + to_string(o.segment_splits));
 }
 
 std::string surface_parameters(double max_edge, double max_area, std::uint64_t input_vertices,

@@ -62,6 +62,14 @@ enum class FreeVertexDeletion : std::uint8_t {
   never,
 };
 
+// Which segments refinement may split (Triangle's -Y and -YY): every one (the default), only
+// those with triangles on both sides (interior: the domain's boundary, holes' included, is
+// never split), or none. A segment that may not be split stays as the input has it: the mesh
+// is then constrained Delaunay, not conforming, and a bad triangle whose point would encroach
+// on such a segment (or lie beyond it, outside the domain) is left as it is, so that the
+// bounds may be missed near it (RefineReport::kept_segment_refusals says how often).
+enum class SegmentSplits : std::uint8_t { all, interior, none };
+
 // Stopping criteria: a triangle is bad when it fails any bound that is set (all-of).
 struct RefineCriteria {
   double min_angle_deg = 0.0;    // 0: none
@@ -110,6 +118,9 @@ struct RefineOptions {
   // inside its diametral circle (FreeVertexDeletion). Delaunay insertion only: bisection
   // ignores it.
   FreeVertexDeletion delete_free = FreeVertexDeletion::unless_sized;
+  // Which segments may be split (SegmentSplits). Delaunay insertion only: bisection must
+  // split the terminal edge it reaches, and refine() refuses it with anything but all.
+  SegmentSplits segment_splits = SegmentSplits::all;
   // Refine each region of the input to its own maximum area (Region::max_area, from the
   // .poly's regional attributes), besides the global criteria.
   bool regional_max_area = true;
@@ -135,6 +146,8 @@ struct RefineReport {
                                          // (or its point would leave the exact range)
   std::size_t points_out_of_range = 0;   // bad triangles left: their point would have a
                                          // coordinate below 2^-140 of the largest
+  std::size_t kept_segment_refusals = 0; // bad triangles left: their point would encroach on (or lie
+                                         // beyond) a segment that may not be split (segment_splits)
   std::size_t removed_vertices = 0;      // Steiner vertices removed again (improvement, deletion near
                                          // split segments); not in steiner_vertices
   bool stopped_by_cap = false;           // max_triangles or max_steiner reached
@@ -199,5 +212,6 @@ double lens_angle_deg(const RefineCriteria& criteria);
 const char* to_string(Selection s);
 const char* to_string(RefineOrder o);
 const char* to_string(RefineInsertion i);
+const char* to_string(SegmentSplits s);  // "all", "interior", "none"
 
 }  // namespace meshstep

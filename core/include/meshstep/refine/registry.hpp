@@ -120,6 +120,8 @@ std::vector<std::string> choices(const ParameterInfo& parameter);
 // check (the reader of the number refuses it in its own words).
 std::string range_problem(const ParameterInfo& parameter, std::string_view text);
 std::span<const PartInfo> insertions();
+// The words of --split-segments (SegmentSplits, in its order) and what each keeps whole.
+std::span<const PartInfo> segment_splits_modes();
 std::span<const PartInfo> data_structures();
 
 // The selection of that name (selections()), or nothing.

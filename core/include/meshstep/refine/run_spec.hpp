@@ -48,6 +48,7 @@ struct Operation {
   PointInsertion insertion = PointInsertion::flip;
   RefineOrder order = RefineOrder::smallest_first;
   std::optional<Encroachment> encroachment;  // none: the selection's own
+  SegmentSplits segment_splits = SegmentSplits::all;
   DataStructure data_structure = DataStructure::tds;
   bool convex_hull = false, improve = false, delete_free = false, keep_free = false;
   std::optional<RegionSpec> region;  // none: the whole domain
