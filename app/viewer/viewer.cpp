@@ -522,6 +522,8 @@ void Viewer::draw_help() {
   }
   ImGui::TextUnformatted("Drag the canvas to pan, turn the wheel to zoom at the pointer; drag the timeline to scrub.");
   ImGui::TextUnformatted("In 3D (a terrain's run, V): drag to turn the view, right-drag to pan, the wheel zooms.");
+  ImGui::TextUnformatted("In edit mode (E): click to add, drag a point to move it, right-click to delete, middle-drag to pan;");
+  ImGui::TextUnformatted("the region tool (B, Shift+B) drags a box, or draws a lasso from press to release, to refine.");
   ImGui::End();
 }
 
