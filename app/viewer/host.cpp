@@ -34,8 +34,10 @@ std::string& dropped_path() {
 
 // A key pressed and released between two frames (a quick tap; xdotool's `key`) would never
 // be seen down: ImGui 1.86 reads the keys' state once a frame. Its GLFW backend keeps a
-// mouse button's press for a frame (MouseJustPressed); this does the same for keys: a
-// release of a key pressed since the frame began waits for the next frame.
+// mouse button's press for a frame (MouseJustPressed); this does the same for keys: once a
+// key was pressed since the frame began, every release waits for the next frame, in order.
+// (Not only the pressed key's: a Ctrl+S tapped as Ctrl down in one frame, then S down, S
+// up and Ctrl up in the next, must find Ctrl still down with S.)
 struct KeyLatch {
   std::vector<int> pressed;               // since the last frame began
   std::vector<std::array<int, 3>> held;   // releases to make there: key, scancode, mods
@@ -47,7 +49,7 @@ KeyLatch& key_latch() {
 
 void latched_key_callback(GLFWwindow* window, int key, int scancode, int action, int mods) {
   KeyLatch& latch = key_latch();
-  if (action == GLFW_RELEASE && std::find(latch.pressed.begin(), latch.pressed.end(), key) != latch.pressed.end()) {
+  if (action == GLFW_RELEASE && !latch.pressed.empty() && latch.held.size() < 64) {
     latch.held.push_back({key, scancode, mods});
     return;
   }

@@ -135,7 +135,11 @@ class WorkbenchXEvents : public ::testing::TestWithParam<std::string> {
     ASSERT_EQ(xdo(std::string("mouseup 1 sleep ") + kPause).status, 0);
   }
   void key(const std::string& chord) { ASSERT_EQ(xdo("key " + chord + " sleep " + kPause).status, 0); }
-  void type(const std::string& text) { ASSERT_EQ(xdo("type '" + text + "' sleep " + kPause).status, 0); }
+  // (`type` takes the rest of xdotool's words as its text: the pause is a command of its own.)
+  void type(const std::string& text) {
+    ASSERT_EQ(xdo("type '" + text + "'").status, 0);
+    ASSERT_EQ(xdo(std::string("sleep ") + kPause).status, 0);
+  }
 
   // Lets the script go on past `wait-until STAGE`; returns the state it writes then.
   std::string stage(const std::string& name) {
