@@ -53,6 +53,15 @@ std::vector<Point> simplify_lasso(const std::vector<Point>& path, double step) {
   for (std::size_t i = 0; i < n; ++i)
     if (keep[i] && (ring.empty() || distance(ring.back(), path[i]) >= step)) ring.push_back(path[i]);
   while (ring.size() > 1 && distance(ring.back(), ring.front()) < step) ring.pop_back();
+  // 10^k: for k < 0 a division by 10^-k (an exact integer), so that n / 1000 is the double
+  // nearest n thousandths, whose shortest text is "0.832" (n * 0.001 is 0.8320000000000001).
+  const double k = std::floor(std::log10(step / 40.0));
+  if (!std::isfinite(k) || std::fabs(k) > 300) return ring;
+  const double ten_k = std::pow(10.0, std::fabs(k));
+  for (Point& p : ring) {
+    if (k < 0) p = {std::round(p.x * ten_k) / ten_k, std::round(p.y * ten_k) / ten_k};
+    else p = {std::round(p.x / ten_k) * ten_k, std::round(p.y / ten_k) * ten_k};
+  }
   return ring;
 }
 
