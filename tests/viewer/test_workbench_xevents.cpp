@@ -11,6 +11,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -20,6 +21,7 @@
 #include <thread>
 #include <vector>
 
+#include "meshstep/io/shortest_text.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/refine/region.hpp"
 #include "meshstep/scene/image.hpp"
@@ -284,6 +286,64 @@ TEST_P(WorkbenchXEvents, RealMouseAndKeysEditUndoRedoHoleRegionAndSave) {
   ASSERT_EQ(m.status, 0) << m.output << read_text(path("rect.recipe"));
   EXPECT_EQ(static_cast<long long>(io::read_mesh(path("reproduced")).triangles.size()), field(s6, "mesh_triangles"));
   EXPECT_EQ(scene::read_png(path("xevents.png")).width, 1024);
+}
+
+// Shift+B and a lasso drawn with the real pointer (press, 24 moves round an ellipse,
+// release): the lasso's first vertex is where the button went down, every vertex is on the
+// path, and "Refine the lasso" puts exactly those vertices into the recipe.
+TEST_P(WorkbenchXEvents, ARealPointerDrawsALasso) {
+  const std::string input = path("rect.poly");
+  std::ofstream(input) << kRectangle;
+  start(input, script_stage("s0") + script_stage("s1") + script_stage("s2") + "quit\n");
+  if (HasFatalFailure()) return;
+  key("e");
+  const View view(stage("s0"));
+  key("shift+b");
+  // Round (2, 1.5), radii 1.2 and 0.9 in world units, from its right end.
+  const auto at = [&](int i) {
+    const double t = 2 * M_PI * i / 24;
+    return view.pixel(2 + 1.2 * std::cos(t), 1.5 + 0.9 * std::sin(t));
+  };
+  move(at(0));
+  ASSERT_EQ(xdo(std::string("mousedown 1 sleep ") + kPause).status, 0);
+  for (int i = 1; i <= 23; ++i) move(at(i));
+  ASSERT_EQ(xdo(std::string("mouseup 1 sleep ") + kPause).status, 0);
+  const std::string s1 = stage("s1");
+  EXPECT_TRUE(has(s1, "\"edit_tool\": \"box lasso\"")) << s1;
+  const auto lasso = s1.find("\"drawn_region\": {\"lasso\": [");
+  ASSERT_NE(lasso, std::string::npos) << s1;
+  std::vector<Point> ring;
+  for (std::size_t i = s1.find('[', lasso + 20) + 1; s1[i] == '['; i = s1.find('[', i + 1)) {
+    Point p;
+    ASSERT_EQ(std::sscanf(s1.c_str() + i, "[%lf, %lf]", &p.x, &p.y), 2);
+    ring.push_back(p);
+    i = s1.find(']', i);
+    if (s1[i + 1] == ']') break;
+  }
+  // The 24 corners of the path drawn: at most 24 vertices, at least the 8 an ellipse this
+  // size keeps within a pixel; each one of the pixels the pointer went to (to the rounding
+  // of a tenth of a pixel), the first the press.
+  EXPECT_GE(ring.size(), 8u) << s1;
+  EXPECT_LE(ring.size(), 24u) << s1;
+  const double pixel = 1.0 / view.scale;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    double nearest = 1e300;
+    for (int i = 0; i < 24; ++i) {
+      const Point w = view.world(at(i).first, at(i).second);
+      nearest = std::min(nearest, std::hypot(w.x - ring[k].x, w.y - ring[k].y));
+    }
+    EXPECT_LE(nearest, 0.1 * pixel) << "vertex " << k;
+  }
+  const Point press = view.world(at(0).first, at(0).second);
+  EXPECT_NEAR(ring.front().x, press.x, 0.1 * pixel);
+  EXPECT_NEAR(ring.front().y, press.y, 0.1 * pixel);
+
+  click(refine_button_);
+  const std::string s2 = stage("s2");
+  std::string polygon;
+  for (const Point& p : ring) polygon += (polygon.empty() ? "" : ",") + io::shortest_text(p.x) + "," + io::shortest_text(p.y);
+  EXPECT_TRUE(has(s2, "\"recipe\": [\"refine --algorithm circumcenter --region-polygon " + polygon + "\"]")) << s2;
+  ASSERT_EQ(finish(), 0) << read_text(path("view.out"));
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, WorkbenchXEvents, ::testing::Values("window"),
