@@ -28,7 +28,7 @@ struct RefineArgs {
 // A 3D surface goes to longest-edge bisection in 3D; only its own options apply.
 int refine_surface(const RefineArgs& args, const Operation& op) {
   if (op.region) {
-    print_error("--region and --region-poly limit a planar refinement: they do not apply to a 3D surface");
+    print_error("--region, --region-polygon and --region-poly limit a planar refinement: they do not apply to a 3D surface");
     return kExitUsage;
   }
   for (const std::string& name : args.operation->given()) {

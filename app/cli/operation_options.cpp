@@ -64,6 +64,12 @@ OperationOptions::OperationOptions(CLI::App& cmd, OperationKind kind) : kind_(ki
                      "included); elsewhere triangles are held to no bound, and change only where\n"
                      "the algorithm's own rules reach them (docs/recipes.md, Regions)")
           ->type_name("X0,Y0,X1,Y1");
+  region_polygon_ = std::make_unique<Entry>();
+  region_polygon_->option =
+      cmd.add_option("--region-polygon", region_polygon_->text,
+                     "As --region, in the simple polygon through these vertices, in order (at\n"
+                     "least 3; the last joins the first): the recipe keeps it in its own line")
+          ->type_name("X0,Y0,X1,Y1,X2,Y2,...");
   region_poly_ = std::make_unique<Entry>();
   region_poly_->option = cmd.add_option("--region-poly", region_poly_->text,
                                         "As --region, in the polygon the segments of FILE.poly make (one closed\n"
@@ -79,6 +85,8 @@ std::optional<Operation> OperationOptions::operation() const {
       if (e->option->count() > 0)
         set_option(op, e->parameter->name, e->parameter->kind == ParameterKind::flag ? "" : e->text);
     if (region_box_ && region_box_->option->count() > 0) set_option(op, "region", region_box_->text);
+    if (region_polygon_ && region_polygon_->option->count() > 0)
+      set_option(op, "region-polygon", region_polygon_->text);
     if (region_poly_ && region_poly_->option->count() > 0) set_option(op, "region-poly", region_poly_->text);
   } catch (const RunSpecError& e) {
     print_error(e.what());

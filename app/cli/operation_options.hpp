@@ -35,8 +35,8 @@ class OperationOptions {
   };
   OperationKind kind_;
   std::vector<std::unique_ptr<Entry>> entries_;  // stable: CLI11 writes into them
-  // --region and --region-poly (a refinement's only; not registry parameters).
-  std::unique_ptr<Entry> region_box_, region_poly_;
+  // --region, --region-polygon and --region-poly (a refinement's only; not registry parameters).
+  std::unique_ptr<Entry> region_box_, region_polygon_, region_poly_;
 };
 
 // The help of a parameter for an operation of `kind`; a choice whose words come from a

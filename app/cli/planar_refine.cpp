@@ -155,8 +155,10 @@ bool prepare_step(const Operation& op, const std::string& origin, int refusal_st
   if (criteria.max_triangles) bound("at most " + std::to_string(criteria.max_triangles) + " triangles");
   if (criteria.max_steiner) bound("at most " + std::to_string(criteria.max_steiner) + " Steiner vertices");
   if (step.options.region)
-    bound("only in " + (op.region->box ? "the box " + step.options.region->text().substr(4)
-                                       : "the polygon of " + op.region->polygon_file));
+    bound("only in " + (op.region->box                ? "the box " + step.options.region->text().substr(4)
+                        : !op.region->polygon.empty() ? "a polygon of " + std::to_string(op.region->polygon.size()) +
+                                                            " vertices"
+                                                      : "the polygon of " + op.region->polygon_file));
   return true;
 }
 

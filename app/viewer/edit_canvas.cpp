@@ -8,6 +8,9 @@
 //   right click on an element     a menu: delete it
 //   right click on empty canvas   ends the polyline
 //   middle drag                   pans (the left button edits)
+// The region tool (EditTool::box): a left drag draws a box; with the lasso shape, the
+// pointer's path from press to release is the lasso, closed at the release and simplified
+// (lasso_path.hpp). Either is kept for the panel's form, which refines it.
 // With the grid on, a click's point rounds to the grid first.
 #include "edit_canvas.hpp"
 
@@ -17,6 +20,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "lasso_path.hpp"
+#include "meshstep/error.hpp"
+#include "meshstep/refine/region.hpp"
 #include "workbench_host.hpp"
 
 namespace meshstep::viewer {
@@ -67,6 +73,54 @@ void delete_selected(WorkbenchHost& host) {
   run_edit(host, [&](PslgEditor& e) { e.erase(at); });
 }
 
+void choose_region_shape(WorkbenchHost& host, bool lasso) {
+  EditCanvasState& st = host.tool;
+  st.tool = EditTool::box;
+  st.lasso_shape = lasso;
+  st.chain_first.reset();
+  st.chain_last.reset();
+  st.lasso_drawing = false;
+}
+
+namespace {
+
+// The lasso's press-drag-release: the path grows while the button is down; at the release
+// it is simplified and checked, and kept when it makes a simple polygon. `step`: the world
+// length of kLassoStepPixels.
+void draw_lasso(WorkbenchHost& host, const Point& pointer, double step) {
+  EditCanvasState& st = host.tool;
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    st.lasso_drawing = true;
+    st.lasso_path.clear();
+    st.lasso_path.push_back(pointer);
+    return;
+  }
+  if (!st.lasso_drawing) return;
+  const Point& last = st.lasso_path.back();
+  // Every quarter step the pointer moves (a pixel): simplify_lasso keeps the path within a
+  // quarter step of the ring.
+  if (std::hypot(pointer.x - last.x, pointer.y - last.y) >= step / 4.0) st.lasso_path.push_back(pointer);
+  if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) return;
+  st.lasso_drawing = false;
+  std::vector<Point> ring = simplify_lasso(st.lasso_path, step);
+  st.lasso_path.clear();
+  if (ring.size() < 3) {
+    host.say("lasso: too small to close (draw round the part to refine, then release)");
+    return;
+  }
+  try {
+    RefineRegion::polygon(ring);
+  } catch (const InputError& e) {
+    host.say("lasso: " + e.message() + "; draw it again without crossing its own path");
+    return;
+  }
+  st.lasso = std::move(ring);
+  st.box.reset();
+  host.say("");
+}
+
+}  // namespace
+
 void edit_canvas(WorkbenchHost& host, const scene::Camera& camera, float x, float y, bool hovered) {
   Workbench* bench = host.bench();
   if (!bench || !host.editing) return;
@@ -115,12 +169,22 @@ void edit_canvas(WorkbenchHost& host, const scene::Camera& camera, float x, floa
     std::snprintf(label, sizeof label, "%g", in.regions[r].attribute);
     draw.AddText(ImVec2(c.x + 9, c.y - 8), colour, label);
   }
-  // The box to refine: dragged now, or the last one dragged.
+  // The region to refine: the box or the lasso being drawn, else the last one drawn.
   constexpr ImU32 kBox = IM_COL32(130, 40, 160, 255);
-  if (st.tool == EditTool::box && hovered && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 4.0f)) {
+  const auto draw_ring = [&](const std::vector<Point>& ring, bool closed) {
+    for (std::size_t i = 0; i + 1 < ring.size(); ++i) draw.AddLine(screen(ring[i]), screen(ring[i + 1]), kBox, 2.0f);
+    if (closed && ring.size() > 2) draw.AddLine(screen(ring.back()), screen(ring.front()), kBox, 2.0f);
+  };
+  if (st.tool == EditTool::box && !st.lasso_shape && hovered && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 4.0f)) {
     const ImVec2 press = io.MouseClickedPos[0];
     draw.AddRect(ImVec2(std::min(press.x, io.MousePos.x), std::min(press.y, io.MousePos.y)),
                  ImVec2(std::max(press.x, io.MousePos.x), std::max(press.y, io.MousePos.y)), kBox, 0.0f, 0, 2.0f);
+  } else if (st.lasso_drawing && !st.lasso_path.empty()) {
+    draw_ring(st.lasso_path, false);
+    draw.AddLine(screen(st.lasso_path.back()), io.MousePos, kBox, 2.0f);
+    draw.AddLine(io.MousePos, screen(st.lasso_path.front()), kBox, 1.0f);  // where the release closes it
+  } else if (!st.lasso.empty()) {
+    draw_ring(st.lasso, true);
   } else if (st.box) {
     const ImVec2 a = screen(st.box->first), b = screen(st.box->second);
     draw.AddRect(ImVec2(a.x, b.y), ImVec2(b.x, a.y), kBox, 0.0f, 0, 2.0f);
@@ -158,6 +222,11 @@ void edit_canvas(WorkbenchHost& host, const scene::Camera& camera, float x, floa
     }
     return;
   }
+  // The lasso: drawn from its press to its release, wherever the pointer goes meanwhile.
+  if (st.tool == EditTool::box && st.lasso_shape && (hovered || st.lasso_drawing)) {
+    draw_lasso(host, pointer_world, kLassoStepPixels / camera.pixels_per_unit());
+    return;
+  }
   if (!hovered) return;
   // The box tool: a drag draws the box (kept for the panel's form), not a move.
   if (st.tool == EditTool::box) {
@@ -166,6 +235,7 @@ void edit_canvas(WorkbenchHost& host, const scene::Camera& camera, float x, floa
       const Point a = camera.to_world({press.x - x, press.y - y});
       st.box = std::pair{Point{std::min(a.x, pointer_world.x), std::min(a.y, pointer_world.y)},
                          Point{std::max(a.x, pointer_world.x), std::max(a.y, pointer_world.y)}};
+      st.lasso.clear();
     }
     return;
   }

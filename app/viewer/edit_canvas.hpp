@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "meshstep/geometry/point.hpp"
 #include "meshstep/pslg/pslg_editor.hpp"
@@ -15,8 +16,8 @@ namespace meshstep::viewer {
 
 class WorkbenchHost;
 
-// What a click on empty canvas makes; `box` drags a box over the mesh, to refine it
-// (the panel's form says how).
+// What a click on empty canvas makes; `box` is the region tool: a box dragged, or a lasso
+// drawn, over the mesh, to refine it (the panel's form says how).
 enum class EditTool { vertex, segment, hole, region, box };
 const char* name(EditTool tool);
 
@@ -36,6 +37,13 @@ struct EditCanvasState {
   bool grid = false;                   // clicks snap to a grid (its step from the zoom)
   // The box tool's box (world corners, low then high), once dragged.
   std::optional<std::pair<Point, Point>> box;
+  // The region tool's shape: the lasso (press, drag round, release to close) or the box.
+  bool lasso_shape = false;
+  // The lasso: the path being drawn (world points, kLassoStepPixels apart), and the ring
+  // last closed (simplified, simple; empty: none). A new one replaces the box, and a box
+  // the lasso: the form refines the one shown.
+  std::vector<Point> lasso_path, lasso;
+  bool lasso_drawing = false;
   // The values a new region point gets (the form's).
   double region_attribute = 1.0, region_max_area = -1.0;
   // The pointer's world position, as the last frame saw it (the status line shows it).
@@ -56,5 +64,8 @@ void edit_canvas(WorkbenchHost& host, const scene::Camera& camera, float x, floa
 
 // Delete: the selected element goes (and the polyline being drawn ends).
 void delete_selected(WorkbenchHost& host);
+
+// B and Shift+B: the region tool, with the box or the lasso.
+void choose_region_shape(WorkbenchHost& host, bool lasso);
 
 }  // namespace meshstep::viewer

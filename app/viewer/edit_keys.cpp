@@ -17,10 +17,13 @@ void edit_key(Viewer& v, EditKey key) {
     case EditKey::undo:
     case EditKey::redo:
     case EditKey::erase:
+    case EditKey::region_box:
+    case EditKey::region_lasso:
       if (!host->bench() || !host->editing) return v.notify("nothing is being edited: E starts editing this run's input");
       if (key == EditKey::undo) host->undo();
       else if (key == EditKey::redo) host->redo();
-      else delete_selected(*host);
+      else if (key == EditKey::erase) delete_selected(*host);
+      else choose_region_shape(*host, key == EditKey::region_lasso);
       return;
   }
 }

@@ -11,6 +11,7 @@
 
 #include "edit_keys.hpp"
 #include "meshstep/error.hpp"
+#include "meshstep/io/shortest_text.hpp"
 #include "meshstep/refine/registry.hpp"
 #include "meshstep/refine/run_spec.hpp"
 #include "viewer.hpp"
@@ -20,18 +21,34 @@ namespace meshstep::viewer {
 
 namespace {
 
-// The box tool's form (issue 27 item 3), from the registry's records: the algorithm, then
-// each of its bounds with the registry's help and default; "Refine the box" appends the
-// operation, limited to the box, to the recipe, which runs again at once.
+// The region tool's form (issue 27 item 3), from the registry's records: the shape (box or
+// lasso), the algorithm, then each of its bounds with the registry's help and default;
+// "Refine the box" (or "Refine the lasso") appends the operation, limited to the region, to
+// the recipe, which runs again at once.
 void draw_region_form(WorkbenchHost& host, Workbench& bench) {
   EditCanvasState& st = host.tool;
   static int algorithm = 0;
   static char values[16][32] = {};
   const std::span<const AlgorithmInfo> all = algorithms();
-  if (!st.box) {
-    ImGui::TextWrapped("Drag a box over the mesh: the operation below refines the triangles whose centroid is in it.");
-  } else {
+  int shape = st.lasso_shape ? 1 : 0;
+  ImGui::TextUnformatted("region:");
+  ImGui::SameLine();
+  ImGui::RadioButton("box (B)", &shape, 0);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("drag a box over the mesh");
+  ImGui::SameLine();
+  ImGui::RadioButton("lasso (Shift+B)", &shape, 1);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("press, drag round the part to refine, release to close");
+  if ((shape == 1) != st.lasso_shape) choose_region_shape(host, shape == 1);
+  const bool lasso = !st.lasso.empty();
+  if (lasso) {
+    ImGui::Text("lasso of %zu vertices", st.lasso.size());
+  } else if (st.box) {
     ImGui::Text("box %.4g, %.4g to %.4g, %.4g", st.box->first.x, st.box->first.y, st.box->second.x, st.box->second.y);
+  } else if (st.lasso_shape) {
+    ImGui::TextWrapped("Press on the mesh, drag round the part to refine and release: the lasso closes, and the "
+                       "operation below refines the triangles whose centroid is in it.");
+  } else {
+    ImGui::TextWrapped("Drag a box over the mesh: the operation below refines the triangles whose centroid is in it.");
   }
   algorithm = std::clamp(algorithm, 0, static_cast<int>(all.size()) - 1);
   if (ImGui::BeginCombo("algorithm", all[static_cast<std::size_t>(algorithm)].name.data())) {
@@ -49,8 +66,8 @@ void draw_region_form(WorkbenchHost& host, Workbench& bench) {
     if (ImGui::IsItemHovered() && !p.help.empty()) ImGui::SetTooltip("%.*s", static_cast<int>(p.help.size()), p.help.data());
     ++k;
   }
-  ImGui::BeginDisabled(!st.box);
-  if (ImGui::SmallButton("Refine the box")) {
+  ImGui::BeginDisabled(!st.box && !lasso);
+  if (ImGui::SmallButton(lasso ? "Refine the lasso" : "Refine the box")) {
     // The recipe line's words: what `refine-region` and a recipe file take.
     std::vector<std::string> words{"refine", "--algorithm", std::string(all[static_cast<std::size_t>(algorithm)].name)};
     k = 0;
@@ -62,16 +79,25 @@ void draw_region_form(WorkbenchHost& host, Workbench& bench) {
       }
       ++k;
     }
-    char box[160];
-    std::snprintf(box, sizeof box, "%.17g,%.17g,%.17g,%.17g", st.box->first.x, st.box->first.y, st.box->second.x,
-                  st.box->second.y);
-    words.push_back("--region");
-    words.push_back(box);
+    if (lasso) {
+      // Its vertices written out (--region-polygon): the recipe stays one file.
+      std::string ring;
+      for (const Point& p : st.lasso)
+        ring += (ring.empty() ? "" : ",") + io::shortest_text(p.x) + "," + io::shortest_text(p.y);
+      words.push_back("--region-polygon");
+      words.push_back(std::move(ring));
+    } else {
+      char box[160];
+      std::snprintf(box, sizeof box, "%.17g,%.17g,%.17g,%.17g", st.box->first.x, st.box->first.y, st.box->second.x,
+                    st.box->second.y);
+      words.push_back("--region");
+      words.push_back(box);
+    }
     try {
       bench.append_operation(parse_operation(words));
       host.say("");
     } catch (const RunSpecError& e) {
-      host.say(std::string("Refine the box: ") + e.what());
+      host.say(std::string(lasso ? "Refine the lasso: " : "Refine the box: ") + e.what());
     }
   }
   ImGui::EndDisabled();
@@ -112,7 +138,8 @@ void draw_edit_panel(Viewer& v) {
   for (int t = 0; t <= static_cast<int>(EditTool::box); ++t) {
     if (t > 0 && t != static_cast<int>(EditTool::box)) ImGui::SameLine();
     const bool box = t == static_cast<int>(EditTool::box);
-    if (ImGui::RadioButton(box ? "box: refine a region of the mesh" : name(static_cast<EditTool>(t)), &tool, t)) {
+    if (ImGui::RadioButton(box ? "region: refine a box or a lasso of the mesh" : name(static_cast<EditTool>(t)), &tool,
+                           t)) {
       st.chain_first.reset();
       st.chain_last.reset();
     }

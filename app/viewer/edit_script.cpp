@@ -49,11 +49,32 @@ Operation region_operation(const ScriptAction& a) {
   return parse_operation(words);
 }
 
+// `refine-lasso X0 Y0 X1 Y1 X2 Y2 ... [-- OPTIONS...]`: where the numbers end (the "--" or
+// the end of the line).
+std::size_t lasso_numbers(const ScriptAction& a) {
+  std::size_t n = 0;
+  while (n < a.args.size() && a.args[n] != "--") ++n;
+  return n;
+}
+
+// Its operation: the options, limited to the polygon through the points in order (written
+// out as --region-polygon, which checks that it is simple). Throws RunSpecError.
+Operation lasso_operation(const ScriptAction& a) {
+  const std::size_t n = lasso_numbers(a);
+  std::vector<std::string> words{"refine"};
+  if (n < a.args.size()) words.insert(words.end(), a.args.begin() + static_cast<std::ptrdiff_t>(n) + 1, a.args.end());
+  std::string ring;
+  for (std::size_t i = 0; i < n; ++i) ring += (i ? "," : "") + a.args[i];
+  words.push_back("--region-polygon");
+  words.push_back(ring);
+  return parse_operation(words);
+}
+
 }  // namespace
 
 bool is_edit_action(const std::string& verb) {
   return verb == "new" || verb == "edit" || verb == "undo" || verb == "redo" || verb == "save" ||
-         verb == "refine-region" || verb == "recipe" || verb == "save-recipe";
+         verb == "refine-region" || verb == "refine-lasso" || verb == "recipe" || verb == "save-recipe";
 }
 
 std::string check_edit_action(const ScriptAction& a) {
@@ -78,6 +99,19 @@ std::string check_edit_action(const ScriptAction& a) {
       region_operation(a);
     } catch (const RunSpecError& e) {
       return std::string("refine-region: ") + e.what();
+    }
+    return "";
+  }
+  if (a.verb == "refine-lasso") {
+    const char* usage = "expected: refine-lasso X0 Y0 X1 Y1 X2 Y2 ... [-- OPTIONS...] (3 points at least)";
+    const std::size_t numbers = lasso_numbers(a);
+    for (std::size_t i = 0; i < numbers; ++i)
+      if (!is_real(a.args[i])) return "'" + a.args[i] + "' is not a number; " + usage;
+    if (numbers < 6 || numbers % 2 != 0) return usage;
+    try {
+      lasso_operation(a);
+    } catch (const RunSpecError& e) {
+      return std::string("refine-lasso: ") + e.what();
     }
     return "";
   }
@@ -122,6 +156,10 @@ void run_edit_action(const ScriptAction& a, WorkbenchHost& host, const Session* 
   }
   if (a.verb == "refine-region") {
     bench.append_operation(region_operation(a));
+    return;
+  }
+  if (a.verb == "refine-lasso") {
+    bench.append_operation(lasso_operation(a));
     return;
   }
   if (a.verb == "recipe") {

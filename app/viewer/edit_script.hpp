@@ -12,6 +12,10 @@
 //   refine-region X0 Y0 X1 Y1 OPTIONS...
 //                                a refine operation (OPTIONS as on a recipe line) limited to
 //                                the box, appended to the recipe, which runs again
+//   refine-lasso X0 Y0 X1 Y1 X2 Y2 ... [-- OPTIONS...]
+//                                the same, limited to the polygon through the points in
+//                                order (a lasso; at least 3, simple, taken as given: a
+//                                script's points are not simplified as a drawn lasso's are)
 //   recipe remove|off|on|up|down N
 //                                the recipe's operation N (from 1): removed, switched off or
 //                                on, moved up or down

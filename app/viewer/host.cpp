@@ -4,7 +4,10 @@
 #include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
 
+#include <algorithm>
+#include <array>
 #include <utility>
+#include <vector>
 
 #include "imgui_gl.hpp"
 #include "render/framebuffer.hpp"
@@ -29,11 +32,47 @@ std::string& dropped_path() {
   return path;
 }
 
+// A key pressed and released between two frames (a quick tap; xdotool's `key`) would never
+// be seen down: ImGui 1.86 reads the keys' state once a frame. Its GLFW backend keeps a
+// mouse button's press for a frame (MouseJustPressed); this does the same for keys: once a
+// key was pressed since the frame began, every release waits for the next frame, in order.
+// (Not only the pressed key's: a Ctrl+S tapped as Ctrl down in one frame, then S down, S
+// up and Ctrl up in the next, must find Ctrl still down with S.)
+struct KeyLatch {
+  std::vector<int> pressed;               // since the last frame began
+  std::vector<std::array<int, 3>> held;   // releases to make there: key, scancode, mods
+};
+KeyLatch& key_latch() {
+  static KeyLatch latch;
+  return latch;
+}
+
+void latched_key_callback(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  KeyLatch& latch = key_latch();
+  if (action == GLFW_RELEASE && !latch.pressed.empty() && latch.held.size() < 64) {
+    latch.held.push_back({key, scancode, mods});
+    return;
+  }
+  if (action == GLFW_PRESS && latch.pressed.size() < 64) latch.pressed.push_back(key);
+  ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+}
+
+// Before the frame's events: the releases held back from the last frame, then a new frame.
+void release_latched_keys(GLFWwindow* window) {
+  KeyLatch& latch = key_latch();
+  for (const auto& [key, scancode, mods] : latch.held) ImGui_ImplGlfw_KeyCallback(window, key, scancode, GLFW_RELEASE, mods);
+  latch.held.clear();
+  latch.pressed.clear();  // (capacity kept: an idle frame allocates nothing)
+}
+
 class WindowHost final : public Host {
  public:
   WindowHost(int width, int height, const std::string& title)
       : context_(render::make_window_context(width, height, title, true)) {
     ImGui_ImplGlfw_InitForOpenGL(context_->window(), true);
+    key_latch().pressed.reserve(64);
+    key_latch().held.reserve(64);
+    glfwSetKeyCallback(context_->window(), latched_key_callback);  // ImGui's, through the latch
     // ImGui's backend leaves file drops alone: they are the viewer's.
     glfwSetDropCallback(context_->window(), [](GLFWwindow*, int count, const char** paths) {
       if (count > 0) dropped_path() = paths[count - 1];
@@ -47,6 +86,7 @@ class WindowHost final : public Host {
   }
 
   bool begin_frame(double) override {
+    release_latched_keys(context_->window());
     glfwPollEvents();
     if (glfwWindowShouldClose(context_->window())) return false;
     glfwGetFramebufferSize(context_->window(), &width_, &height_);

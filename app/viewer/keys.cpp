@@ -129,6 +129,9 @@ std::vector<KeyAction> make_actions() {
   add({GLFW_KEY_Z, true, true}, "Ctrl+Shift+Z", "redo an edit", [](Viewer& v) { edit_key(v, EditKey::redo); });
   add({GLFW_KEY_Y, false, true}, "Ctrl+Y", "redo an edit", [](Viewer& v) { edit_key(v, EditKey::redo); });
   add({GLFW_KEY_DELETE}, "Delete", "edit mode: delete the selected element", [](Viewer& v) { edit_key(v, EditKey::erase); });
+  add({GLFW_KEY_B}, "B", "edit mode: refine a region: drag a box", [](Viewer& v) { edit_key(v, EditKey::region_box); });
+  add({GLFW_KEY_B, true}, "Shift+B", "edit mode: refine a region: draw a lasso",
+      [](Viewer& v) { edit_key(v, EditKey::region_lasso); });
   add(open_file_chord(), "Ctrl+O", "open a file (a dialog)", [](Viewer&) { request_file_dialog(); });
   add({GLFW_KEY_Q, false, true}, "Ctrl+Q", "quit", [](Viewer& v) { v.quit_requested = true; });
   return a;

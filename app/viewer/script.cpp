@@ -103,6 +103,20 @@ std::string check(const ScriptAction& a) {
     if (n == 2 && is_number(a.args[0], true, true) && is_number(a.args[1], true, true)) return "";
     return "expected: " + v + " X Y (pixels)";
   }
+  if (v == "drag-path") {
+    bool numbers = n >= 2 && n % 2 == 0;
+    for (std::size_t i = 0; numbers && i < n; ++i) numbers = is_number(a.args[i], true, true);
+    if (numbers) return "";
+    return "expected: drag-path DX1 DY1 DX2 DY2 ... (pixels, each move from where the one before ended)";
+  }
+  if (v == "wait-until") {
+    if (n == 2 && is_number(a.args[1], false, true) && std::strtod(a.args[1].c_str(), nullptr) > 0.0) return "";
+    return "expected: wait-until FILE SECONDS (frames go on, with the window's own mouse and keys, until FILE exists)";
+  }
+  if (v == "wait-input") {
+    if (n == 1 && is_number(a.args[0], false, true) && std::strtod(a.args[0].c_str(), nullptr) > 0.0) return "";
+    return "expected: wait-input SECONDS (frames go on, with the window's own mouse and keys)";
+  }
   if (v == "wheel") {
     if (n == 1 && is_number(a.args[0], true, true)) return "";
     return "expected: wheel N";

@@ -28,6 +28,14 @@
 //                       X, Y are a point of the plane)
 //   drag DX DY          drag with the left button by DX, DY pixels (over 4 frames): pans in
 //                       2D, turns the orbit in 3D
+//   drag-path DX1 DY1 DX2 DY2 ...
+//                       press the left button, move by each DX, DY pixels in turn (one frame
+//                       each), release: a lasso drawn by hand
+//   wait-until FILE SECONDS
+//                       frames go on, the script touching neither mouse nor keys, so that
+//                       the window's real events (xdotool's, a person's) are the viewer's,
+//                       until FILE exists; after SECONDS without it the script stops, saying so
+//   wait-input SECONDS  the same for SECONDS of wall-clock time
 //   wheel N             turn the wheel N notches (positive: zoom in)
 //   screenshot FILE     the window with its UI, as PNG
 //   canvas FILE         the canvas alone (the renderer's picture), PNG or SVG
@@ -46,7 +54,7 @@
 //                       encroached-segment; any when none); quiz answer X Y: a click at world
 //                       point X, Y; quiz next; quiz save FILE (the summary, JSON); quiz off
 //   quit
-//   new | edit WHAT ... | undo | redo | save FILE.poly
+//   new | edit WHAT ... | undo | redo | save FILE.poly | refine-region ... | refine-lasso ...
 //                       the workbench: an input edited and re-meshed at once (edit_script.hpp)
 #pragma once
 

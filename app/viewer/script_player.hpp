@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <thread>
 #include <vector>
@@ -47,7 +48,9 @@ class ScriptPlayer {
   // Where the workbench's actions (edit_script.hpp) go.
   void set_workbench(WorkbenchHost* host) { workbench_ = host; }
 
-  bool done() const { return next_ >= actions_.size() && frames_left_ == 0 && pending_.empty() && !pause_now_; }
+  bool done() const {
+    return next_ >= actions_.size() && frames_left_ == 0 && pending_.empty() && !pause_now_ && !waiting_;
+  }
   bool quit() const { return quit_; }
 
   // Before ImGui::NewFrame: sets this frame's input. Returns true when the frame must be
@@ -56,6 +59,17 @@ class ScriptPlayer {
   // loop opens it before the next frame).
   bool before_frame(Viewer* viewer, std::string& open, const std::string& problem) {
     ImGuiIO& io = ImGui::GetIO();
+    // `wait-until`, `wait-input`: the window's own input, untouched, until the file is there
+    // or the time is up.
+    if (waiting_) {
+      const bool file_there = wait_for_ && std::filesystem::exists(wait_for_->args[0]);
+      if (!file_there && std::chrono::steady_clock::now() < wait_end_) return false;
+      if (!file_there && wait_for_)
+        throw InputError(path_, static_cast<std::size_t>(wait_for_->line),
+                         "wait-until: " + wait_for_->args[0] + " did not appear within " + wait_for_->args[1] + " s");
+      waiting_ = false;
+      wait_for_ = nullptr;
+    }
     release(io);
     // `watch`: frames, touching nothing, for as long as a live run goes.
     if (watching_ && !live_state_.empty()) return false;
@@ -113,7 +127,8 @@ class ScriptPlayer {
 
   static bool needs_viewer(const std::string& verb) {
     return !(verb == "frames" || verb == "key" || verb == "type" || verb == "mouse" || verb == "click" || verb == "drag" ||
-             verb == "wheel" || verb == "screenshot" || verb == "quit" || verb == "watch" || is_edit_action(verb));
+             verb == "drag-path" || verb == "wait-until" || verb == "wait-input" || verb == "wheel" ||
+             verb == "screenshot" || verb == "quit" || verb == "watch" || is_edit_action(verb));
   }
 
   static std::string no_heights(Viewer& viewer) {
@@ -269,6 +284,27 @@ class ScriptPlayer {
       pending_.push_back({});
       return true;
     }
+    if (v == "drag-path") {
+      Input press;
+      press.button = true;
+      pending_.push_back(press);
+      for (std::size_t i = 0; i + 1 < a.args.size(); i += 2) {
+        Input move = press;
+        move.dx = std::strtof(a.args[i].c_str(), nullptr);
+        move.dy = std::strtof(a.args[i + 1].c_str(), nullptr);
+        pending_.push_back(move);
+      }
+      pending_.push_back({});
+      return true;
+    }
+    if (v == "wait-until" || v == "wait-input") {
+      waiting_ = true;
+      wait_for_ = v == "wait-until" ? &a : nullptr;
+      const double seconds = std::strtod(a.args[v == "wait-until" ? 1 : 0].c_str(), nullptr);
+      wait_end_ = std::chrono::steady_clock::now() +
+                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
+      return true;
+    }
     if (v == "wheel") {
       Input turn;
       turn.wheel = std::strtof(a.args[0].c_str(), nullptr);
@@ -385,6 +421,10 @@ class ScriptPlayer {
   int held_key_ = -1;
   WorkbenchHost* workbench_ = nullptr;
   float mouse_x_ = 0, mouse_y_ = 0;
+  // `wait-until` (its action) or `wait-input`: until when the real input is the viewer's.
+  bool waiting_ = false;
+  const ScriptAction* wait_for_ = nullptr;
+  std::chrono::steady_clock::time_point wait_end_{};
 };
 
 }  // namespace meshstep::viewer

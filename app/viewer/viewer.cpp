@@ -506,6 +506,9 @@ void Viewer::draw_help() {
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowBgAlpha(0.94f);
+  // No taller than the window: at 1024x640 the list ran off its bottom (the edit keys and
+  // the mouse's lines unseen); it scrolls instead.
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(io.DisplaySize.x * 0.98f, io.DisplaySize.y * 0.96f));
   ImGui::Begin("Keys (? or F1 to close)", &help_open,
                ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
   // Two pairs of columns (key, what it does), filled row by row.
@@ -522,6 +525,8 @@ void Viewer::draw_help() {
   }
   ImGui::TextUnformatted("Drag the canvas to pan, turn the wheel to zoom at the pointer; drag the timeline to scrub.");
   ImGui::TextUnformatted("In 3D (a terrain's run, V): drag to turn the view, right-drag to pan, the wheel zooms.");
+  ImGui::TextUnformatted("In edit mode (E): click to add, drag a point to move it, right-click to delete, middle-drag to pan;");
+  ImGui::TextUnformatted("the region tool (B, Shift+B) drags a box, or draws a lasso from press to release, to refine.");
   ImGui::End();
 }
 

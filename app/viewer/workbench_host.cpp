@@ -5,6 +5,7 @@
 
 #include "meshstep/error.hpp"
 #include "meshstep/io/formats.hpp"
+#include "meshstep/io/shortest_text.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/replay/run_header.hpp"
 #include "state_text.hpp"
@@ -28,7 +29,9 @@ std::vector<Operation> recipe_of(const replay::LogReader& log) {
   if (run.insertion == "bisection") op.insertion = PointInsertion::bisection;
   else if (run.insertion == "cavity") op.insertion = PointInsertion::cavity;
   if (run.region && run.region->kind() == RefineRegion::Kind::box) {
-    op.region = RegionSpec{std::pair{run.region->low(), run.region->high()}, {}};
+    op.region = RegionSpec{std::pair{run.region->low(), run.region->high()}, {}, {}};
+  } else if (run.region) {
+    op.region = RegionSpec{std::nullopt, {}, run.region->vertices()};  // a polygon, written out
   }
   return {op};
 }
@@ -61,6 +64,22 @@ std::string workbench_state_fields(const WorkbenchHost& host) {
   field("remesh_ms", ms);
   field("undo_depth", std::to_string(bench->editor().undo_depth()));
   field("edit_message", quoted(host.message));
+  // The region tool: its tool and shape, and the region drawn for the form (the lasso's
+  // vertices, simplified, or the box's corners).
+  std::string drawn = "null";
+  if (!host.tool.lasso.empty()) {
+    drawn = "{\"lasso\": [";
+    for (std::size_t i = 0; i < host.tool.lasso.size(); ++i)
+      drawn += std::string(i ? ", " : "") + "[" + io::shortest_text(host.tool.lasso[i].x) + ", " +
+               io::shortest_text(host.tool.lasso[i].y) + "]";
+    drawn += "]}";
+  } else if (host.tool.box) {
+    drawn = "{\"box\": [" + io::shortest_text(host.tool.box->first.x) + ", " + io::shortest_text(host.tool.box->first.y) + ", " +
+            io::shortest_text(host.tool.box->second.x) + ", " + io::shortest_text(host.tool.box->second.y) + "]}";
+  }
+  field("edit_tool", quoted(std::string(name(host.tool.tool)) +
+                            (host.tool.tool == EditTool::box ? (host.tool.lasso_shape ? " lasso" : " box") : "")));
+  field("drawn_region", drawn);
   field("input_file", quoted(bench->file()));
   return out;
 }

@@ -1,4 +1,4 @@
-// `meshstep refine --region / --region-poly`: the bounds hold where a triangle's centroid is
+// `meshstep refine --region / --region-polygon / --region-poly`: the bounds hold where a triangle's centroid is
 // in the region and not elsewhere, on a .poly and on a mesh prefix; refusals of malformed,
 // empty and non-simple regions with the usual exit statuses; the region in the log.
 #include <gtest/gtest.h>
@@ -102,7 +102,11 @@ TEST_F(RefineRegionCli, ABoxOrAPolygonOnEveryStructure) {
     const std::string boxed = dir_.file("boxed"), ell = dir_.file("ell");
     expect_refined_in(input, std::string(structure) + " --region 1,1,3,3", boxed, box);
     expect_refined_in(input, std::string(structure) + " --region-poly " + l_poly, ell, l);
-    for (const std::string& out : {boxed, ell}) {
+    // The same L written out on the command line (--region-polygon), clockwise as the file's.
+    const std::string inline_ell = dir_.file("inline_ell");
+    expect_refined_in(input, std::string(structure) + " --region-polygon 1,1,1,5,2,5,2,2,5,2,5,1", inline_ell, l);
+    EXPECT_EQ(io::read_mesh(inline_ell).triangles.size(), io::read_mesh(ell).triangles.size());
+    for (const std::string& out : {boxed, ell, inline_ell}) {
       const CommandResult check = meshstep("check " + out + " --poly " + input + " -q");
       EXPECT_EQ(check.status, 0) << check.out << check.err;
     }
@@ -145,6 +149,10 @@ TEST_F(RefineRegionCli, RefusesMalformedEmptyAndNonSimpleRegions) {
   const std::string broken = write("broken.poly", "4 2 0 0\n1 0 0\n2 1 0\n3 x 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n");
   refused("--region-poly " + broken, 1, broken + ":4:");
   refused("--region-poly " + input + " --region 1,1,3,3", 2, "give one");
+  refused("--region-polygon 0,0,2,2,2,0,0,2", 2,
+          "--region-polygon: a region polygon's edge 1 (0,0 to 2,2) and edge 3 (2,0 to 0,2) touch or cross");
+  refused("--region-polygon 1,1,3,3", 2, "--region-polygon: a region polygon is X0,Y0,X1,Y1,X2,Y2,... (at least 3");
+  refused("--region-polygon 1,1,3,1,3,3 --region 1,1,3,3", 2, "give one");
 }
 
 // The plain square triangulates into two triangles whose centroids, (6.7, 3.3) and

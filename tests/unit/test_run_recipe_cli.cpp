@@ -73,6 +73,34 @@ TEST_F(RunRecipeCli, AChainsSecondBoundHoldsInItsRegionOnly) {
   EXPECT_LT(io::read_mesh(dir_.file("first")).triangles.size() + 100, m.triangles.size());
 }
 
+// The region of a recipe's line written out (--region-polygon): the recipe is one file, and
+// the bound holds in the triangle it names and not elsewhere.
+TEST_F(RunRecipeCli, ARecipeLinesInlinePolygonLimitsItsOperation) {
+  const std::string input = write("square.poly", kSquare);
+  const std::string recipe = write("lasso.recipe",
+                                   "refine --algorithm lepp-centroid --min-angle 25 --max-area 2\n"
+                                   "refine --max-area 0.05 --region-polygon 1,1,7,1,1,7\n");
+  const CommandResult r = meshstep("run " + recipe + " " + input + " -o " + dir_.file("lasso") + " -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const TriMesh m = io::read_mesh(dir_.file("lasso"));
+  const RefineRegion triangle = RefineRegion::polygon({{1, 1}, {7, 1}, {1, 7}});
+  std::size_t inside = 0, large_inside = 0, large_outside = 0;
+  for (const auto& t : m.triangles) {
+    const Point &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]];
+    const bool large = area_of(m, t) > 0.05 * (1 + 1e-12);
+    if (triangle.contains({(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0})) {
+      ++inside;
+      large_inside += large;
+    } else {
+      large_outside += large;
+    }
+  }
+  EXPECT_GT(inside, 100u);
+  EXPECT_EQ(large_inside, 0u);
+  EXPECT_GT(large_outside, 5u);
+  EXPECT_EQ(meshstep("check " + dir_.file("lasso") + " --poly " + input + " -q").status, 0);
+}
+
 // A 5-degree wedge, whose tip no refinement can fix: every operation leaves triangles there.
 constexpr const char* kWedge =
     "# a 5-degree wedge\n"
@@ -252,6 +280,8 @@ TEST_F(RunRecipeCli, BadLinesAreRefusedBeforeAnyWork) {
   refused("refine --min-angle 25 --region 3,1,1,3", "--region: the region box 3,1,1,3 is empty");
   refused("refine --min-angle 25 --region-poly " + bowtie, "--region-poly: " + bowtie + ": a region polygon's");
   refused("refine --min-angle 25 --region 1,1,2,2 --region-poly " + bowtie, "give one");
+  refused("refine --min-angle 25 --region-polygon 0,0,2,2,2,0,0,2",
+          "--region-polygon: a region polygon's edge 1 (0,0 to 2,2) and edge 3 (2,0 to 0,2) touch or cross");
   refused("triangulate --convex-hull", "'refine ...' expected");
   refused("smooth --min-angle 25", "unknown operation 'smooth'");
   refused("refine --algorithm improve --insertion bisection", "does not go with bisection");

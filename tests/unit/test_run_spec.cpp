@@ -3,6 +3,7 @@
 // refused in the command line's terms; refine_options() runs what the words say.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -99,9 +100,67 @@ TEST(RunSpec, TheRegionPrintsAsItParses) {
   EXPECT_EQ(refusal("refine --region 1,2,3"),
             "--region: a region box is X0,Y0,X1,Y1 (four numbers separated by commas), not '1,2,3'");
   EXPECT_EQ(refusal("refine --region 0,0,1,1 --region-poly l.poly"),
-            "--region and --region-poly both name a region: give one");
+            "more than one of --region, --region-polygon and --region-poly names a region: give one");
   EXPECT_EQ(refusal("triangulate --region 0,0,1,1"), "--region: does not apply to triangulate");
   EXPECT_EQ(refusal("refine --region"), "--region: needs a value");
+}
+
+// --region-polygon: the polygon written out in the recipe's line, its vertices as given
+// (either way round), checked simple when read.
+TEST(RunSpec, AnInlinePolygonPrintsAsItParses) {
+  expect_round_trip("refine --max-area 0.05 --region-polygon 0,0,4,0,4,1,1,1,1,4,0,4");
+  expect_round_trip("refine --min-angle 25 --region-polygon 0.1,0.30000000000000004,-2e-05,7,3.5,1e+300");
+  // Clockwise as given: printed clockwise, and the region the same as counterclockwise.
+  const Operation cw = parse_operation("refine --region-polygon=0,0,0,4,4,4,4,0");
+  EXPECT_EQ(print_operation(cw), "refine --region-polygon 0,0,0,4,4,4,4,0");
+  ASSERT_TRUE(cw.region);
+  EXPECT_EQ(cw.region->polygon, (std::vector<Point>{{0, 0}, {0, 4}, {4, 4}, {4, 0}}));
+  const std::optional<RefineRegion> region = region_of(cw);
+  ASSERT_TRUE(region);
+  EXPECT_EQ(region->kind(), RefineRegion::Kind::polygon);
+  EXPECT_EQ(region->text(), "polygon:4,0;4,4;0,4;0,0");
+  // An L: its notch is outside; its border, exactly, inside.
+  const std::optional<RefineRegion> ell = region_of(parse_operation("refine --region-polygon 0,0,4,0,4,1,1,1,1,4,0,4"));
+  ASSERT_TRUE(ell);
+  EXPECT_TRUE(ell->contains({0.5, 3}));
+  EXPECT_TRUE(ell->contains({1, 2.5}));
+  EXPECT_FALSE(ell->contains({2, 2}));
+  EXPECT_FALSE(ell->contains({std::nextafter(1.0, 2.0), 2}));
+}
+
+TEST(RunSpec, AnInlinePolygonThatIsNotSimpleIsRefusedByName) {
+  // A bow tie: edges 1 and 3 cross at (1, 1).
+  EXPECT_EQ(refusal("refine --region-polygon 0,0,2,2,2,0,0,2"),
+            "--region-polygon: a region polygon's edge 1 (0,0 to 2,2) and edge 3 (2,0 to 0,2) touch or cross: "
+            "the polygon is not simple");
+  // A vertex on another edge (touching, not crossing) is refused; 1e-16 above it, it is not:
+  // decided exactly, by orientation, where a tolerance would call both the same.
+  EXPECT_EQ(refusal("refine --region-polygon 0,0,4,0,4,4,2,0.0000000000000001,0,4"), "(accepted)");
+  EXPECT_EQ(refusal("refine --region-polygon 0,0,4,0,4,4,2,0,0,4"),
+            "--region-polygon: a region polygon's edge 1 (0,0 to 4,0) and edge 4 (2,0 to 0,4) touch or cross: "
+            "the polygon is not simple");
+  EXPECT_EQ(refusal("refine --region-polygon 0,0,1,0,2,0"),
+            "--region-polygon: a region polygon's edge 3 (2,0 to 0,0) and edge 1 (0,0 to 1,0) overlap: "
+            "the polygon is not simple");
+  EXPECT_EQ(refusal("refine --region-polygon 0,0,1,0,1,0,0,1"),
+            "--region-polygon: a region polygon's edge 2 (1,0 to 1,0) has length zero");
+  EXPECT_EQ(refusal("refine --region-polygon 0,0,1,0"),
+            "--region-polygon: a region polygon is X0,Y0,X1,Y1,X2,Y2,... (at least 3 vertices), not '0,0,1,0'");
+  EXPECT_EQ(refusal("refine --region-polygon 0,0,1,0,1"),
+            "--region-polygon: a region polygon is X0,Y0,X1,Y1,X2,Y2,... (an odd count of numbers: every vertex is "
+            "two), not '0,0,1,0,1'");
+  EXPECT_EQ(refusal("refine --region-polygon 0,0,1,x,1,1"),
+            "--region-polygon: a region polygon is X0,Y0,X1,Y1,X2,Y2,... (numbers separated by commas, two for "
+            "each vertex), not '0,0,1,x,1,1'");
+  EXPECT_EQ(refusal("refine --region-polygon 0,0,,1,1,1"),
+            "--region-polygon: a region polygon is X0,Y0,X1,Y1,X2,Y2,... (numbers separated by commas, two for "
+            "each vertex), not '0,0,,1,1,1'");
+  EXPECT_EQ(refusal("refine --region-polygon 0,0,1,nan,1,1"),
+            "--region-polygon: a region polygon's coordinates must be finite numbers, not 'nan'");
+  EXPECT_EQ(refusal("refine --region-polygon 0,0,1,0,1,1 --region 0,0,1,1"),
+            "more than one of --region, --region-polygon and --region-poly names a region: give one");
+  EXPECT_EQ(refusal("refine --region-polygon"), "--region-polygon: needs a value");
+  EXPECT_EQ(refusal("triangulate --region-polygon 0,0,1,0,1,1"), "--region-polygon: does not apply to triangulate");
 }
 
 TEST(RunSpec, RefusesWhatTheCommandLineRefuses) {

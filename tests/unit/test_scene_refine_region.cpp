@@ -85,5 +85,33 @@ TEST_F(SceneRefineRegion, ARecipeShowsARegionOnlyWhileItsOperationRuns) {
   EXPECT_EQ(corners(*outline), (std::vector<Point>{{5, 5}, {5, 9}, {9, 5}, {9, 9}}));
 }
 
+// A recipe's polygon written out (--region-polygon, what the viewer's lasso saves): the
+// outline is that polygon, edge by edge, while its operation runs.
+TEST_F(SceneRefineRegion, ARecipesInlinePolygonIsDrawnEdgeByEdge) {
+  const std::string input = write("square.poly", kSquare), log_path = file("lasso.mslog");
+  const std::string recipe = write("lasso.recipe",
+                                   "refine --algorithm lepp-centroid --min-angle 25 --max-area 4\n"
+                                   "refine --max-area 0.2 --region-polygon 2,2,8,3,6,5,7,8,3,7\n");
+  const testing::CommandResult r =
+      meshstep("run " + recipe + " " + input + " -q -o " + file("lasso") + " --record " + log_path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const replay::LogReader log(log_path);
+  const std::vector<replay::OperationSpan> spans = replay::operation_spans(log, log_path);
+  ASSERT_EQ(spans.size(), 2u);
+  ASSERT_LT(spans[1].from_step + 1, spans[1].to_step);
+  EXPECT_EQ(scene_at_step(log, spans[0].to_step - 1).find("refine_region"), nullptr);
+  const Scene during = scene_at_step(log, spans[1].from_step + 1);
+  const scene::Shape* outline = during.find("refine_region");
+  ASSERT_NE(outline, nullptr);
+  EXPECT_TRUE(outline->dashed);
+  // Five edges, counterclockwise as given, each from one vertex to the next (not a box).
+  const std::vector<Point> ring{{2, 2}, {8, 3}, {6, 5}, {7, 8}, {3, 7}};
+  ASSERT_EQ(outline->points.size(), 10u);
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    EXPECT_EQ(outline->points[2 * i], ring[i]) << i;
+    EXPECT_EQ(outline->points[2 * i + 1], ring[(i + 1) % ring.size()]) << i;
+  }
+}
+
 }  // namespace
 }  // namespace meshstep

@@ -6,6 +6,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,10 +16,13 @@
 #include <vector>
 
 #include "meshstep/error.hpp"
+#include "meshstep/io/shortest_text.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/refine/run_spec.hpp"
 #include "meshstep/io/write_pslg.hpp"
 #include "meshstep/scene/image.hpp"
+#include "lasso_path.hpp"
+#include "meshstep/refine/region.hpp"
 #include "program_support.hpp"
 #include "script.hpp"
 #include "workbench.hpp"
@@ -168,7 +173,73 @@ TEST(WorkbenchModel, ScriptsCheckTheEditActionsWords) {
   EXPECT_TRUE(has(refusal("refine-region 0 0 1 1 --min-angle -3\n"), ":1: refine-region: --min-angle")) << refusal("refine-region 0 0 1 1 --min-angle -3\n");
   EXPECT_TRUE(has(refusal("refine-region 1 1 0 0 --max-area 1\n"), ":1: refine-region: "));
   EXPECT_TRUE(has(refusal("recipe sideways 1\n"), ":1: expected: recipe remove|off|on|up|down N"));
+  // A lasso: 3 points at least, the options after "--", the polygon simple.
+  EXPECT_EQ(refusal("refine-lasso 0 0 1 0 1 1 -- --max-area 0.1\nrefine-lasso 0 0 1 0 1 1\n"
+                    "drag-path 5 0 0 5 -5 -5\nwait-until go.txt 30\nwait-input 0.5\n"),
+            "");
+  EXPECT_TRUE(has(refusal("refine-lasso 0 0 1 0 -- --max-area 0.1\n"),
+                  ":1: expected: refine-lasso X0 Y0 X1 Y1 X2 Y2 ... [-- OPTIONS...] (3 points at least)"));
+  EXPECT_TRUE(has(refusal("refine-lasso 0 0 1 0 1\n"), ":1: expected: refine-lasso"));
+  EXPECT_TRUE(has(refusal("refine-lasso 0 0 1 0 1 z\n"), ":1: 'z' is not a number; expected: refine-lasso"));
+  EXPECT_TRUE(has(refusal("refine-lasso 0 0 2 2 2 0 0 2 -- --max-area 1\n"),
+                  ":1: refine-lasso: --region-polygon: a region polygon's edge 1 (0,0 to 2,2) and edge 3 (2,0 to 0,2) "
+                  "touch or cross"));
+  EXPECT_TRUE(has(refusal("refine-lasso 0 0 1 0 1 1 -- --max-area -1\n"), ":1: refine-lasso: --max-area"));
+  EXPECT_TRUE(has(refusal("drag-path 5 0 3\n"), ":1: expected: drag-path DX1 DY1 DX2 DY2 ..."));
+  EXPECT_TRUE(has(refusal("wait-until go.txt\n"), ":1: expected: wait-until FILE SECONDS"));
+  EXPECT_TRUE(has(refusal("wait-input 0\n"), ":1: expected: wait-input SECONDS"));
   fs::remove(file);
+}
+
+// A lasso drawn by hand, made into a few vertices: a circle's 2000 points keep a few dozen,
+// each on the circle (to the rounding), at least a step apart, with every point drawn
+// within a quarter step of the ring; a square's straight sides keep its corners alone; the end near the start is not
+// kept twice (the ring closes by itself).
+TEST(WorkbenchModel, ALassosPathIsSimplifiedBeforeItGoesIntoTheRecipe) {
+  std::vector<Point> circle;
+  for (int i = 0; i < 2000; ++i) {
+    const double t = 2 * M_PI * i / 2000.0;
+    circle.push_back({std::cos(t), std::sin(t)});
+  }
+  const double step = 0.05;
+  const std::vector<Point> ring = simplify_lasso(circle, step);
+  EXPECT_GE(ring.size(), 12u);
+  EXPECT_LE(ring.size(), 60u);
+  EXPECT_EQ(ring.front(), circle.front());
+  // On the circle, but for the rounding to a power of ten at most step / 40 (0.001).
+  for (const Point& p : ring) EXPECT_NEAR(std::hypot(p.x, p.y), 1.0, 0.001);
+  for (const Point& p : ring) EXPECT_EQ(io::shortest_text(p.x).size() <= 6 && io::shortest_text(p.y).size() <= 6, true)
+      << io::shortest_text(p.x) << ", " << io::shortest_text(p.y);
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Point &a = ring[i], &b = ring[(i + 1) % ring.size()];
+    EXPECT_GE(std::hypot(a.x - b.x, a.y - b.y), step) << i;  // the closing chord too
+  }
+  // Each point drawn is within a quarter step of the ring.
+  std::size_t strays = 0;
+  for (const Point& p : circle) {
+    double nearest = 1e300;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Point &a = ring[i], &b = ring[(i + 1) % ring.size()];
+      const double dx = b.x - a.x, dy = b.y - a.y;
+      const double t = std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+      nearest = std::min(nearest, std::hypot(a.x + t * dx - p.x, a.y + t * dy - p.y));
+    }
+    strays += nearest > step / 4 + 0.001;
+  }
+  EXPECT_EQ(strays, 0u);
+  EXPECT_NO_THROW(RefineRegion::polygon(ring));
+
+  std::vector<Point> square;
+  const Point corners[] = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+  for (int side = 0; side < 4; ++side)
+    for (int k = 0; k < 500; ++k) {
+      const Point &a = corners[side], &b = corners[(side + 1) % 4];
+      square.push_back({a.x + (b.x - a.x) * k / 500.0, a.y + (b.y - a.y) * k / 500.0});
+    }
+  square.push_back({0, 0.001});  // the release, back near the press
+  EXPECT_EQ(simplify_lasso(square, 0.01), (std::vector<Point>{{0, 0}, {2, 0}, {2, 1}, {0, 1}}));
+  // A scribble that never leaves one place: too few points to close.
+  EXPECT_LT(simplify_lasso({{0, 0}, {0.001, 0}, {0, 0.001}, {0.002, 0.001}}, 0.01).size(), 3u);
 }
 
 class WorkbenchProgram : public ::testing::TestWithParam<std::string> {
@@ -340,6 +411,102 @@ TEST_P(WorkbenchProgram, ARegionRefinedFromAScriptIsReproducedBySavedRecipeAndIn
   }
 }
 
+// The triangles of a mesh as their corners' coordinates, each sorted: the same triangle in
+// two meshes whatever their numbering.
+std::vector<std::array<Point, 3>> triangles_of(const TriMesh& m) {
+  std::vector<std::array<Point, 3>> out;
+  for (const auto& t : m.triangles) {
+    std::array<Point, 3> c{m.points[t[0]], m.points[t[1]], m.points[t[2]]};
+    std::sort(c.begin(), c.end(), lex_less);
+    out.push_back(c);
+  }
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
+    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), lex_less);
+  });
+  return out;
+}
+
+// A lasso refined from a script (issue 27 item 3, `refine-lasso`): the operation, its polygon
+// written out, goes to the end of the recipe and runs at once; the saved recipe (one file)
+// and input give the window's mesh through `meshstep run`; inside the lasso every triangle
+// meets the bound, and far from it the mesh of the recipe's first operation is untouched.
+TEST_P(WorkbenchProgram, ALassoRefinedFromAScriptChangesOnlyItsInsideAndIsReproduced) {
+  const std::string input = path("plate.poly");
+  fs::copy_file(MESHSTEP_ASSETS "/examples/plate.poly", input);
+  const std::string saved = path("saved.poly"), recipe = path("saved.recipe");
+  VIEW_OR_SKIP(r, "key E\nframes 2\nstate " + path("plain.json") +
+                      "\nrefine-lasso 0.6 0.4 3.6 0.5 3.9 1.4 2.2 1.7 0.8 1.5 -- --max-area 0.01\nstate " +
+                      path("lassoed.json") + "\nsave " + saved + "\nsave-recipe " + recipe + "\nseek end\ncanvas " +
+                      path("lasso.svg") + "\nscreenshot " + path("lasso.png") + "\nquit\n",
+               input, "--min-angle 25 --max-area 0.2");
+  const std::string plain = read_text(path("plain.json")), lassoed = read_text(path("lassoed.json"));
+  EXPECT_TRUE(has(plain, "\"recipe\": [\"refine --min-angle 25 --max-area 0.2\"]")) << plain;
+  EXPECT_TRUE(has(lassoed, "\"recipe\": [\"refine --min-angle 25 --max-area 0.2\", \"refine --max-area 0.01 "
+                           "--region-polygon 0.6,0.4,3.6,0.5,3.9,1.4,2.2,1.7,0.8,1.5\"]"))
+      << lassoed;
+  EXPECT_TRUE(has(read_text(recipe), "\nrefine --max-area 0.01 --region-polygon 0.6,0.4,3.6,0.5,3.9,1.4,2.2,1.7,0.8,1.5\n"))
+      << read_text(recipe);
+  // The recipe alone, and its first line alone, through `meshstep run`: the window's meshes.
+  const std::string first = path("first.recipe");
+  std::ofstream(first) << "refine --min-angle 25 --max-area 0.2\n";
+  const Result a = run(std::string(MESHSTEP_BINARY) + " run " + first + " " + saved + " -o " + path("a") + " -q");
+  ASSERT_EQ(a.status, 0) << a.output;
+  const Result b = run(std::string(MESHSTEP_BINARY) + " run " + recipe + " " + saved + " -o " + path("b") + " -q");
+  ASSERT_EQ(b.status, 0) << b.output << read_text(recipe);
+  const TriMesh before = io::read_mesh(path("a")), after = io::read_mesh(path("b"));
+  EXPECT_EQ(static_cast<long long>(before.triangles.size()), field(plain, "mesh_triangles")) << plain;
+  EXPECT_EQ(static_cast<long long>(after.triangles.size()), field(lassoed, "mesh_triangles")) << lassoed;
+
+  const RefineRegion lasso = RefineRegion::polygon({{0.6, 0.4}, {3.6, 0.5}, {3.9, 1.4}, {2.2, 1.7}, {0.8, 1.5}});
+  const auto centroid = [](const std::array<Point, 3>& t) {
+    return Point{(t[0].x + t[1].x + t[2].x) / 3, (t[0].y + t[1].y + t[2].y) / 3};
+  };
+  const auto area = [](const std::array<Point, 3>& t) {
+    return 0.5 * std::abs((t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[1].y - t[0].y) * (t[2].x - t[0].x));
+  };
+  const std::vector<std::array<Point, 3>> old_triangles = triangles_of(before), new_triangles = triangles_of(after);
+  std::size_t inside_before = 0, inside_after = 0;
+  for (const auto& t : old_triangles) inside_before += lasso.contains(centroid(t));
+  for (const auto& t : new_triangles) {
+    if (!lasso.contains(centroid(t))) continue;
+    ++inside_after;
+    EXPECT_LE(area(t), 0.01 * (1 + 1e-12));
+  }
+  EXPECT_GT(inside_after, inside_before + 100);
+  // Far from the lasso (three of the first mesh's longest edges from its bounding box), no
+  // triangle changed: a new point's cavity reaches no farther than its circumcircles.
+  double longest = 0;
+  for (const auto& t : old_triangles)
+    for (int i = 0; i < 3; ++i) longest = std::max(longest, std::hypot(t[i].x - t[(i + 1) % 3].x, t[i].y - t[(i + 1) % 3].y));
+  const double margin = 3 * longest;
+  std::size_t far = 0, kept = 0;
+  for (const auto& t : old_triangles) {
+    bool is_far = true;
+    for (const Point& p : t)
+      is_far = is_far && (p.x < lasso.low().x - margin || p.x > lasso.high().x + margin ||
+                          p.y < lasso.low().y - margin || p.y > lasso.high().y + margin);
+    if (!is_far) continue;
+    ++far;
+    kept += std::binary_search(new_triangles.begin(), new_triangles.end(), t, [](const auto& x, const auto& y) {
+      return std::lexicographical_compare(x.begin(), x.end(), y.begin(), y.end(), lex_less);
+    });
+  }
+  EXPECT_GT(far, 100u) << "margin " << margin;
+  EXPECT_EQ(kept, far);
+  // The canvas draws the lasso's outline, dashed: five edges, each a path of its own (a box
+  // would be four).
+  const std::string svg = read_text(path("lasso.svg"));
+  const auto group = svg.find("class=\"refine_region\"");
+  ASSERT_NE(group, std::string::npos) << svg.substr(0, 1000);
+  const std::string outline = svg.substr(group, svg.find("</g>", group) - group);
+  EXPECT_TRUE(has(outline, "stroke-dasharray")) << outline;
+  const auto d = outline.find(" d=\"");
+  ASSERT_NE(d, std::string::npos) << outline;
+  const std::string moves = outline.substr(d + 4, outline.find('"', d + 4) - d - 4);
+  EXPECT_EQ(std::count(moves.begin(), moves.end(), 'M') + std::count(moves.begin(), moves.end(), 'm'), 5)
+      << outline;  // (each edge a move of its own: "m59.76 424.96 178.8-5.96m0 0 ...")
+}
+
 // The canvas through the pointer and the keys: three clicks with the segment tool and a
 // fourth on the first vertex close a triangle; Ctrl+Z takes the last segment back, Ctrl+Y
 // gives it again; a drag moves a vertex (one edit).
@@ -386,8 +553,8 @@ TEST_P(WorkbenchProgram, TheMouseRefinesABoxWithTheFormsOperation) {
   fs::copy_file(MESHSTEP_ASSETS "/examples/plate.poly", input);
   const std::string saved = path("saved.poly"), recipe = path("saved.recipe");
   VIEW_OR_SKIP(r, "key E\nframes 2\nstate " + path("plain.json") +
-                      "\nmouse 663 163\nclick\nmouse 40 300\ndrag 200 140\nframes 2\nmouse 710 346\nclick\n"
-                      "type 0.05\nmouse 706 397\nclick\nframes 2\nstate " + path("refined.json") + "\nsave " + saved +
+                      "\nmouse 663 163\nclick\nmouse 40 300\ndrag 200 140\nframes 2\nmouse 710 373\nclick\n"
+                      "type 0.05\nmouse 706 424\nclick\nframes 2\nstate " + path("refined.json") + "\nsave " + saved +
                       "\nsave-recipe " + recipe + "\nscreenshot " + path("box.png") + "\nquit\n",
                input);
   const std::string plain = read_text(path("plain.json")), refined = read_text(path("refined.json"));
@@ -401,6 +568,89 @@ TEST_P(WorkbenchProgram, TheMouseRefinesABoxWithTheFormsOperation) {
       << read_text(recipe);
 }
 
+// The number after "KEY": inside the object that follows "OBJECT": (9 significant digits).
+double number_in(const std::string& json, const std::string& object, const std::string& key) {
+  const auto at = json.find("\"" + object + "\": {");
+  if (at == std::string::npos) return NAN;
+  const auto k = json.find("\"" + key + "\": ", at);
+  return k == std::string::npos ? NAN : std::atof(json.c_str() + k + key.size() + 4);
+}
+
+// A lasso drawn through the pointer (Shift+B, press, drag round, release): a figure eight is
+// refused in the core's words and nothing changes; an ellipse of 72 short moves becomes a
+// polygon of a few vertices, each on the path drawn, the first where the button went down;
+// "Refine the lasso" puts exactly those vertices into the recipe, and the saved recipe and
+// input give the window's mesh through `meshstep run`.
+TEST_P(WorkbenchProgram, TheMouseDrawsALassoThatIsSimplifiedAndRefined) {
+  const std::string input = path("plate.poly");
+  fs::copy_file(MESHSTEP_ASSETS "/examples/plate.poly", input);
+  // An ellipse round (190, 390) of radii 80 and 45 pixels (the plate's lower left, where
+  // the triangulation's triangles are skinny), from its right end, anticlockwise on the
+  // screen.
+  std::string ellipse = "drag-path";
+  double px = 270, py = 390;
+  for (int i = 1; i <= 72; ++i) {
+    const double t = 2 * M_PI * i / 72, x = 190 + 80 * std::cos(t), y = 390 - 45 * std::sin(t);
+    char move[64];
+    std::snprintf(move, sizeof move, " %.3f %.3f", x - px, y - py);
+    ellipse += move;
+    px = x;
+    py = y;
+  }
+  VIEW_OR_SKIP(r, "key E\nframes 2\nkey Shift+B\nframes 2\nmouse 100 200\ndrag-path 60 60 0 -60 -60 60\nframes 2\n"
+                  "state " + path("eight.json") + "\nmouse 270 390\n" + ellipse + "\nframes 2\nstate " +
+                  path("drawn.json") + "\nscreenshot " + path("lasso.png") + "\nmouse 711 424\nclick\nframes 2\nstate " +
+                  path("refined.json") + "\nsave " + path("saved.poly") + "\nsave-recipe " + path("saved.recipe") +
+                  "\nquit\n",
+               input);
+  const std::string eight = read_text(path("eight.json")), drawn = read_text(path("drawn.json"));
+  const std::string refined = read_text(path("refined.json"));
+  EXPECT_TRUE(has(eight, "\"edit_tool\": \"box lasso\"")) << eight;
+  EXPECT_TRUE(has(eight, "\"edit_message\": \"lasso: a region polygon's edge 1 and edge 3 touch or cross: the polygon "
+                         "is not simple; draw it again without crossing its own path\"")) << eight;
+  EXPECT_TRUE(has(eight, "\"drawn_region\": null")) << eight;
+  EXPECT_TRUE(has(eight, "\"recipe\": []")) << eight;
+
+  // The lasso's vertices, as drawn_region gives them (exact).
+  const auto at = drawn.find("\"drawn_region\": {\"lasso\": [");
+  ASSERT_NE(at, std::string::npos) << drawn;
+  std::vector<Point> ring;
+  for (std::size_t i = drawn.find('[', at + 20) + 1; drawn[i] == '['; i = drawn.find('[', i + 1)) {
+    Point p;
+    ASSERT_EQ(std::sscanf(drawn.c_str() + i, "[%lf, %lf]", &p.x, &p.y), 2);
+    ring.push_back(p);
+    i = drawn.find(']', i);
+    if (drawn[i + 1] == ']') break;
+  }
+  EXPECT_GE(ring.size(), 8u) << drawn;
+  EXPECT_LE(ring.size(), 40u) << drawn;  // of the 73 points drawn
+  // On the screen, through the camera: each vertex on the ellipse (within a pixel and a
+  // half: the moves are rounded to pixels), the first at the press.
+  const double cx = number_in(drawn, "camera", "x"), cy = number_in(drawn, "camera", "y");
+  const double scale = number_in(drawn, "camera", "pixels_per_unit");
+  const double left = number_in(drawn, "canvas_rect", "x"), top = number_in(drawn, "canvas_rect", "y");
+  const double width = number_in(drawn, "canvas_rect", "width"), height = number_in(drawn, "canvas_rect", "height");
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const double sx = left + 0.5 * width + (ring[i].x - cx) * scale, sy = top + 0.5 * height - (ring[i].y - cy) * scale;
+    const double radial = std::hypot((sx - 190) / 80, (sy - 390) / 45);
+    EXPECT_NEAR(radial, 1.0, 1.5 / 45) << "vertex " << i << " at " << sx << ", " << sy;
+    if (i == 0) {  // (rounded to a tenth of a pixel at most)
+      EXPECT_NEAR(sx, 270, 0.1);
+      EXPECT_NEAR(sy, 390, 0.1);
+    }
+  }
+  // The recipe's polygon is the lasso's vertices, written out.
+  std::string polygon;
+  for (const Point& p : ring) polygon += (polygon.empty() ? "" : ",") + io::shortest_text(p.x) + "," + io::shortest_text(p.y);
+  EXPECT_TRUE(has(refined, "\"recipe\": [\"refine --algorithm circumcenter --region-polygon " + polygon + "\"]"))
+      << refined << "\n" << polygon;
+  EXPECT_GT(field(refined, "mesh_triangles"), field(drawn, "mesh_triangles")) << refined;
+  const Result m = run(std::string(MESHSTEP_BINARY) + " run " + path("saved.recipe") + " " + path("saved.poly") +
+                       " -o " + path("reproduced") + " -q");
+  ASSERT_EQ(m.status, 0) << m.output << read_text(path("saved.recipe"));
+  EXPECT_EQ(static_cast<long long>(io::read_mesh(path("reproduced")).triangles.size()), field(refined, "mesh_triangles"));
+}
+
 // In edit mode, with the input drawn over the mesh and a notice beside it, an idle frame
 // still allocates nothing.
 TEST_P(WorkbenchProgram, IdleFramesInEditModeDoNotAllocate) {
@@ -410,8 +660,12 @@ TEST_P(WorkbenchProgram, IdleFramesInEditModeDoNotAllocate) {
   // checks the count.
   if (!MESHSTEP_VIEW_COUNTS_NEW) GTEST_SKIP() << "allocations are counted in the Release build";
   const fs::path frames = dir_ / "frames.txt";
-  VIEW_OR_SKIP(r, std::string("new\n") + kRectangleWithHole + "edit region 0.5 0.5 2 0.1\nedit hole 9 9\nframes 24\nquit\n", "",
-               "--frame-log " + frames.string());
+  // A lasso drawn too (Shift+B, a drag round the rectangle's middle): it stays on the canvas.
+  VIEW_OR_SKIP(r, std::string("new\n") + kRectangleWithHole +
+                      "edit region 0.5 0.5 2 0.1\nedit hole 9 9\nkey Shift+B\nmouse 200 200\n"
+                      "drag-path 80 0 40 60 -60 60 -60 -60\nframes 24\nstate " + path("idle.json") + "\nquit\n",
+               "", "--frame-log " + frames.string());
+  EXPECT_TRUE(has(read_text(path("idle.json")), "\"drawn_region\": {\"lasso\": [[")) << read_text(path("idle.json"));
   const std::vector<unsigned long long> allocations = frame_allocations(frames);
   ASSERT_GE(allocations.size(), 24u);
   for (std::size_t i = allocations.size() - 20; i < allocations.size(); ++i)

@@ -126,6 +126,37 @@ RefineRegion RefineRegion::parse_box(std::string_view text) {
   return box({values[0], values[1]}, {values[2], values[3]});
 }
 
+std::vector<Point> RefineRegion::parse_polygon(std::string_view text) {
+  const std::string whole(text);
+  const auto malformed = [&](const std::string& why) {
+    return InputError("a region polygon is X0,Y0,X1,Y1,X2,Y2,... (" + why + "), not '" + whole + "'");
+  };
+  std::vector<double> values;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    const std::string part = trimmed(text.substr(start, comma == std::string_view::npos ? text.npos : comma - start));
+    char* end = nullptr;
+    const double v = part.empty() ? 0.0 : std::strtod(part.c_str(), &end);
+    if (part.empty() || end != part.c_str() + part.size())
+      throw malformed("numbers separated by commas, two for each vertex");
+    if (!std::isfinite(v)) throw InputError("a region polygon's coordinates must be finite numbers, not '" + part + "'");
+    values.push_back(v);
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  if (values.size() % 2 != 0) throw malformed("an odd count of numbers: every vertex is two");
+  if (values.size() < 6) throw malformed("at least 3 vertices");
+  std::vector<Point> vertices(values.size() / 2);
+  for (std::size_t i = 0; i < vertices.size(); ++i) vertices[i] = {values[2 * i], values[2 * i + 1]};
+  // The edges named by their ends as given: a person finds "edge 2 (1,0 to 0,1)" in the text.
+  check_simple(vertices, [&](std::size_t i) {
+    const Point &a = vertices[i], &b = vertices[(i + 1) % vertices.size()];
+    return "edge " + std::to_string(i + 1) + " (" + shortest(a.x) + "," + shortest(a.y) + " to " + shortest(b.x) +
+           "," + shortest(b.y) + ")";
+  });
+  return vertices;
+}
+
 RefineRegion RefineRegion::polygon(std::vector<Point> vertices) {
   check_simple(vertices, [](std::size_t i) { return "edge " + std::to_string(i + 1); });
   RefineRegion r;

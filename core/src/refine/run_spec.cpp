@@ -164,26 +164,30 @@ const ParameterInfo* find_by_word(std::string_view word) {
   return nullptr;
 }
 
-// --region and --region-poly: not registry parameters (a region is no bound of an
-// algorithm), but options of every refine operation all the same.
-bool is_region_option(std::string_view name) { return name == "region" || name == "region-poly"; }
+// --region, --region-polygon and --region-poly: not registry parameters (a region is no
+// bound of an algorithm), but options of every refine operation all the same.
+bool is_region_option(std::string_view name) {
+  return name == "region" || name == "region-polygon" || name == "region-poly";
+}
 
 void set_region(Operation& op, std::string_view name, std::string_view text) {
   if (op.kind != OperationKind::refine) refuse(name, "does not apply to triangulate");
   if (text.empty()) refuse(name, "needs a value");
   RegionSpec region = op.region.value_or(RegionSpec{});
-  if (name == "region") {
-    try {
+  try {
+    if (name == "region") {
       const RefineRegion box = RefineRegion::parse_box(text);
       region.box = std::pair{box.low(), box.high()};
-    } catch (const InputError& e) {
-      refuse(name, e.message());
+    } else if (name == "region-polygon") {
+      region.polygon = RefineRegion::parse_polygon(text);
+    } else {
+      region.polygon_file = std::string(text);
     }
-  } else {
-    region.polygon_file = std::string(text);
+  } catch (const InputError& e) {
+    refuse(name, e.message());
   }
-  if (region.box && !region.polygon_file.empty())
-    throw RunSpecError("--region and --region-poly both name a region: give one");
+  if (int(region.box.has_value()) + int(!region.polygon.empty()) + int(!region.polygon_file.empty()) > 1)
+    throw RunSpecError("more than one of --region, --region-polygon and --region-poly names a region: give one");
   op.region = region;
 }
 
@@ -192,6 +196,12 @@ std::string region_words(const RegionSpec& region) {
     const auto& [low, high] = *region.box;
     return " --region " + io::shortest_text(low.x) + "," + io::shortest_text(low.y) + "," +
            io::shortest_text(high.x) + "," + io::shortest_text(high.y);
+  }
+  if (!region.polygon.empty()) {
+    std::string words = " --region-polygon ";
+    for (std::size_t i = 0; i < region.polygon.size(); ++i)
+      words += (i ? "," : "") + io::shortest_text(region.polygon[i].x) + "," + io::shortest_text(region.polygon[i].y);
+    return words;
   }
   return region.polygon_file.empty() ? "" : " --region-poly " + region.polygon_file;
 }
@@ -361,6 +371,13 @@ std::string insertion_name(const RefineOptions& options) {
 std::optional<RefineRegion> region_of(const Operation& op) {
   if (!op.region) return std::nullopt;
   if (op.region->box) return RefineRegion::box(op.region->box->first, op.region->box->second);
+  if (!op.region->polygon.empty()) {
+    try {
+      return RefineRegion::polygon(op.region->polygon);
+    } catch (const InputError& e) {  // (parse_operation checked it; a description built by hand may not be)
+      throw InputError("--region-polygon: " + e.message());
+    }
+  }
   if (op.region->polygon_file.empty()) return std::nullopt;
   const std::string& file = op.region->polygon_file;
   const Pslg pslg = io::read_pslg(file);

@@ -30,6 +30,11 @@ class RefineRegion {
   // first). Throws InputError for fewer than 3 vertices, a coordinate that is not finite,
   // two edges that touch or cross other than neighbours at their shared end, or no area.
   static RefineRegion polygon(std::vector<Point> vertices);
+  // The vertices of "X0,Y0,X1,Y1,X2,Y2,..." (the --region-polygon option's text), in the
+  // order given, checked as polygon() checks them, each edge named with its ends ("edge 2
+  // (1,0 to 0,1)"). Throws InputError for those errors and for text that is not an even
+  // count, at least 6, of comma-separated numbers.
+  static std::vector<Point> parse_polygon(std::string_view text);
   // The polygon a PSLG's segments make: they must form one closed simple polygon, every
   // vertex they use on exactly two of them. Throws InputError naming the first segment or
   // vertex (in the PSLG's own numbering, first_index) that breaks the rule.

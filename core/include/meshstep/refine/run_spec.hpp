@@ -23,10 +23,13 @@
 namespace meshstep {
 
 // Where an operation applies, as the command line names it: --region X0,Y0,X1,Y1 (a box,
-// checked when parsed) or --region-poly FILE.poly (a polygon, read by region_of()).
+// checked when parsed), --region-polygon X0,Y0,X1,Y1,X2,Y2,... (a polygon written out, so
+// that a recipe stays one file; checked simple when parsed) or --region-poly FILE.poly (a
+// polygon, read by region_of()). One of the three.
 struct RegionSpec {
   std::optional<std::pair<Point, Point>> box;  // its two corners, low then high
   std::string polygon_file;
+  std::vector<Point> polygon;  // --region-polygon's vertices, in the order given
   bool operator==(const RegionSpec&) const = default;
 };
 
@@ -114,8 +117,8 @@ std::string insertion_name(const RefineOptions& options);
 // triangulation's, so that this count says where each operation begins and ends.
 std::size_t recorded_phases(const Operation& op);
 
-// The region an operation names, or none: the box as parsed, or the polygon its --region-poly
-// file's segments make. Throws InputError ("FILE: a region polygon's segment 1 and ...") for
+// The region an operation names, or none: the box or the polygon as parsed, or the polygon
+// its --region-poly file's segments make. Throws InputError ("FILE: a region polygon's segment 1 and ...") for
 // a file that cannot be read or makes no simple polygon.
 std::optional<RefineRegion> region_of(const Operation& op);
 
