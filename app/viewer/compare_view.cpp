@@ -104,7 +104,7 @@ CompareView::CompareView(Viewer& viewer, SideBySide runs, const std::string& bac
     // The pictures come from the workers: no scene is built on this thread.
     p.session->defer_pictures(true);
     p.worker = std::make_unique<CanvasWorker>(log.path(), backend, CanvasWorker::Follow::fixed_log, kApproximateFrom,
-                                              keep_writes_bytes(panes_.size()));
+                                              keep_writes_bytes(panes_.size()), CanvasWorker::Priority::below_ui);
   }
   start_next_plots();
 }
