@@ -17,14 +17,13 @@ constexpr int kPreviewNice = 5;
 }  // namespace
 
 CanvasWorker::CanvasWorker(std::string log_path, std::string backend, Follow follow, std::size_t approximate_from,
-                           std::uint64_t keep_writes_bytes, Priority priority, std::shared_ptr<DrawingTurns> turns)
+                           std::uint64_t keep_writes_bytes, Priority priority)
     : log_path_(std::move(log_path)),
       backend_(std::move(backend)),
       follow_(follow),
       approximate_from_(approximate_from),
       keep_writes_bytes_(keep_writes_bytes),
       priority_(follow == Follow::growing_log ? Priority::below_ui : priority),
-      turns_(std::move(turns)),
       thread_([this] { run(); }) {}
 
 CanvasWorker::~CanvasWorker() {
@@ -175,19 +174,7 @@ void CanvasWorker::run() {
       // A request already drawn approximately is drawn exactly now; a new one may be
       // approximate (a live run's preview stays exact: it is drawn a few times a second).
       const bool may_approximate = number != drawn_approximately && follow_ == Follow::fixed_log;
-      if (drawn) {
-        // Given back however the drawing ends (an exception stops this worker, not the others).
-        struct Turn {
-          DrawingTurns* turns;
-          explicit Turn(DrawingTurns* t) : turns(t) {
-            if (turns) turns->take();
-          }
-          ~Turn() {
-            if (turns) turns->give_back();
-          }
-        } turn(turns_.get());
-        draw(wanted, *session, *view, *renderer, may_approximate, out);
-      }
+      if (drawn) draw(wanted, *session, *view, *renderer, may_approximate, out);
     } catch (const std::exception& e) {
       fail("the canvas could not be drawn: ", e);
       break;

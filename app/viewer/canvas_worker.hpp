@@ -16,7 +16,6 @@
 
 #include <condition_variable>
 #include <cstdint>
-#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -81,31 +80,6 @@ struct CanvasPicture {
 inline constexpr std::size_t kApproximateFrom = 100000;
 inline constexpr const char* kApproximateNote = "approximate while scrubbing";
 
-// Turns at drawing, shared by several workers (runs side by side): one draws at a time, in
-// the order they asked. On two cores four workers drawing at once left the window's thread
-// and its rasterizer one runnable thread in eight; in turns, one in four, and each run's
-// picture still comes round.
-class DrawingTurns {
- public:
-  void take() {
-    std::unique_lock lock(mutex_);
-    const std::uint64_t mine = next_++;
-    turn_.wait(lock, [&] { return serving_ == mine; });
-  }
-  void give_back() {
-    {
-      const std::lock_guard lock(mutex_);
-      ++serving_;
-    }
-    turn_.notify_all();
-  }
-
- private:
-  std::mutex mutex_;
-  std::condition_variable turn_;
-  std::uint64_t next_ = 0, serving_ = 0;
-};
-
 class CanvasWorker {
  public:
   // fixed_log: the log is opened once. growing_log: a log still being written (a live
@@ -128,7 +102,7 @@ class CanvasWorker {
   CanvasWorker(std::string log_path, std::string backend, Follow follow = Follow::fixed_log,
                std::size_t approximate_from = kApproximateFrom,
                std::uint64_t keep_writes_bytes = replay::LogReader::kKeepWritesBytes,
-               Priority priority = Priority::normal, std::shared_ptr<DrawingTurns> turns = nullptr);
+               Priority priority = Priority::normal);
   ~CanvasWorker();
   CanvasWorker(const CanvasWorker&) = delete;
   CanvasWorker& operator=(const CanvasWorker&) = delete;
@@ -158,7 +132,6 @@ class CanvasWorker {
   const std::size_t approximate_from_;
   const std::uint64_t keep_writes_bytes_;
   const Priority priority_;
-  const std::shared_ptr<DrawingTurns> turns_;  // null: draws whenever asked
   mutable std::mutex mutex_;
   std::condition_variable wake_, drawn_;
   CanvasRequest wanted_;

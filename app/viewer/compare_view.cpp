@@ -93,7 +93,6 @@ SideBySide open_side_by_side(const std::vector<std::string>& paths) {
 
 CompareView::CompareView(Viewer& viewer, SideBySide runs, const std::string& backend)
     : viewer_(viewer), panes_(runs.runs.size()), leader_(runs.leader_index) {
-  const auto turns = std::make_shared<DrawingTurns>();  // the workers draw one at a time
   for (std::size_t i = 0; i < panes_.size(); ++i) {
     Pane& p = panes_[i];
     p.own = std::move(runs.runs[i]);
@@ -105,7 +104,7 @@ CompareView::CompareView(Viewer& viewer, SideBySide runs, const std::string& bac
     // The pictures come from the workers: no scene is built on this thread.
     p.session->defer_pictures(true);
     p.worker = std::make_unique<CanvasWorker>(log.path(), backend, CanvasWorker::Follow::fixed_log, kApproximateFrom,
-                                              keep_writes_bytes(panes_.size()), CanvasWorker::Priority::below_ui, turns);
+                                              keep_writes_bytes(panes_.size()), CanvasWorker::Priority::below_ui);
   }
   start_next_plots();
 }
