@@ -50,7 +50,12 @@ void add_caption(const scene::Scene& s, const scene::Layout& layout, FontCache& 
   if (!layout.caption_band || s.caption.empty()) return;
   batch.begin(scene::Layer::caption, fonts.at(f(layout.caption.size_px)));
   rectangle(batch, *layout.caption_band, panel_color(s, 200));
-  text_at(batch, fonts, layout.caption, s.caption, text_color(s), scene::Layer::caption);
+  if (layout.caption_lines.empty()) {
+    text_at(batch, fonts, layout.caption, s.caption, text_color(s), scene::Layer::caption);
+    return;
+  }
+  for (std::size_t i = 0; i < layout.caption_lines.size(); ++i)
+    text_at(batch, fonts, layout.caption_spots[i], layout.caption_lines[i], text_color(s), scene::Layer::caption);
 }
 
 void add_narration(const scene::Scene& s, const scene::Layout& layout, FontCache& fonts, UiBatch& batch) {

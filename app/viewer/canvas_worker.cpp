@@ -17,12 +17,13 @@ constexpr int kPreviewNice = 5;
 }  // namespace
 
 CanvasWorker::CanvasWorker(std::string log_path, std::string backend, Follow follow, std::size_t approximate_from,
-                           std::uint64_t keep_writes_bytes)
+                           std::uint64_t keep_writes_bytes, Priority priority)
     : log_path_(std::move(log_path)),
       backend_(std::move(backend)),
       follow_(follow),
       approximate_from_(approximate_from),
       keep_writes_bytes_(keep_writes_bytes),
+      priority_(follow == Follow::growing_log ? Priority::below_ui : priority),
       thread_([this] { run(); }) {}
 
 CanvasWorker::~CanvasWorker() {
@@ -114,12 +115,14 @@ void CanvasWorker::draw(const CanvasRequest& wanted, Session& session, View3d& v
 }
 
 void CanvasWorker::run() {
-  // A live run's preview goes below the UI thread: the machine is busy with the run beside
-  // it (on two cores: the run, this thread and its log reader's helper), and the window's
-  // frames come first. Linux gives each thread its own nice value, inherited by the threads
-  // it starts; failing to lower it only costs responsiveness. Scrubbing a log keeps the
-  // normal priority: there the pictures are what the user waits for.
-  if (follow_ == Follow::growing_log) (void)setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kPreviewNice);
+  // Below the UI thread (Priority): a live run's preview, where the machine is busy with the
+  // run beside it (on two cores: the run, this thread and its log reader's helper), and runs
+  // side by side, where four workers would otherwise outweigh the window's thread and its
+  // rasterizer's. Linux gives each thread its own nice value, inherited by the threads it
+  // starts (set before the GL context, whose rasterizer thread may start here); failing to
+  // lower it only costs responsiveness. A single run scrubbed keeps the normal priority:
+  // there the pictures are what the user waits for.
+  if (priority_ == Priority::below_ui) (void)setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kPreviewNice);
   std::unique_ptr<render::GlContext> context;
   std::unique_ptr<render::Renderer> renderer;
   std::unique_ptr<Session> session;

@@ -86,15 +86,23 @@ class CanvasWorker {
   // run's LOG.partial), opened again for every picture as the prefix written so far; while
   // it cannot be read yet, no picture is made (and no error reported).
   enum class Follow { fixed_log, growing_log };
+  // Whose CPU comes first on a small machine. `normal`: the canvas's pictures are what the
+  // user waits for (a single run scrubbed). `below_ui`: the window's frames come first: a
+  // live run's preview (the run beside it needs the cores), runs side by side (four workers
+  // at the UI's priority took 5/8 of two cores from the window, which then drew 19 frames
+  // a second while scrubbing).
+  enum class Priority { normal, below_ui };
 
   // Starts the thread; it opens LOG_PATH and an off-screen context of `backend` ("egl" or
   // "osmesa": the GL library the UI's context uses, whose functions are loaded already).
   // `approximate_from`: the meshes that get an approximate picture first, by their triangles.
   // `keep_writes_bytes`: the biggest log whose writes the worker's reader keeps decoded
-  // (LogReader; runs side by side share one budget).
+  // (LogReader; runs side by side share one budget). A growing log's worker is always
+  // below the UI.
   CanvasWorker(std::string log_path, std::string backend, Follow follow = Follow::fixed_log,
                std::size_t approximate_from = kApproximateFrom,
-               std::uint64_t keep_writes_bytes = replay::LogReader::kKeepWritesBytes);
+               std::uint64_t keep_writes_bytes = replay::LogReader::kKeepWritesBytes,
+               Priority priority = Priority::normal);
   ~CanvasWorker();
   CanvasWorker(const CanvasWorker&) = delete;
   CanvasWorker& operator=(const CanvasWorker&) = delete;
@@ -123,6 +131,7 @@ class CanvasWorker {
   const Follow follow_;
   const std::size_t approximate_from_;
   const std::uint64_t keep_writes_bytes_;
+  const Priority priority_;
   mutable std::mutex mutex_;
   std::condition_variable wake_, drawn_;
   CanvasRequest wanted_;

@@ -20,6 +20,16 @@ const RunPlots& plots_of(const CompareView::Pane& p, const Viewer& viewer, bool 
   return leader ? viewer.plots() : p.plots;
 }
 
+// The run's name left of its histogram or plot, which takes the rest of `width`: written
+// over the plot (ImGui's overlay) it covered the tallest bars. Returns the plot's width.
+float run_label(std::size_t i, float width) {
+  const float label_w = ImGui::CalcTextSize("run 4").x + ImGui::GetStyle().ItemSpacing.x;
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextColored(heading_color(), "run %zu", i + 1);
+  ImGui::SameLine(ImGui::GetCursorStartPos().x + label_w);
+  return std::max(8.0f, width - label_w);
+}
+
 }  // namespace
 
 void CompareView::draw_panel(float width) {
@@ -95,11 +105,10 @@ void CompareView::draw_panel(float width) {
     for (const float v : p.stats.histogram) most = std::max(most, v);
   ImGui::TextDisabled("smallest angle per triangle, 0-60\u00B0 (one scale)");
   for (std::size_t i = 0; i < panes_.size(); ++i) {
-    char label[32];
-    std::snprintf(label, sizeof label, "run %zu", i + 1);
+    const float plot_w = run_label(i, width);
     ImGui::PushID(static_cast<int>(i));
     ImGui::PlotHistogram("##hist", panes_[i].stats.histogram.data(), static_cast<int>(panes_[i].stats.histogram.size()),
-                         0, label, 0.0f, most, ImVec2(width, 36.0f));
+                         0, nullptr, 0.0f, most, ImVec2(plot_w, 36.0f));
     ImGui::PopID();
   }
 
@@ -137,11 +146,10 @@ void CompareView::draw_panel(float width) {
       const RunPlots& plots = plots_of(panes_[i], viewer_, i == leader_);
       const std::vector<float>& v = k == 0 ? plots.triangles() : plots.smallest_angle();
       if (v.empty()) continue;
-      const float w = std::max(8.0f, width * static_cast<float>(v.size() - 1) / static_cast<float>(longest));
-      char label[32];
-      std::snprintf(label, sizeof label, "run %zu", i + 1);
+      const float plot_w = run_label(i, width);
+      const float w = std::max(8.0f, plot_w * static_cast<float>(v.size() - 1) / static_cast<float>(longest));
       ImGui::PushID(static_cast<int>(10 * k + static_cast<int>(i)));
-      ImGui::PlotLines("##run", v.data(), static_cast<int>(v.size()), 0, label, std::min(lo, 0.0f), hi, ImVec2(w, 30.0f));
+      ImGui::PlotLines("##run", v.data(), static_cast<int>(v.size()), 0, nullptr, std::min(lo, 0.0f), hi, ImVec2(w, 30.0f));
       ImGui::PopID();
       const std::size_t at = std::min<std::size_t>(panes_[i].session->cursor_info().completed, v.size() - 1);
       const ImVec2 min = ImGui::GetItemRectMin();

@@ -29,6 +29,43 @@ BBox log_box(const replay::LogReader& log) {
   return box;
 }
 
+// A few values in order (std::sort on these small arrays trips GCC 12's -Warray-bounds).
+template <class T, std::size_t N>
+void sort_first(std::array<T, N>& a, std::size_t n) {
+  for (std::size_t i = 1; i < n; ++i)
+    for (std::size_t j = i; j > 0 && a[j] < a[j - 1]; --j) std::swap(a[j], a[j - 1]);
+}
+
+// Fills `outer` but for the `holes` (disjoint rectangles inside it, as x, y, w, h): the
+// canvas window's background where no picture covers it. Drawn whole under the pictures, it
+// cost llvmpipe a blended pass over the whole canvas area every frame (half the UI's pixels
+// with four runs) for pixels the opaque pictures then overwrote.
+void fill_around(ImDrawList& draw, const ImVec4& outer, const ImVec4* holes, std::size_t count, ImU32 color) {
+  // Horizontal bands between the holes' top and bottom edges; in each, the spans no hole
+  // crosses.
+  std::array<float, 2 * kMaxRunsSideBySide + 2> ys{};
+  std::size_t n = 0;
+  ys[n++] = outer.y;
+  ys[n++] = outer.y + outer.w;
+  for (std::size_t i = 0; i < count; ++i) ys[n++] = holes[i].y, ys[n++] = holes[i].y + holes[i].w;
+  sort_first(ys, n);
+  for (std::size_t b = 0; b + 1 < n; ++b) {
+    const float y0 = std::max(ys[b], outer.y), y1 = std::min(ys[b + 1], outer.y + outer.w);
+    if (y1 <= y0) continue;
+    std::array<std::array<float, 2>, kMaxRunsSideBySide> spans{};
+    std::size_t m = 0;
+    for (std::size_t i = 0; i < count; ++i)
+      if (holes[i].y <= y0 && holes[i].y + holes[i].w >= y1) spans[m++] = {holes[i].x, holes[i].x + holes[i].z};
+    sort_first(spans, m);
+    float x = outer.x;
+    for (std::size_t i = 0; i < m; ++i) {
+      if (spans[i][0] > x) draw.AddRectFilled(ImVec2(x, y0), ImVec2(spans[i][0], y1), color);
+      x = std::max(x, spans[i][1]);
+    }
+    if (outer.x + outer.z > x) draw.AddRectFilled(ImVec2(x, y0), ImVec2(outer.x + outer.z, y1), color);
+  }
+}
+
 }  // namespace
 
 // The workers' readers together keep no more writes decoded than one reader of a log of
@@ -67,7 +104,7 @@ CompareView::CompareView(Viewer& viewer, SideBySide runs, const std::string& bac
     // The pictures come from the workers: no scene is built on this thread.
     p.session->defer_pictures(true);
     p.worker = std::make_unique<CanvasWorker>(log.path(), backend, CanvasWorker::Follow::fixed_log, kApproximateFrom,
-                                              keep_writes_bytes(panes_.size()));
+                                              keep_writes_bytes(panes_.size()), CanvasWorker::Priority::below_ui);
   }
   start_next_plots();
 }
@@ -209,9 +246,10 @@ void CompareView::draw(float x, float y, float w, float h) {
   place(x, y, w, h);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+  // No background of its own: fill_around draws it where no picture lies.
   ImGui::Begin("canvas", nullptr,
                kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
-                   ImGuiWindowFlags_NoScrollWithMouse);
+                   ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoBackground);
   viewer_.canvas_rect_ = ImVec4(x, y, w, h);
   // Two side by side; three or four in two rows of two.
   const int columns = 2, rows = panes_.size() > 2 ? 2 : 1;
@@ -222,9 +260,8 @@ void CompareView::draw(float x, float y, float w, float h) {
   scene::Camera& camera = viewer_.camera_;
   if (viewer_.fit_pending_ || camera.width() <= 1) fit(pane_w_, pane_h_);
   else if (camera.width() != pane_w_ || camera.height() != pane_h_) camera.resize(pane_w_, pane_h_);
-  differences();
-  const ImGuiIO& io = ImGui::GetIO();
-  ImDrawList& draw = *ImGui::GetWindowDrawList();
+  std::array<ImVec4, kMaxRunsSideBySide> pictures{};
+  std::size_t covered = 0;
   for (std::size_t i = 0; i < panes_.size(); ++i) {
     Pane& p = panes_[i];
     post(p);
@@ -232,6 +269,15 @@ void CompareView::draw(float x, float y, float w, float h) {
     const float cx = x + static_cast<float>(i % 2) * (cell_w + kGap);
     const float cy = y + static_cast<float>(i / 2) * (cell_h + kGap);
     p.rect = ImVec4(cx, cy + caption_h, static_cast<float>(pane_w_), static_cast<float>(pane_h_));
+    if (p.has_picture) pictures[covered++] = p.rect;
+  }
+  differences();
+  const ImGuiIO& io = ImGui::GetIO();
+  ImDrawList& draw = *ImGui::GetWindowDrawList();
+  fill_around(draw, ImVec4(x, y, w, h), pictures.data(), covered, ImGui::GetColorU32(ImGuiCol_WindowBg));
+  for (std::size_t i = 0; i < panes_.size(); ++i) {
+    Pane& p = panes_[i];
+    const float cx = p.rect.x, cy = p.rect.y - caption_h;
     // The caption: the run's number, its description, and which run leads the timeline.
     ImGui::SetCursorScreenPos(ImVec2(cx + 6.0f, cy + 1.0f));
     ImGui::TextColored(heading_color(), "%zu", i + 1);

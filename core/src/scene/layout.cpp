@@ -15,6 +15,9 @@ constexpr double kLegendFont = 13.0;
 constexpr double kLegendWidth = 150.0;    // px kept free on the right for the legend
 constexpr double kEdge = 12.0;            // px between the legend and the picture's border
 constexpr double kCaptionShrink = 0.6;    // the smallest a long caption is set, of its size
+constexpr double kCaptionWrapped = 0.75;  // a caption wrapped is set at this of its size
+constexpr std::size_t kCaptionLines = 3;  // at most; the last ends in "..." when cut
+constexpr double kCaptionLeading = 1.25;
 constexpr double kEstimateSlack = 0.97;   // the width estimate may be a little short
 // The narration is read from the back of a room: larger than the caption. DejaVu Sans's
 // characters average about 0.5 of its size in running English (0.505 on the shipped
@@ -23,6 +26,35 @@ constexpr double kNarrationFont = 21.0;
 constexpr double kNarrationCharWidth = 0.53;
 constexpr double kNarrationLeading = 1.3;
 constexpr std::size_t kNarrationLines = 4;
+
+// `text` in lines no wider than `room` at `size` (estimated), broken at blanks; a middle dot
+// stays with the word before it, so that no line begins with one. At most `max_lines`, the
+// last ending in "..." when the text goes on.
+std::vector<std::string> wrap_to_width(std::string_view text, double room, double size, std::size_t max_lines) {
+  std::vector<std::string> words;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t begin = text.find_first_not_of(' ', at);
+    if (begin == std::string_view::npos) break;
+    const std::size_t end = std::min(text.find(' ', begin), text.size());
+    const std::string_view word = text.substr(begin, end - begin);
+    if (word == "\u00B7" && !words.empty()) words.back().append(" ").append(word);
+    else words.emplace_back(word);
+    at = end;
+  }
+  std::vector<std::string> lines;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    if (lines.empty() || estimated_text_width(lines.back() + " " + words[i], size) > room) {
+      if (lines.size() == max_lines) {
+        lines.back() += " ...";
+        break;
+      }
+      lines.push_back(words[i]);
+    } else {
+      lines.back().append(" ").append(words[i]);
+    }
+  }
+  return lines;
+}
 
 // Sizes scaled by k (Scene::text_scale): the words grow, and the room kept for them.
 LegendLayout legend_layout(const Legend& legend, int width, int height, double top, double k) {
@@ -71,10 +103,31 @@ Layout layout(const Scene& scene, int width, int height) {
     // than run on under the panel. Whole pixels: the renderer keeps one atlas per size.
     double size = kCaptionFont * k;
     const double room = width - 2.0 * 10.0 * k, wide = estimated_text_width(scene.caption, size);
-    if (wide > room && room > 0.0)
-      size = std::max(std::floor(size * room / wide * kEstimateSlack), std::ceil(kCaptionShrink * size));
+    const double smallest = std::ceil(kCaptionShrink * size);
+    if (wide > room && room > 0.0) size = std::max(std::floor(size * room / wide * kEstimateSlack), smallest);
     out.caption = {{10.0 * k, 0.5 * band + 0.35 * size}, size, false};
     out.margins.top = band + 16.0 * k;
+    // Still too wide at the smallest size: in lines instead, each readable whole (cut at
+    // the picture's edge, the end of a long step's words was lost).
+    // A word wider than the picture by itself stays on one line, as small as it goes.
+    const double wrapped_size = std::ceil(kCaptionWrapped * kCaptionFont * k);
+    std::vector<std::string> lines;
+    if (room > 0.0 && estimated_text_width(scene.caption, size) > room)
+      lines = wrap_to_width(scene.caption, room * kEstimateSlack, wrapped_size, kCaptionLines);
+    if (std::any_of(lines.begin(), lines.end(),
+                    [&](const std::string& l) { return estimated_text_width(l, wrapped_size) > room; }))
+      lines.clear();
+    if (!lines.empty()) {
+      size = wrapped_size;
+      out.caption_lines = std::move(lines);
+      const double line = kCaptionLeading * size, pad = 0.5 * (band - line);
+      for (std::size_t i = 0; i < out.caption_lines.size(); ++i)
+        out.caption_spots.push_back({{10.0 * k, pad + (static_cast<double>(i) + 0.5) * line + 0.35 * size}, size, false});
+      out.caption = out.caption_spots.front();
+      const double wrapped_band = 2.0 * pad + static_cast<double>(out.caption_lines.size()) * line;
+      out.caption_band->h = wrapped_band;
+      out.margins.top = wrapped_band + 16.0 * k;
+    }
   }
   if (!scene.narration.empty()) {
     const double font = kNarrationFont * k, pad = 10.0 * k;

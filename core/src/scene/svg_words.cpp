@@ -95,7 +95,14 @@ void write_caption(SvgContext& c) {
   if (!layout.caption_band) return;
   const Rect& band = *layout.caption_band;
   write_rect(c.out, band.x, band.y, band.w, band.h, panel_color(c.scene, 200));
-  write_text(c.out, layout.caption.at, layout.caption.size_px, layout.caption.anchor_end, text_color(c.scene), c.scene.caption);
+  if (layout.caption_lines.empty()) {
+    write_text(c.out, layout.caption.at, layout.caption.size_px, layout.caption.anchor_end, text_color(c.scene), c.scene.caption);
+    return;
+  }
+  for (std::size_t i = 0; i < layout.caption_lines.size(); ++i) {
+    const TextSpot& spot = layout.caption_spots[i];
+    write_text(c.out, spot.at, spot.size_px, spot.anchor_end, text_color(c.scene), layout.caption_lines[i]);
+  }
 }
 
 void write_legend(SvgContext& c) {

@@ -39,6 +39,11 @@ struct LegendLayout {
 struct Layout {
   std::optional<Rect> caption_band;
   TextSpot caption;
+  // A caption too long for the picture even set smaller (a narrow canvas: runs side by side)
+  // is wrapped instead: its lines, and a spot per line, the first at `caption`. Empty: the
+  // caption is one line at `caption`.
+  std::vector<std::string> caption_lines;
+  std::vector<TextSpot> caption_spots;
   // The narration (Scene::narration), wrapped: its band across the bottom, and a spot per line.
   std::optional<Rect> narration_band;
   std::vector<std::string> narration_lines;
