@@ -58,7 +58,7 @@ class ScriptPlayer {
     ImGuiIO& io = ImGui::GetIO();
     release(io);
     // `watch`: frames, touching nothing, for as long as a live run goes.
-    if (watching_ && !live_state_.empty()) return false;
+    if (watching_ && (!live_state_.empty() || (workbench_ && workbench_->remeshing_live()))) return false;
     watching_ = false;
     // `play N` pauses after its N-th frame has played, not before.
     if (pause_now_ && viewer) {
@@ -163,6 +163,7 @@ class ScriptPlayer {
 
   static void wait_for_background(Viewer& viewer) {
     if (!viewer.session().log()) return;
+    viewer.start_deferred_jobs();  // a script looks before the frame that would start them
     while (!viewer.history().ready() || !viewer.plots().ready() || (viewer.compare() && !viewer.compare()->plots_ready()))
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
     viewer.settle_timeline_marks();
@@ -197,7 +198,7 @@ class ScriptPlayer {
       return false;
     }
     if (v == "watch") {
-      watching_ = !live_state_.empty();
+      watching_ = !live_state_.empty() || (workbench_ && workbench_->remeshing_live());
       return watching_;
     }
     if (v == "frames") {

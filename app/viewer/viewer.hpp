@@ -72,6 +72,11 @@ class Viewer {
   std::string export_status;  // what the last export wrote, or why it failed
   std::string window_title;   // the window's title, as the host shows it (for scripts' state)
 
+  // Shows NEXT instead of the session shown, keeping the renderer, the panels and the
+  // options (swap_session.cpp): the workbench's run after an edit. False (NEXT untouched)
+  // when a new viewer is needed: a canvas worker's run, or runs side by side.
+  bool swap_session(std::unique_ptr<Session>& next);
+
   // The workbench (workbench_host.hpp), set by the loop: edit mode's keys, canvas overlay
   // and panel go through it. Null: no editing (tests of the viewer alone).
   WorkbenchHost* workbench = nullptr;
@@ -151,6 +156,13 @@ class Viewer {
   // events are the timeline's ticks); empty until the index is ready.
   const SelectionStory& selection_story();
 
+  // The history's index and the plots, deferred by swap_session to the next frame: started
+  // now (a script waits for them before it looks). Nothing when a canvas worker's first
+  // picture is still awaited, or they run already.
+  void start_deferred_jobs() {
+    if (!background_started_ && !worker_ && session_->log()) start_background_jobs();
+  }
+
   // Checks every step boundary of the log in the background ("check every step").
   InvariantJob& invariants() { return invariants_; }
   // The element history's index (built in the background when the log opens).
@@ -208,6 +220,7 @@ class Viewer {
   void post_canvas_request();
   void show_worker_picture();
   void draw_drawing_badge(float x, float y);
+  void draw_remeshing_badge(float x, float y);
   void draw_notice(float x, float y);
   void draw_view_controls();
   void say(const char* text);
@@ -276,6 +289,7 @@ class Viewer {
   CanvasPicture picture_;
   PictureTexture picture_texture_;
   bool has_picture_ = false, background_started_ = false;
+  int jobs_after_frames_ = 0;  // frames to draw before the background jobs start (swap_session)
   bool camera_moved_ = false;  // by the person, since the last fit
   // The 3D view; the 2D camera, put back when the view goes back to 2D; whether the canvas's
   // worker picture is a 3D one (it is, once drawn, what the 3D overlays go over).
