@@ -163,7 +163,6 @@ class ScriptPlayer {
 
   static void wait_for_background(Viewer& viewer) {
     if (!viewer.session().log()) return;
-    viewer.start_deferred_jobs();  // a script looks before the frame that would start them
     while (!viewer.history().ready() || !viewer.plots().ready() || (viewer.compare() && !viewer.compare()->plots_ready()))
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
     viewer.settle_timeline_marks();

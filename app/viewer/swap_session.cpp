@@ -62,11 +62,10 @@ bool Viewer::swap_session(std::unique_ptr<Session>& next) {
   moved_2d_ = false;
   picture_in_3d_ = false;
   background_started_ = false;
-  // The history's index and the plots read the new log on threads of their own, from the
-  // frame after the one that draws the new mesh: on two cores they would share them with
-  // the renderer's threads in the very frame the edit is waited for.
-  jobs_after_frames_ = 1;
   apply(kept);
+  // The history's index and the plots of the new log, as a new viewer starts them. (Started
+  // a frame later, their first frame drawn ready, which allocates, fell on an idle frame.)
+  if (log) start_background_jobs();
   return true;
 }
 

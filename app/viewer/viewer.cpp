@@ -278,8 +278,6 @@ void Viewer::handle_keys() {
 }
 
 void Viewer::frame(int width, int height, double seconds) {
-  if (jobs_after_frames_ > 0) --jobs_after_frames_;
-  else start_deferred_jobs();
   handle_keys();
   session_->advance(seconds);
   // The quiz's words take the caption's band while it is on.

@@ -156,13 +156,6 @@ class Viewer {
   // events are the timeline's ticks); empty until the index is ready.
   const SelectionStory& selection_story();
 
-  // The history's index and the plots, deferred by swap_session to the next frame: started
-  // now (a script waits for them before it looks). Nothing when a canvas worker's first
-  // picture is still awaited, or they run already.
-  void start_deferred_jobs() {
-    if (!background_started_ && !worker_ && session_->log()) start_background_jobs();
-  }
-
   // Checks every step boundary of the log in the background ("check every step").
   InvariantJob& invariants() { return invariants_; }
   // The element history's index (built in the background when the log opens).
@@ -289,7 +282,6 @@ class Viewer {
   CanvasPicture picture_;
   PictureTexture picture_texture_;
   bool has_picture_ = false, background_started_ = false;
-  int jobs_after_frames_ = 0;  // frames to draw before the background jobs start (swap_session)
   bool camera_moved_ = false;  // by the person, since the last fit
   // The 3D view; the 2D camera, put back when the view goes back to 2D; whether the canvas's
   // worker picture is a 3D one (it is, once drawn, what the 3D overlays go over).
