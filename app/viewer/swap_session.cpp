@@ -1,9 +1,10 @@
 // Viewer::swap_session: the workbench's next run shown in the viewer that showed the last
 // one. A new Viewer per edit made its renderer again (shaders compiled, the font atlas
-// rasterised), and its first frame was three idle frames' worth on llvmpipe; an edit of a
-// 1,000-vertex input spent more there than in the re-meshing. What the viewer keeps from
-// the run it showed is forgotten here, as a new viewer would not have it; what belongs to
-// the person (the options, the panels, the camera unless fitted again) stays.
+// rasterised): timed under load, making it and its first canvas cost two to three idle
+// frames on llvmpipe, more than the re-meshing of a 1,000-vertex input. What the viewer
+// keeps from the run it showed is forgotten here, as a new viewer would not have it; what
+// belongs to the person (the options, the panels shown or hidden, full screen, the camera
+// unless fitted again) stays: a new viewer per edit also showed the panels again after Tab.
 #include "compare_view.hpp"
 #include "viewer.hpp"
 
