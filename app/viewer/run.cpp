@@ -209,10 +209,14 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   }
   if (!options.live_input.empty()) open(options.live_input, options.live_refine);
 
+  ScriptPlayer script(options.script, options.script_path);
+  script.set_workbench(&bench);
   // After an edit (the canvas's last frame, a key, a script's action): the input's new mesh,
   // in the view the last one had when the input is still all in it (workbench.hpp).
   const auto show_edited = [&] {
-    std::unique_ptr<Session> edited = bench.take_session();
+    // A script takes the workbench's live run when it looks (or watches it end).
+    std::unique_ptr<Session> edited =
+        bench.take_session(options.script.empty() || script.waits_for_live() || script.watching() || script.done());
     if (!edited) return;
     const bool keep = viewer && bench.showing && bench.in_view(viewer->camera());
     const scene::Camera camera = viewer ? viewer->camera() : scene::Camera{};
@@ -230,8 +234,6 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     if (keep) viewer->keep_camera(camera);
     bench.showing = true;
   };
-  ScriptPlayer script(options.script, options.script_path);
-  script.set_workbench(&bench);
   const bool scripted = !options.script.empty();
 
   struct FrameRecord {
@@ -334,7 +336,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
       const Clock::time_point end = Clock::now();
       frames.push_back({std::chrono::duration<double, std::milli>(end - options.started).count(),
                         std::chrono::duration<double, std::milli>(end - now).count(),
-                        allocations() - allocations_before, position, shown, live || bench.remeshing_live()});
+                        allocations() - allocations_before, position, shown, live || bench.live_running()});
     }
     if (!host->interactive() && (!scripted || script.done())) break;
     // An idle window sleeps until an event; one with something to show soon does not.

@@ -47,6 +47,8 @@ class ScriptPlayer {
   // Where the workbench's actions (edit_script.hpp) go.
   void set_workbench(WorkbenchHost* host) { workbench_ = host; }
 
+  // Whether `watch` draws frames now.
+  bool watching() const { return watching_; }
   bool done() const { return next_ >= actions_.size() && frames_left_ == 0 && pending_.empty() && !pause_now_; }
   bool quit() const { return quit_; }
 

@@ -167,7 +167,7 @@ bool WorkbenchHost::in_view(const scene::Camera& camera) const {
   return true;
 }
 
-std::unique_ptr<Session> WorkbenchHost::take_session() {
+std::unique_ptr<Session> WorkbenchHost::take_session(bool take_ended_live) {
   if (!bench_) return nullptr;
   if (bench_->stale()) {
     if (live_) {  // a newer edit: the run of the older one is of no use
@@ -184,7 +184,7 @@ std::unique_ptr<Session> WorkbenchHost::take_session() {
     }
     return nullptr;
   }
-  if (!live_ || live_->running()) return nullptr;
+  if (!live_ || !take_ended_live || live_->running()) return nullptr;
   std::unique_ptr<Session> s = bench_->finish_live(live_->log(), live_->succeeded(), live_->messages(),
                                                    live_->output(), live_->cpu_seconds(), 1e3 * live_->seconds());
   live_.reset();

@@ -58,8 +58,12 @@ class WorkbenchHost {
   // or the core refused the input and the last good mesh stays. A bigger run goes live
   // (Workbench::goes_live): `meshstep` runs it in a process of its own, null is returned
   // meanwhile (the last good mesh stays on screen, the frames stay short), and its session
-  // when it has ended; an edit made meanwhile stops it and starts another.
-  std::unique_ptr<Session> take_session();
+  // when it has ended; an edit made meanwhile stops it and starts another. With
+  // `take_ended_live` false a live run that has ended is left for a later call (scripts
+  // take it only when they look: what they see does not depend on the machine's speed).
+  std::unique_ptr<Session> take_session(bool take_ended_live = true);
+  // Whether the live re-meshing's process still runs.
+  bool live_running() { return live_ && live_->running(); }
   // Whether a live re-meshing goes (or has ended, its mesh not yet taken); for how long.
   bool remeshing_live() const { return live_ != nullptr; }
   double live_seconds() const { return live_ ? live_->seconds() : 0.0; }
