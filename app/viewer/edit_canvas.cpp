@@ -50,6 +50,8 @@ constexpr ImU32 kVertex = IM_COL32(0, 70, 140, 255);
 constexpr ImU32 kHole = IM_COL32(200, 30, 30, 255);
 constexpr ImU32 kRegion = IM_COL32(0, 140, 70, 255);
 constexpr ImU32 kSelected = IM_COL32(213, 94, 0, 255);
+// The draw list's vertices the input's markers may fill (of 65,536; see edit_canvas).
+constexpr int kMarkerVertexBudget = 50000;
 constexpr ImU32 kRefused = IM_COL32(220, 0, 0, 255);
 constexpr ImU32 kWarned = IM_COL32(230, 140, 0, 255);
 
@@ -142,26 +144,29 @@ void edit_canvas(WorkbenchHost& host, const scene::Camera& camera, float x, floa
     return st.dragging && *st.dragging == e ? st.drag_to : editor.position(e);
   };
 
-  // --- The input over the mesh.
-  for (std::uint32_t s = 0; s < in.segments.size(); ++s) {
+  // --- The input over the mesh. A window's draw list holds 65,536 vertices (ImGui's 16-bit
+  // indices; more is an assertion): a big input's markers (a 21,000-vertex input has 84,000
+  // corners) are drawn while there is room, leaving some for what follows.
+  const auto room = [&draw] { return draw.VtxBuffer.Size < kMarkerVertexBudget; };
+  for (std::uint32_t s = 0; s < in.segments.size() && room(); ++s) {
     const Segment& seg = in.segments[s];
     const bool selected = st.selected && *st.selected == ElementRef{InputElement::segment, s};
     draw.AddLine(screen(where({InputElement::vertex, seg.a})), screen(where({InputElement::vertex, seg.b})),
                  selected ? kSelected : kSegment, selected ? 4.0f : 2.0f);
   }
-  for (std::uint32_t v = 0; v < in.points.size(); ++v) {
+  for (std::uint32_t v = 0; v < in.points.size() && room(); ++v) {
     const ImVec2 c = screen(where({InputElement::vertex, v}));
     const bool selected = st.selected && *st.selected == ElementRef{InputElement::vertex, v};
     draw.AddRectFilled(ImVec2(c.x - 3.5f, c.y - 3.5f), ImVec2(c.x + 3.5f, c.y + 3.5f), selected ? kSelected : kVertex);
   }
-  for (std::uint32_t h = 0; h < in.holes.size(); ++h) {
+  for (std::uint32_t h = 0; h < in.holes.size() && room(); ++h) {
     const ImVec2 c = screen(where({InputElement::hole, h}));
     draw.AddCircle(c, 7.0f, kHole, 0, 2.0f);
     draw.AddLine(ImVec2(c.x - 5, c.y - 5), ImVec2(c.x + 5, c.y + 5), kHole, 2.0f);
     draw.AddLine(ImVec2(c.x - 5, c.y + 5), ImVec2(c.x + 5, c.y - 5), kHole, 2.0f);
   }
   char label[64];
-  for (std::uint32_t r = 0; r < in.regions.size(); ++r) {
+  for (std::uint32_t r = 0; r < in.regions.size() && room(); ++r) {
     const ImVec2 c = screen(where({InputElement::region, r}));
     const bool selected = st.selected && *st.selected == ElementRef{InputElement::region, r};
     const ImU32 colour = selected ? kSelected : kRegion;

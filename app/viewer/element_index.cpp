@@ -16,7 +16,20 @@ ElementIndex::~ElementIndex() {
   if (thread_.joinable()) thread_.join();
 }
 
+void ElementIndex::reset() {
+  stop_ = true;
+  if (thread_.joinable()) thread_.join();
+  stop_ = false;
+  ready_.store(false, std::memory_order_release);
+  vertices_ = {};
+  slots_ = {};
+  segments_ = {};
+  seconds_ = 0.0;
+  error_.clear();
+}
+
 void ElementIndex::build(const std::string& log_path) {
+  reset();
   thread_ = std::thread([this, log_path] {
     const auto t0 = std::chrono::steady_clock::now();
     try {

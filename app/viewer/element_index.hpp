@@ -26,7 +26,10 @@ namespace meshstep::viewer {
 class ElementIndex {
  public:
   ~ElementIndex();
+  // Builds the index of LOG_PATH; one being built (of another log) is stopped first.
   void build(const std::string& log_path);
+  // Stops a build and forgets what was built: not ready() until the next build.
+  void reset();
   bool ready() const { return ready_.load(std::memory_order_acquire); }
   // The events (0-based indices) of vertex v, in order; empty until ready().
   std::span<const std::uint32_t> events_of_vertex(std::uint32_t v) const {

@@ -20,6 +20,13 @@ void InvariantJob::cancel() {
   cancelled_ = false;
 }
 
+void InvariantJob::reset() {
+  cancel();
+  report_.reset();
+  error_.clear();
+  checked_ = 0;
+}
+
 void InvariantJob::start(const std::string& log_path) {
   cancel();
   report_.reset();

@@ -29,6 +29,8 @@ class InvariantJob {
   const std::string& error();
   // Waits for the job (scripts).
   void wait();
+  // Stops a job running and forgets the last report: as before any start (another log).
+  void reset();
 
  private:
   void cancel();

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -31,8 +32,14 @@ std::vector<std::string> run_arguments(const std::string& input, const RefineOpt
 }
 
 LiveRun::LiveRun(const std::string& input, const RefineOptions& refine, std::string log, const std::string& backend)
-    : input_(input), log_(std::move(log)), messages_file_(log_ + ".messages"), started_(std::chrono::steady_clock::now()) {
-  std::vector<std::string> args = run_arguments(input, refine, log_);
+    : LiveRun(run_arguments(input, refine, log), input, log, backend) {}
+
+LiveRun::LiveRun(std::vector<std::string> args, std::string input, std::string log, const std::string& backend)
+    : input_(std::move(input)),
+      log_(std::move(log)),
+      messages_file_(log_ + ".messages"),
+      output_file_(log_ + ".out"),
+      started_(std::chrono::steady_clock::now()) {
   command_ = "meshstep";
   for (std::size_t i = 1; i < args.size(); ++i) {
     if (args[i] == "--record") break;  // the rest is the viewer's business
@@ -45,10 +52,12 @@ LiveRun::LiveRun(const std::string& input, const RefineOptions& refine, std::str
   posix_spawn_file_actions_t files;
   posix_spawn_file_actions_init(&files);
   posix_spawn_file_actions_addopen(&files, 2, messages_file_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  posix_spawn_file_actions_addopen(&files, 1, output_file_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
   const int failed = ::posix_spawn(&pid_, argv[0], &files, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&files);
-  if (failed != 0) throw InputError(input, 0, "cannot run " + args[0] + " to triangulate it");
-  preview_ = std::make_unique<CanvasWorker>(log_ + ".partial", backend, CanvasWorker::Follow::growing_log);
+  if (failed != 0) throw InputError(input_, 0, "cannot run " + args[0] + " to triangulate it");
+  if (!backend.empty())
+    preview_ = std::make_unique<CanvasWorker>(log_ + ".partial", backend, CanvasWorker::Follow::growing_log);
 }
 
 LiveRun::~LiveRun() {
@@ -59,13 +68,17 @@ LiveRun::~LiveRun() {
   preview_.reset();
   std::error_code ec;
   std::filesystem::remove(messages_file_, ec);
+  std::filesystem::remove(output_file_, ec);
 }
 
 bool LiveRun::running() {
   if (done_) return false;
   int status = 0;
-  const pid_t r = ::waitpid(pid_, &status, WNOHANG);
+  struct rusage usage {};
+  const pid_t r = ::wait4(pid_, &status, WNOHANG, &usage);
   if (r == 0) return true;
+  cpu_seconds_ = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                 1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   done_ = true;
   ended_ = std::chrono::steady_clock::now();
   status_ = r == pid_ && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -84,6 +97,13 @@ void LiveRun::cancel() {
 
 double LiveRun::seconds() const {
   return std::chrono::duration<double>((done_ ? ended_ : std::chrono::steady_clock::now()) - started_).count();
+}
+
+std::string LiveRun::output() const {
+  std::ifstream in(output_file_);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 std::string LiveRun::messages() const {

@@ -24,6 +24,10 @@ class LiveRun {
   // Starts the run; throws InputError (naming the input) when the program cannot start.
   // `backend`: the GL library of the UI's context, for the preview's worker.
   LiveRun(const std::string& input, const RefineOptions& refine, std::string log, const std::string& backend);
+  // Any command that records LOG: ARGS, the program first. With no `backend` there is no
+  // preview (the workbench keeps its last mesh on screen meanwhile: workbench_host.hpp).
+  // What the program prints goes to a file of its own (output()).
+  LiveRun(std::vector<std::string> args, std::string input, std::string log, const std::string& backend);
   ~LiveRun();  // stops a run still going
   LiveRun(const LiveRun&) = delete;
   LiveRun& operator=(const LiveRun&) = delete;
@@ -42,12 +46,19 @@ class LiveRun {
   double seconds() const;
   // What the program said on its error stream (its messages are FILE:LINE: ...).
   std::string messages() const;
+  // What it printed (its --stats json line, when asked for).
+  std::string output() const;
+  // The processor time it used, user and system, once it has ended (0 before).
+  double cpu_seconds() const { return cpu_seconds_; }
 
-  // The mesh of the run so far (CanvasWorker following LOG.partial).
+  // The mesh of the run so far (CanvasWorker following LOG.partial); only with a backend.
+  bool has_preview() const { return preview_ != nullptr; }
+
   CanvasWorker& preview() { return *preview_; }
 
  private:
-  std::string input_, log_, command_, messages_file_;
+  std::string input_, log_, command_, messages_file_, output_file_;
+  double cpu_seconds_ = 0.0;
   pid_t pid_ = -1;
   bool done_ = false, cancelled_ = false;
   int status_ = -1;

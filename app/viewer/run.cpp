@@ -209,24 +209,37 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
   }
   if (!options.live_input.empty()) open(options.live_input, options.live_refine);
 
+  ScriptPlayer script(options.script, options.script_path);
+  script.set_workbench(&bench);
   // After an edit (the canvas's last frame, a key, a script's action): the input's new mesh,
   // in the view the last one had when the input is still all in it (workbench.hpp).
   const auto show_edited = [&] {
-    std::unique_ptr<Session> edited = bench.take_session();
+    // A script takes the workbench's live run when it looks (or watches it end).
+    std::unique_ptr<Session> edited =
+        bench.take_session(options.script.empty() || script.waits_for_live() || script.watching() || script.done());
     if (!edited) return;
     const bool keep = viewer && bench.showing && bench.in_view(viewer->camera());
     const scene::Camera camera = viewer ? viewer->camera() : scene::Camera{};
-    show(std::move(edited), Shown::edited);
+    // The viewer that showed the last run shows this one (swap_session.cpp): a new viewer
+    // per edit cost more than the re-meshing.
+    if (viewer && bench.showing && viewer->swap_session(edited)) {
+      const std::string path = viewer->session().title();
+      host->set_title("meshstep view: " + path);
+      viewer->window_title = host->title();
+      problem.clear();
+      stopped_run = false;
+    } else {
+      show(std::move(edited), Shown::edited);
+    }
     if (keep) viewer->keep_camera(camera);
     bench.showing = true;
   };
-  ScriptPlayer script(options.script, options.script_path);
-  script.set_workbench(&bench);
   const bool scripted = !options.script.empty();
 
   struct FrameRecord {
     double end_ms, frame_ms;
     std::uint64_t allocations, position, shown;
+    bool live;  // a live run went during the frame (the page's, or the workbench's re-meshing)
   };
   std::vector<FrameRecord> frames;
   frames.reserve(1 << 16);  // recording a frame must not allocate (it is one of the measured)
@@ -250,6 +263,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     // `quit`), so that what they see does not depend on the machine's speed.
     if (live && scripted && script.waits_for_live())
       while (live->run->running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (scripted && script.waits_for_live()) bench.wait_live();  // the workbench's, likewise
     end_live();
     if (status != 0) break;
     show_edited();  // an edit of the last frame's, before a script looks
@@ -322,11 +336,11 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
       const Clock::time_point end = Clock::now();
       frames.push_back({std::chrono::duration<double, std::milli>(end - options.started).count(),
                         std::chrono::duration<double, std::milli>(end - now).count(),
-                        allocations() - allocations_before, position, shown});
+                        allocations() - allocations_before, position, shown, live || bench.live_running()});
     }
     if (!host->interactive() && (!scripted || script.done())) break;
     // An idle window sleeps until an event; one with something to show soon does not.
-    const bool busy = live || (viewer && (viewer->session().playback().playing || viewer->canvas_drawing()));
+    const bool busy = live || bench.remeshing_live() || (viewer && (viewer->session().playback().playing || viewer->canvas_drawing()));
     if (host->interactive() && !scripted && !busy && picked.empty()) glfwWaitEventsTimeout(0.1);
     else if (host->interactive() && !scripted && busy && !(viewer && viewer->session().playback().playing))
       glfwWaitEventsTimeout(1.0 / 60.0);
@@ -338,13 +352,14 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     options.settings->window_height = host->windowed_height();
   }
   if (!options.frame_log.empty()) {
-    std::string text = "# frame end_ms frame_ms allocations position shown\n";
+    std::string text = "# frame end_ms frame_ms allocations position shown live\n";
     char line[128];
     for (std::size_t i = 0; i < frames.size(); ++i) {
-      std::snprintf(line, sizeof line, "%zu %.3f %.3f %llu %llu %lld\n", i, frames[i].end_ms, frames[i].frame_ms,
+      std::snprintf(line, sizeof line, "%zu %.3f %.3f %llu %llu %lld %d\n", i, frames[i].end_ms, frames[i].frame_ms,
                     static_cast<unsigned long long>(frames[i].allocations),
                     static_cast<unsigned long long>(frames[i].position),
-                    frames[i].shown == UINT64_MAX ? -1LL : static_cast<long long>(frames[i].shown));
+                    frames[i].shown == UINT64_MAX ? -1LL : static_cast<long long>(frames[i].shown),
+                    frames[i].live ? 1 : 0);
       text += line;
     }
     io::write_file_atomically(options.frame_log, text);

@@ -24,8 +24,8 @@ struct RunOptions {
   bool quiet = false;
   // Where to write one line per frame: its index, milliseconds from the program's start to
   // the frame's end, the frame's own milliseconds, its allocations, the cursor's position,
-  // the position the canvas shows (-1: nothing yet); the responsiveness benchmark and the
-  // tests read it.
+  // the position the canvas shows (-1: nothing yet), 1 when a live run went during the frame
+  // (else 0); the responsiveness benchmark and the tests read it.
   std::string frame_log;
   // An input to run live at the start (.poly, .node), with its refinement; the log opens
   // when the run ends, at this step or event (-1: the end).

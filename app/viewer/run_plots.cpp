@@ -62,7 +62,20 @@ RunPlots::~RunPlots() {
   if (thread_.joinable()) thread_.join();
 }
 
+void RunPlots::reset() {
+  stop_ = true;
+  if (thread_.joinable()) thread_.join();
+  stop_ = false;
+  ready_.store(false, std::memory_order_release);
+  triangles_.clear();
+  smallest_angle_.clear();
+  bad_.clear();
+  seconds_ = 0.0;
+  error_.clear();
+}
+
 void RunPlots::build(const std::string& log_path, double bound) {
+  reset();
   thread_ = std::thread([this, log_path, bound] {
     const auto t0 = std::chrono::steady_clock::now();
     try {

@@ -16,7 +16,10 @@ class RunPlots {
  public:
   ~RunPlots();
   // bound: the smallest-angle bound that makes a triangle bad (0: none counted).
+  // One being built (of another log) is stopped first.
   void build(const std::string& log_path, double bound);
+  // Stops a build and forgets what was built: not ready() until the next build.
+  void reset();
   bool ready() const { return ready_.load(std::memory_order_acquire); }
 
   // One value per step boundary: [k] is the mesh after k steps (k = 0 .. step count).

@@ -48,6 +48,8 @@ class ScriptPlayer {
   // Where the workbench's actions (edit_script.hpp) go.
   void set_workbench(WorkbenchHost* host) { workbench_ = host; }
 
+  // Whether `watch` draws frames now.
+  bool watching() const { return watching_; }
   bool done() const {
     return next_ >= actions_.size() && frames_left_ == 0 && pending_.empty() && !pause_now_ && !waiting_;
   }
@@ -72,7 +74,7 @@ class ScriptPlayer {
     }
     release(io);
     // `watch`: frames, touching nothing, for as long as a live run goes.
-    if (watching_ && !live_state_.empty()) return false;
+    if (watching_ && (!live_state_.empty() || (workbench_ && workbench_->remeshing_live()))) return false;
     watching_ = false;
     // `play N` pauses after its N-th frame has played, not before.
     if (pause_now_ && viewer) {
@@ -212,7 +214,7 @@ class ScriptPlayer {
       return false;
     }
     if (v == "watch") {
-      watching_ = !live_state_.empty();
+      watching_ = !live_state_.empty() || (workbench_ && workbench_->remeshing_live());
       return watching_;
     }
     if (v == "frames") {

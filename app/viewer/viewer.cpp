@@ -413,6 +413,7 @@ void Viewer::draw_canvas(float x, float y, float w, float h) {
   // Edit mode (edit_canvas.hpp): the left button edits, the middle one pans.
   const bool editing = workbench && workbench->editing && !view3d_.on();
   if (worker_ && worker_->drawing()) draw_drawing_badge(x, y);
+  else if (workbench && workbench->remeshing_live()) draw_remeshing_badge(x, y);
   if (notice_shown()) draw_notice(x, y);
   // The tour's row, under the caption's band.
   if (tour_) tour_->draw(*this, x + 10.0f, y + 40.0f * ui_scale, w - 20.0f);
@@ -486,6 +487,19 @@ void Viewer::draw_drawing_badge(float x, float y) {
   const ImVec2 size = ImGui::CalcTextSize(text);
   const ImVec2 at = has_picture_ ? ImVec2(x + 10.0f, y + 10.0f)
                                  : ImVec2(x + 0.5f * (canvas_rect_.z - size.x), y + 0.5f * canvas_rect_.w);
+  draw.AddRectFilled(ImVec2(at.x - 6.0f, at.y - 4.0f), ImVec2(at.x + size.x + 6.0f, at.y + size.y + 4.0f),
+                     IM_COL32(30, 30, 30, 200), 4.0f);
+  draw.AddText(at, IM_COL32(255, 255, 255, 255), text);
+}
+
+// While the workbench's re-meshing runs live: what the canvas shows meanwhile, in its corner.
+void Viewer::draw_remeshing_badge(float x, float y) {
+  char text[160];
+  std::snprintf(text, sizeof text, "re-meshing the edited input in meshstep: %.1f s (the last mesh stays until it ends)",
+                workbench->live_seconds());
+  ImDrawList& draw = *ImGui::GetWindowDrawList();
+  const ImVec2 size = ImGui::CalcTextSize(text);
+  const ImVec2 at(x + 10.0f, y + 10.0f);
   draw.AddRectFilled(ImVec2(at.x - 6.0f, at.y - 4.0f), ImVec2(at.x + size.x + 6.0f, at.y + size.y + 4.0f),
                      IM_COL32(30, 30, 30, 200), 4.0f);
   draw.AddText(at, IM_COL32(255, 255, 255, 255), text);

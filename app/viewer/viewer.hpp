@@ -72,6 +72,11 @@ class Viewer {
   std::string export_status;  // what the last export wrote, or why it failed
   std::string window_title;   // the window's title, as the host shows it (for scripts' state)
 
+  // Shows NEXT instead of the session shown, keeping the renderer, the panels and the
+  // options (swap_session.cpp): the workbench's run after an edit. False (NEXT untouched)
+  // when a new viewer is needed: a canvas worker's run, or runs side by side.
+  bool swap_session(std::unique_ptr<Session>& next);
+
   // The workbench (workbench_host.hpp), set by the loop: edit mode's keys, canvas overlay
   // and panel go through it. Null: no editing (tests of the viewer alone).
   WorkbenchHost* workbench = nullptr;
@@ -208,6 +213,7 @@ class Viewer {
   void post_canvas_request();
   void show_worker_picture();
   void draw_drawing_badge(float x, float y);
+  void draw_remeshing_badge(float x, float y);
   void draw_notice(float x, float y);
   void draw_view_controls();
   void say(const char* text);

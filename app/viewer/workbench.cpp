@@ -1,5 +1,6 @@
 #include "workbench.hpp"
 
+#include <time.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -150,8 +151,30 @@ void Workbench::find_idle_holes(const Pslg& input) {
   }
 }
 
+namespace {
+
+double thread_cpu_ms() {
+  timespec t{};
+  ::clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
+}
+
+}  // namespace
+
+std::unique_ptr<Session> Workbench::shown(const std::string& log) {
+  std::unique_ptr<Session> session = Session::open_log(log);
+  session->to_end();  // the mesh made, at the end of its run
+  session->set_title(title());
+  has_mesh_ = true;
+  std::error_code ec;
+  if (!shown_log_.empty() && shown_log_ != log) fs::remove(shown_log_, ec);  // open still if a session holds it
+  shown_log_ = log;
+  return session;
+}
+
 std::unique_ptr<Session> Workbench::remesh() {
   const auto started = std::chrono::steady_clock::now();
+  const double cpu_started = thread_cpu_ms();
   made_revision_ = editor_.revision() + recipe_revision_;
   ++remeshes_;
   notices_.clear();
@@ -186,6 +209,7 @@ std::unique_ptr<Session> Workbench::remesh() {
       const TriMesh mesh = triangulate(input, options, &report);
       writer->finish();
       mesh_triangles_ = mesh.triangles.size();
+      last_vertices_ = mesh.points.size();
       first.triangulation = std::move(report);
     } else {
       std::vector<RefineOptions> operations;
@@ -209,12 +233,10 @@ std::unique_ptr<Session> Workbench::remesh() {
       const TriMesh mesh = refine_chain(input, operations, reports);
       writer->finish();
       mesh_triangles_ = mesh.triangles.size();
+      last_vertices_ = mesh.points.size();
       first = std::move(reports[0]);
     }
-    session = Session::open_log(log);
-    session->to_end();  // the mesh made, at the end of its run
-    session->set_title(title());
-    has_mesh_ = true;
+    session = shown(log);
     for (const std::string& w : first.triangulation.warnings)
       notices_.push_back({element_named(w, input.first_index), w, false});
     find_idle_holes(input);
@@ -230,10 +252,8 @@ std::unique_ptr<Session> Workbench::remesh() {
     // Until there is a good mesh, and after New, the input alone is shown (its points and
     // segments).
     if (!has_mesh_ || input.points.empty()) session = Session::still(input, title());
-  } else {
-    if (!shown_log_.empty()) fs::remove(shown_log_, ec);  // open still if a session holds it
-    shown_log_ = log;
   }
+  cpu_ms_ = thread_cpu_ms() - cpu_started;
   remesh_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   return session;
 }

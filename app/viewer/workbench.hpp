@@ -73,6 +73,33 @@ class Workbench {
   // input and the last good mesh stays on screen. notices() then say why.
   std::unique_ptr<Session> remesh();
 
+  // A bigger run goes live (issue 27): run by `meshstep` in a process of its own while the
+  // window keeps drawing the last good mesh (workbench_host.hpp). It does when the last
+  // re-meshing took more than kLiveCpuMs of processor time (a frame or two and more), or
+  // when the last mesh or the input has more than kLiveVertices vertices (the first edit of
+  // a big run: nothing was timed yet). Processor time, not the wall clock's: which way an
+  // edit goes does not change with the machine's load.
+  static constexpr double kLiveCpuMs = 50.0;
+  static constexpr std::size_t kLiveVertices = 20000;
+  bool goes_live() const;
+  // The run the workbench starts from had this many vertices (its log's).
+  void expect_vertices(std::size_t n) { last_vertices_ = n; }
+  // The command of a live re-meshing of the input as it is now, PROGRAM first: `run RECIPE
+  // INPUT` (`triangulate INPUT` for no operation) recording LOG, its --stats on its output.
+  // The input and the recipe are written to the temporary folder; the mesh is no longer
+  // stale.
+  struct LiveCommand {
+    std::vector<std::string> args;
+    std::string log;
+  };
+  LiveCommand live_command(const std::string& program);
+  // The live run's end, as remesh() returns: the session of its log; null when it was
+  // refused (notices() say why, in the core's words) and the last good mesh stays.
+  std::unique_ptr<Session> finish_live(const std::string& log, bool succeeded, const std::string& messages,
+                                       const std::string& output, double cpu_seconds, double wall_ms);
+  std::size_t live_runs() const { return live_runs_; }
+  double last_cpu_ms() const { return cpu_ms_; }
+
   const std::vector<InputNotice>& notices() const { return notices_; }
   bool refused() const { return !notices_.empty() && notices_.front().refused; }
   std::size_t mesh_triangles() const { return mesh_triangles_; }  // of the last good mesh
@@ -99,6 +126,10 @@ class Workbench {
   std::vector<InputNotice> notices_;
   std::size_t mesh_triangles_ = 0, remeshes_ = 0;
   double remesh_ms_ = 0.0;
+  double cpu_ms_ = 0.0;              // processor time of the last re-meshing
+  std::size_t last_vertices_ = 0;    // vertices of the last mesh made
+  std::size_t live_runs_ = 0;
+  std::unique_ptr<Session> shown(const std::string& log);  // opened at its end, as the new mesh
   bool has_mesh_ = false;
   std::string shown_log_;  // the log of the session last returned
 };

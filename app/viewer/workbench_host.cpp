@@ -1,6 +1,8 @@
 #include "workbench_host.hpp"
 
+#include <chrono>
 #include <cstdio>
+#include <thread>
 #include <filesystem>
 
 #include "meshstep/error.hpp"
@@ -8,6 +10,7 @@
 #include "meshstep/io/shortest_text.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/replay/run_header.hpp"
+#include "sibling_program.hpp"
 #include "state_text.hpp"
 
 namespace meshstep::viewer {
@@ -62,6 +65,11 @@ std::string workbench_state_fields(const WorkbenchHost& host) {
   char ms[32];
   std::snprintf(ms, sizeof ms, "%.3f", bench->remesh_ms());
   field("remesh_ms", ms);
+  std::snprintf(ms, sizeof ms, "%.3f", bench->last_cpu_ms());
+  field("remesh_cpu_ms", ms);
+  field("remesh_live", host.remeshing_live() ? "true" : "false");
+  field("live_remeshes", std::to_string(bench->live_runs()));
+  field("live_cancelled", std::to_string(host.live_cancelled()));
   field("undo_depth", std::to_string(bench->editor().undo_depth()));
   field("edit_message", quoted(host.message));
   // The region tool: its tool and shape, and the region drawn for the form (the lasso's
@@ -86,6 +94,7 @@ std::string workbench_state_fields(const WorkbenchHost& host) {
 
 void WorkbenchHost::start_new() {
   std::vector<Operation> recipe = bench_ ? bench_->recipe() : std::vector<Operation>{};
+  live_.reset();
   bench_ = std::make_unique<Workbench>(Pslg{}, std::move(recipe), "");
   tool = {};
   editing = true;
@@ -108,7 +117,9 @@ std::string WorkbenchHost::start_from(const Session& session, const std::optiona
     // Saved as a .poly: a .node input is saved beside itself with the new extension.
     std::string file = input;
     if (!file.ends_with(".poly")) file = file.substr(0, file.find_last_of('.')) + ".poly";
+    live_.reset();
     bench_ = std::make_unique<Workbench>(std::move(pslg), std::move(recipe), file);
+    if (log) bench_->expect_vertices(log->vertices().size());
     tool = {};
   } catch (const InputError& e) {
     return e.what();
@@ -175,9 +186,32 @@ bool WorkbenchHost::in_view(const scene::Camera& camera) const {
   return true;
 }
 
-std::unique_ptr<Session> WorkbenchHost::take_session() {
-  if (!bench_ || !bench_->stale()) return nullptr;
-  return bench_->remesh();
+std::unique_ptr<Session> WorkbenchHost::take_session(bool take_ended_live) {
+  if (!bench_) return nullptr;
+  if (bench_->stale()) {
+    if (live_) {  // a newer edit: the run of the older one is of no use
+      live_->cancel();
+      live_.reset();
+      ++live_cancelled_;
+    }
+    if (!bench_->goes_live()) return bench_->remesh();
+    Workbench::LiveCommand c = bench_->live_command(sibling_program("meshstep"));
+    try {
+      live_ = std::make_unique<LiveRun>(std::move(c.args), bench_->title(), c.log, "");
+    } catch (const InputError&) {
+      return bench_->remesh();  // no program to run it: in this process, as small runs are
+    }
+    return nullptr;
+  }
+  if (!live_ || !take_ended_live || live_->running()) return nullptr;
+  std::unique_ptr<Session> s = bench_->finish_live(live_->log(), live_->succeeded(), live_->messages(),
+                                                   live_->output(), live_->cpu_seconds(), 1e3 * live_->seconds());
+  live_.reset();
+  return s;
+}
+
+void WorkbenchHost::wait_live() {
+  while (live_ && live_->running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
 }
 
 }  // namespace meshstep::viewer

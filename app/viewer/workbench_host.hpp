@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "edit_canvas.hpp"
+#include "live_run.hpp"
 #include "meshstep/refine/run_spec.hpp"
 #include "meshstep/scene/camera.hpp"
 #include "session.hpp"
@@ -54,8 +55,22 @@ class WorkbenchHost {
   std::string toggle(const Session* session);
 
   // The session to show after an edit (workbench.hpp: remesh), or null: nothing changed,
-  // or the core refused the input and the last good mesh stays.
-  std::unique_ptr<Session> take_session();
+  // or the core refused the input and the last good mesh stays. A bigger run goes live
+  // (Workbench::goes_live): `meshstep` runs it in a process of its own, null is returned
+  // meanwhile (the last good mesh stays on screen, the frames stay short), and its session
+  // when it has ended; an edit made meanwhile stops it and starts another. With
+  // `take_ended_live` false a live run that has ended is left for a later call (scripts
+  // take it only when they look: what they see does not depend on the machine's speed).
+  std::unique_ptr<Session> take_session(bool take_ended_live = true);
+  // Whether the live re-meshing's process still runs.
+  bool live_running() { return live_ && live_->running(); }
+  // Whether a live re-meshing goes (or has ended, its mesh not yet taken); for how long.
+  bool remeshing_live() const { return live_ != nullptr; }
+  double live_seconds() const { return live_ ? live_->seconds() : 0.0; }
+  // Live re-meshings stopped by a newer edit.
+  std::size_t live_cancelled() const { return live_cancelled_; }
+  // Scripts, before they look: the live re-meshing has ended (take_session then has it).
+  void wait_live();
   // Whether the viewer now shows the workbench's run (the loop carries its camera over).
   bool showing = false;
   // Whether every point of the input is in the camera's view: the next run keeps the view
@@ -76,7 +91,11 @@ class WorkbenchHost {
   void redo();
 
  private:
+  // Declared before the workbench: the run ends (and its files go) before the workbench's
+  // folder is removed.
   std::unique_ptr<Workbench> bench_;
+  std::unique_ptr<LiveRun> live_;
+  std::size_t live_cancelled_ = 0;
   std::string known_input_;
   std::vector<Operation> known_recipe_;
 };

@@ -13,6 +13,14 @@
 //
 //   bench_workbench --view PATH [--vertices N] [--edits E] [--gl egl|osmesa]
 //                   [--recipe "--algorithm lepp-centroid --min-angle 25"]
+//
+// With --live, a big run instead (issue 27: "the window's frames stay under 50 ms while a
+// 1M-triangle recipe runs live"): the viewer opens the input with the recipe (which should
+// make a big mesh, e.g. --recipe "--max-area 3e-6" for about a million triangles), draws
+// 10 frames after it has opened, moves the inner vertex once, which goes live (workbench.hpp: goes_live), and
+// draws frames while the run goes (`watch`), then 30 idle ones. Printed: the frames drawn
+// while the re-meshing ran live (median, 95th percentile, worst) against the idle frames
+// after it, drawn in the same minutes.
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -22,6 +30,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -35,11 +44,13 @@ using meshstep::bench::parse_whole;
 using meshstep::bench::usage_error;
 
 constexpr const char* kUsage =
-    "usage: bench_workbench --view PATH [--vertices N] [--edits E] [--gl egl|osmesa] [--recipe OPTIONS]\n";
+    "usage: bench_workbench --view PATH [--vertices N] [--edits E] [--gl egl|osmesa] [--recipe OPTIONS] [--live]\n";
 
 struct Frame {
   double ms = 0;
   unsigned long long allocations = 0;
+  bool live = false;  // a live run went during the frame
+  long long position = 0;  // the cursor's position in the run shown
 };
 
 std::vector<Frame> read_frames(const fs::path& path) {
@@ -51,7 +62,10 @@ std::vector<Frame> read_frames(const fs::path& path) {
     unsigned long long index = 0;
     double end_ms = 0;
     Frame frame;
-    f >> index >> end_ms >> frame.ms >> frame.allocations;
+    long long shown = 0;
+    int live = 0;
+    f >> index >> end_ms >> frame.ms >> frame.allocations >> frame.position >> shown >> live;
+    frame.live = live == 1;
     frames.push_back(frame);
   }
   return frames;
@@ -95,17 +109,51 @@ std::pair<double, double> write_input(const fs::path& path, std::size_t ring, st
   return first;
 }
 
+// The frames of the workbench's live run (the last stretch marked live: the first is the
+// run the viewer opened with) against the idle frames after it.
+int report_live(const std::vector<Frame>& all, std::size_t vertices, const std::string& recipe) {
+  std::size_t end = all.size();
+  while (end > 0 && !all[end - 1].live) --end;
+  std::size_t begin = end;
+  while (begin > 0 && all[begin - 1].live) --begin;
+  // The new mesh's first frame: the first after the run whose cursor stands in another run
+  // (the new run's end); the idle frames are those after it.
+  std::size_t first = end;
+  while (first < all.size() && all[first].position == all[begin].position) ++first;
+  if (first == all.size()) {
+    std::fprintf(stderr, "bench_workbench: the new mesh was never shown\n");
+    return 1;
+  }
+  std::vector<double> live_ms, idle_ms;
+  for (std::size_t i = begin; i < end; ++i) live_ms.push_back(all[i].ms);
+  for (std::size_t i = first + 1; i < all.size(); ++i) idle_ms.push_back(all[i].ms);
+  if (live_ms.size() < 3 || idle_ms.size() < 10) {
+    std::fprintf(stderr, "bench_workbench: %zu frames while live, %zu idle after: did the edit go live?\n",
+                 live_ms.size(), idle_ms.size());
+    return 1;
+  }
+  // The frame after the run: its log opened, the new mesh's first picture asked for.
+  std::printf("| input | recipe | frames while live | live frame: median / p95 / worst | idle frame median (same run) | median ratio | the new mesh's first frame |\n");
+  std::printf("|---|---|--:|--:|--:|--:|--:|\n");
+  std::printf("| %zu vertices | %s | %zu | %.1f / %.1f / %.1f ms | %.1f ms | %.2f | %.1f ms |\n", vertices, recipe.c_str(),
+              live_ms.size(), quantile(live_ms, 0.5), quantile(live_ms, 0.95), quantile(live_ms, 1.0),
+              quantile(idle_ms, 0.5), quantile(live_ms, 0.5) / quantile(idle_ms, 0.5), all[first].ms);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string view, gl = "egl", recipe;
   std::size_t vertices = 1000, edits = 41;
+  bool live = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
     if (a == "--view" && has_value) view = argv[++i];
     else if (a == "--gl" && has_value) gl = argv[++i];
     else if (a == "--recipe" && has_value) recipe = argv[++i];
+    else if (a == "--live") live = true;
     else if (a == "--vertices" && has_value) {
       if (!parse_whole(argv[++i], vertices) || vertices < 10) return usage_error(argv[0], "--vertices: a whole number >= 10", kUsage);
     } else if (a == "--edits" && has_value) {
@@ -115,6 +163,7 @@ int main(int argc, char** argv) {
     }
   }
   if (view.empty()) return usage_error(argv[0], "--view PATH is required", kUsage);
+  if (live && recipe.empty()) return usage_error(argv[0], "--live needs a --recipe that makes a big mesh", kUsage);
   const fs::path dir = fs::temp_directory_path() / ("bench_workbench_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path input = dir / "ring.poly", script = dir / "script.txt", frames = dir / "frames.txt";
@@ -123,6 +172,13 @@ int main(int argc, char** argv) {
   {
     std::ofstream s(script);
     s.precision(17);
+    if (live) {
+      // `state` waits for the run the viewer opened with, which then opens; the ten frames
+      // after it are idle, so that the last frames marked live are the workbench's alone.
+      s << "state " << (dir / "opened.json").string() << "\nframes 10\nedit move " << x << " " << y << " " << x + 0.01 << " " << y << "\nwatch\nframes 30\nstate "
+        << (dir / "live.json").string() << "\nquit\n";
+      edits = 0;
+    }
     s << "frames 4\n";
     // Back and forth by a small step: the mesh changes near the vertex each time.
     for (std::size_t e = 0; e < edits; ++e) {
@@ -141,6 +197,21 @@ int main(int argc, char** argv) {
     return 1;
   }
   const std::vector<Frame> all = read_frames(frames);
+  if (live) {
+    // The new mesh's triangles and the live run's wall and processor time (state's fields).
+    std::ifstream in(dir / "live.json");
+    const std::string state((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto number = [&](const std::string& key) {
+      const auto at = state.find("\"" + key + "\": ");
+      return at == std::string::npos ? -1.0 : std::atof(state.c_str() + at + key.size() + 4);
+    };
+    std::printf("live re-meshing: %.0f triangles, %.0f ms (wall), %.0f ms (processor), live runs %.0f\n",
+                number("mesh_triangles"), number("remesh_ms"), number("remesh_cpu_ms"), number("live_remeshes"));
+    const int result = report_live(all, vertices, recipe);
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+    return result;
+  }
   if (all.size() < 3 * edits) {
     std::fprintf(stderr, "bench_workbench: %zu frames logged, expected at least %zu\n", all.size(), 3 * edits);
     return 1;

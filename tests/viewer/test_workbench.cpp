@@ -672,6 +672,59 @@ TEST_P(WorkbenchProgram, IdleFramesInEditModeDoNotAllocate) {
     EXPECT_EQ(allocations[i], 0u) << "idle frame " << i;
 }
 
+// A bigger run goes live (issue 27): an edit of a run of more than 20,000 vertices is
+// re-meshed by `meshstep` in a process of its own. Meanwhile the window keeps drawing (its
+// frames are logged, marked live) and shows the last good mesh; when it ends, the new mesh
+// is shown, the one `meshstep run` makes of the saved input.
+TEST_P(WorkbenchProgram, AnEditOfABigRunGoesLiveAndTheLastMeshStaysUntilItEnds) {
+  // 21,000 points in the unit square, a fixed pseudo-random sequence, inside its boundary.
+  const std::string input = path("big.poly");
+  {
+    std::ofstream out(input);
+    out.precision(17);
+    const std::size_t n = 21000;
+    out << n + 4 << " 2 0 0\n0 0 0\n1 1 0\n2 1 1\n3 0 1\n";
+    std::uint64_t state = 99;
+    const auto next = [&] {
+      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+      return 0.001 + 0.998 * static_cast<double>(state >> 11) / 9007199254740992.0;
+    };
+    for (std::size_t i = 0; i < n; ++i) out << i + 4 << " " << next() << " " << next() << "\n";
+    out << "4 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n0\n";
+  }
+  const std::string saved = path("moved.poly");
+  const fs::path frames = dir_ / "frames.txt";
+  VIEW_OR_SKIP(r, "state " + path("before.json") + "\nedit move 1 1 1.5 1.5\npeek " + path("during.json") +
+                      "\nframes 3\nstate " + path("after.json") + "\nsave " + saved + "\nquit\n",
+               input, "--min-angle 20 --frame-log " + frames.string());
+  const std::string before = read_text(path("before.json")), during = read_text(path("during.json"));
+  const std::string after = read_text(path("after.json"));
+  EXPECT_TRUE(has(during, "\"remesh_live\": true")) << during;
+  // The last good mesh (the run opened) stays on screen while the run goes; the new run is
+  // shown when it has ended.
+  EXPECT_EQ(field(during, "event_count"), field(before, "event_count")) << during;
+  EXPECT_NE(field(after, "event_count"), field(before, "event_count")) << after;
+  EXPECT_TRUE(has(after, "\"remesh_live\": false")) << after;
+  EXPECT_EQ(field(after, "live_remeshes"), 1) << after;
+  // The new mesh is the edited input's: `meshstep refine` of the saved file makes it.
+  const std::string out = path("moved_out");
+  const Result m = run(std::string(MESHSTEP_BINARY) + " refine " + saved + " --min-angle 20 -o " + out + " -q");
+  ASSERT_EQ(m.status, 0) << m.output;
+  EXPECT_EQ(static_cast<long long>(io::read_mesh(out).triangles.size()), field(after, "mesh_triangles")) << after;
+  // The window drew while the run went: frames logged with the live mark.
+  std::ifstream in(frames);
+  std::size_t live_frames = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream f(line);
+    double index = 0, end_ms = 0, frame_ms = 0, allocations = 0, position = 0, shown = 0;
+    int live = 0;
+    f >> index >> end_ms >> frame_ms >> allocations >> position >> shown >> live;
+    live_frames += live == 1;
+  }
+  EXPECT_GE(live_frames, 2u);
+}
+
 INSTANTIATE_TEST_SUITE_P(Modes, WorkbenchProgram, ::testing::Values("egl", "osmesa", "window"),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
