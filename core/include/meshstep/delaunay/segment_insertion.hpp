@@ -184,8 +184,10 @@ class SegmentInserter {
     const auto existing = markers_.find(edge_key(r, l));
     const int marker = existing != markers_.end() ? existing->second : unknown_marker;
     markers_.erase(edge_key(r, l));
-    const VertexId v = mesh().origin(tri_.insert_on_edge(x, e));
+    const HalfEdge out = tri_.insert_on_edge(x, e);
+    const VertexId v = mesh().origin(out);
     ++steiner_;
+    mend_edges_round(out);
     markers_[edge_key(r, v)] = marker;
     markers_[edge_key(v, l)] = marker;
     if constexpr (Rec::enabled) {
@@ -194,6 +196,21 @@ class SegmentInserter {
       tri_.set_constrained(tri_.find_edge(v, l), true, marker);
     }
     return v;
+  }
+
+  // insert_on_edge() flips only the edges opposite the new vertex: enough for a point
+  // exactly on the edge, where the edges from it are Delaunay by construction. A rounded
+  // crossing lies a hair off the edge, and when it is also within a few ulps of one of the
+  // edge's ends an edge from it to an apex can fail the in-circle test (issue 31: a crossing
+  // 4e-16 from a vertex left such an edge, and `check` refused the mesh). So the edges from
+  // the new vertex are checked too, with their quadrilaterals' outer edges as flips go.
+  void mend_edges_round(HalfEdge out) {
+    stack_.clear();
+    tri_.for_each_out_edge(out, [&](HalfEdge h) {
+      stack_.push_back(h);
+      stack_.push_back(mesh().next(h));
+    });
+    tri_.make_delaunay(stack_);
   }
 
   // Would splitting the edge of e (r -> l) at x leave every new triangle counterclockwise?
