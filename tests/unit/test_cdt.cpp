@@ -150,6 +150,29 @@ TEST(Cdt, RandomCrossingSegmentsInABox) {
   EXPECT_NEAR(area(m), 1.0, 1e-12);
 }
 
+// Issue 31 (fuzz_pipeline, regressions/pipeline/crossing_rounded_next_to_a_vertex, reduced):
+// segment 13-14 passes exactly through vertex 4 (3.5, 3), but is first split at rounded
+// crossings, so the piece that reaches vertex 4's constrained edge 4-5 misses the vertex by an
+// ulp and crosses the edge 4e-16 from it. The split there left an edge from the new vertex
+// to an apex failing the in-circle test on every data structure and insertion, and `check`
+// refused the mesh; triangulate_everywhere() checks each configuration.
+TEST(Cdt, CrossingRoundedNextToAVertexLeavesEveryEdgeDelaunay) {
+  Pslg in;
+  add_loop(in, {{0, 0}, {11, 0}, {11, 6}, {0, 6}});
+  in.points.insert(in.points.end(), {{3.5, 3}, {3.366025, 3.5}, {3, 3.866025}, {1.633975, 3.5},
+                                     {9, 2.133975}, {3, 2.133975}, {3.366028, 2.5},
+                                     {-7.079048, 4.016267}, {6.483733, 3.420952}, {4, 4}, {3, 2}});
+  in.segments.insert(in.segments.end(), {{4, 5, 2}, {5, 6, 2}, {7, 8, 3}, {9, 10, 3}, {11, 12, 4}, {13, 14, 5}});
+  TriangulateReport report;
+  const TriMesh m = triangulate_everywhere(in, false, &report);
+  // The case itself: a crossing rounded to a point next to vertex 4, not onto it.
+  bool near_vertex = false;
+  for (std::size_t v = in.points.size(); v < m.points.size(); ++v)
+    near_vertex = near_vertex || (m.points[v] != Point{3.5, 3} && std::abs(m.points[v].x - 3.5) < 1e-12 &&
+                                  std::abs(m.points[v].y - 3.0) < 1e-12);
+  EXPECT_TRUE(near_vertex) << "the input no longer makes a crossing next to vertex 4";
+}
+
 TEST(Cdt, SegmentsAlongAGridLineThroughCocircularPoints) {
   Pslg in;
   for (int i = 0; i < 12; ++i)

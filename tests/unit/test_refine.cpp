@@ -718,5 +718,45 @@ TEST(RefineDeterminism, SameInputSameMesh) {
   EXPECT_EQ(a.points.size(), b.points.size());
 }
 
+// Issue 31 (fuzz_refine_options, regressions/refine_options/bisection_checked_as_delaunay):
+// a .poly with a duplicate vertex, a zero-length segment and a segment given twice, refined
+// by offcenter's criteria to an area and a size bound, capped at 21 triangles. The harness
+// called the mesh invalid because it was made by longest-edge bisection, which does not keep
+// the Delaunay property; the same run with flips or cavities must give a constrained Delaunay
+// mesh, and with bisection a conforming one, on both data structures.
+TEST(RefineIssue31, DuplicateVerticesAndSegmentsRefineToValidMeshes) {
+  Pslg in;
+  in.points = {{0, 0}, {2, 0}, {4, 0}, {4, 0}, {8, 4}, {0, 4}};
+  in.segments = {{0, 1, 0}, {1, 0, 0}, {2, 3, 0}, {3, 4, 0}, {4, 5, 0}, {5, 0, 0}, {1, 4, 0}};
+  in.regions = {{{0, 2}, 1.0, 0.5}, {{1, 2}, 2.0, -1.0}};
+  for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel})
+    for (const int insertion : {0, 1, 2}) {
+      RefineOptions o = options_for(*find_algorithm("offcenter"));
+      o.triangulate.data_structure = ds;
+      o.triangulate.convex_hull = true;
+      o.triangulate.insertion = insertion == 1 ? Insertion::cavity : Insertion::flip;
+      if (insertion == 2) {
+        o.insertion = RefineInsertion::bisection;
+        o.delete_free = FreeVertexDeletion::unless_sized;
+      }
+      o.encroachment = Encroachment::circle;
+      o.order = RefineOrder::worst_first;
+      o.criteria.min_angle_deg = 0.0;
+      o.criteria.max_area = 8.0 * 4.0 / 16384.0;
+      const double size = std::hypot(8.0, 4.0) / 15.0;
+      o.criteria.size = [size](const Point&) { return size; };
+      o.criteria.max_steiner = 64;
+      o.criteria.max_triangles = 21;
+      RefineReport report;
+      const TriMesh m = refine(in, o, &report);
+      const std::string what = std::string(to_string(ds)) + (insertion == 2 ? "/bisection" : insertion == 1 ? "/cavity" : "/flip");
+      EXPECT_GT(report.steiner_vertices, 0u) << what;
+      CheckOptions c;
+      c.delaunay = o.insertion == RefineInsertion::delaunay;
+      const CheckReport check = check_mesh(m, &in, c);
+      EXPECT_TRUE(check.ok) << what << ": " << (check.problems.empty() ? std::string() : check.problems.front());
+    }
+}
+
 }  // namespace
 }  // namespace meshstep
