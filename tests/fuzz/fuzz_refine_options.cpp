@@ -98,8 +98,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     RefineReport report;
     const TriMesh mesh = refine(input, options, &report);
     // Longest-edge bisection makes a conforming mesh, not a Delaunay one (docs/refinement.md):
-    // checking it for the Delaunay property reported every bisection run that got past the
-    // bounds it refuses (issue 31, regressions/refine_options/bisection_checked_as_delaunay).
+    // checking it for the Delaunay property reported a bisection run that got past the bounds
+    // bisection refuses (issue 31, regressions/refine_options/bisection_checked_as_delaunay).
     CheckOptions check_options;
     check_options.delaunay = options.insertion == RefineInsertion::delaunay;
     const CheckReport check = check_mesh(mesh, &input, check_options);
