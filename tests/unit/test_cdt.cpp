@@ -1,9 +1,15 @@
 // Constrained Delaunay triangulation of PSLGs: holes, crossings, T-junctions, overlaps.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <random>
 #include <set>
+#include <string>
+#include <thread>
 
 #include "meshstep/error.hpp"
 #include "triangulate_support.hpp"
@@ -182,6 +188,54 @@ TEST(Cdt, SegmentsAlongAGridLineThroughCocircularPoints) {
   TriangulateReport report;
   triangulate_everywhere(in, true, &report);
   EXPECT_GT(report.split_segments, 20u);
+}
+
+// Runs f in a child process for at most `seconds`: "ended", "threw" or "did not end". A run
+// that never ends must fail the test, not hang the suite until ctest's timeout.
+template <class F>
+std::string run_with_deadline(double seconds, F&& f) {
+  const pid_t child = fork();
+  if (child == 0) {
+    try {
+      f();
+    } catch (...) {
+      _exit(2);
+    }
+    _exit(0);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  int status = 0;
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (waitpid(child, &status, WNOHANG) == child)
+      return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? "ended" : "threw";
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  kill(child, SIGKILL);
+  waitpid(child, &status, 0);
+  return "did not end";
+}
+
+// fuzz_polygons' timeout (issue 31), reduced: the segment (0,3)-(1,5) ends exactly on the
+// line y = x + 4 of (0,4)-(8,12), whose piece there, between two rounded crossings, passes
+// an ulp beside (1,5). Their crossing, rounded an ulp beside (1,5), made a vertex whose
+// pieces crossed (0,4)-(1,5) an ulp further, and so on without end. The crossing now goes
+// through (1,5) itself.
+TEST(Cdt, CrossingRoundedBesideASegmentsEndEnds) {
+  Pslg in;
+  in.points = {{0, 4}, {4, 4}, {0, 3}, {10, 32}, {8, 12}, {3, 1}, {0, 0}, {1, 4}, {8, 0}, {1, 5}};
+  for (const auto& [a, b] : std::vector<std::pair<std::uint32_t, std::uint32_t>>{
+           {0, 1}, {1, 2}, {2, 3}, {3, 1}, {0, 4}, {0, 5}, {0, 8}, {6, 7}, {2, 9}, {9, 0}})
+    in.segments.push_back({a, b, 1});
+  for (const TriangulateOptions& o : testing::all_configurations(true))
+    ASSERT_EQ(run_with_deadline(20.0, [&] { triangulate(in, o); }), "ended") << testing::describe(o);
+  TriangulateReport report;
+  const TriMesh m = triangulate_everywhere(in, true, &report);  // checked, the same on both structures
+  // No vertex crowds (1,5): the crossing went through it, not an ulp beside.
+  std::size_t near = 0;
+  for (const Point& p : m.points) near += std::fabs(p.x - 1.0) < 1e-9 && std::fabs(p.y - 5.0) < 1e-9;
+  EXPECT_EQ(near, 1u);
+  // Ten segments cross at most once per pair.
+  EXPECT_LE(report.steiner_vertices, 45u);
 }
 
 TEST(Cdt, SegmentNamingAMissingVertexIsAnInputError) {

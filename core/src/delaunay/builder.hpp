@@ -137,9 +137,10 @@ class Builder {
       rec.phase_begin(replay::Phase::recover_segments);
       std::vector<VertexId> internal_of(input_count);
       for (VertexId i = 0; i < input_count; ++i) internal_of[input_of_[i]] = i;
-      for (const Segment& s : in_.segments) {
+      for (std::size_t i = 0; i < in_.segments.size(); ++i) {
+        const Segment& s = in_.segments[i];
         const VertexId a = representative(internal_of[s.a]), b = representative(internal_of[s.b]);
-        if (a != b) segments_.insert(a, b, s.marker);
+        if (a != b) segments_.insert(a, b, s.marker, static_cast<std::uint32_t>(i));
       }
       rec.phase_end(replay::Phase::recover_segments);
     }

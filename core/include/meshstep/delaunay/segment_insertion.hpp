@@ -7,10 +7,21 @@
 //  - a vertex lying on a-b: the segment is split there (a T-junction);
 //  - a constrained edge crossing a-b: both are split at their intersection point, which is
 //    rounded to doubles and becomes a Steiner vertex.
+// Two input segments cross at one point at most, so a run makes at most one crossing
+// vertex per pair of input segments: that bound is what makes it end. Rounding can break
+// it: when a segment ends exactly on another whose piece there runs between two rounded
+// crossings, the piece passes an ulp beside the end, and their "crossing" rounded to an
+// ulp beside it again; its pieces then cross the same pair's once more, an ulp further,
+// without end (fuzz_polygons, issue 31). So a crossing within rounding of an endpoint of
+// either segment goes through that endpoint, and a pair of input segments that would
+// cross a second time is refused.
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <initializer_list>
+#include <limits>
 #include <deque>
 #include <optional>
 #include <string>
@@ -20,6 +31,7 @@
 #include <vector>
 
 #include "meshstep/delaunay/triangulation.hpp"
+#include "meshstep/error.hpp"
 #include "meshstep/geometry/magnitudes.hpp"
 
 namespace meshstep {
@@ -30,13 +42,15 @@ class SegmentInserter {
   explicit SegmentInserter(Triangulation<Mesh, Rec>& tri) : tri_(tri) {}
 
   // One step: the segment a-b with every piece it is split into.
-  void insert(VertexId a, VertexId b, int marker) {
+  // `index` names the segment among the input's (for messages and to count the crossings
+  // of each pair); distinct segments need distinct indices.
+  void insert(VertexId a, VertexId b, int marker, std::uint32_t index) {
     tri_.recorder().step_begin(tri_.mesh(), replay::StepKind::recover_segment, a, b);
-    pending_.push_back({a, b, marker});
+    pending_.push_back({a, b, marker, index});
     while (!pending_.empty()) {
       const Piece piece = pending_.back();
       pending_.pop_back();
-      insert_piece(piece.a, piece.b, piece.marker);
+      insert_piece(piece);
     }
   }
 
@@ -56,21 +70,30 @@ class SegmentInserter {
   struct Piece {
     VertexId a, b;
     int marker;
+    std::uint32_t source;  // the input segment it is a piece of
   };
+  static constexpr std::uint32_t kNoSource = static_cast<std::uint32_t>(-1);
 
   const Point& P(VertexId v) const { return tri_.point(v); }
   const Mesh& mesh() const { return tri_.mesh(); }
 
-  void constrain(HalfEdge h, int marker) {
+  void constrain(HalfEdge h, int marker, std::uint32_t source) {
     tri_.set_constrained(h, true, marker);
-    markers_[edge_key(mesh().origin(h), mesh().dest(h))] = marker;
+    const std::uint64_t key = edge_key(mesh().origin(h), mesh().dest(h));
+    markers_[key] = marker;
+    sources_[key] = source;
+  }
+  std::uint32_t source_of(VertexId r, VertexId l) const {
+    const auto it = sources_.find(edge_key(r, l));
+    return it == sources_.end() ? kNoSource : it->second;
   }
 
   // Inserts the piece a-b, or pushes the pieces it must be split into onto pending_.
-  void insert_piece(VertexId a, VertexId b, int marker) {
+  void insert_piece(const Piece& piece) {
+    const VertexId a = piece.a, b = piece.b;
     if (a == b) return;
     if (const HalfEdge h = tri_.find_edge(a, b); h != kNone) {
-      constrain(h, marker);
+      constrain(h, piece.marker, piece.source);
       return;
     }
     // Find the face around a whose wedge holds the direction to b.
@@ -80,7 +103,7 @@ class SegmentInserter {
       const VertexId u = mesh().dest(h), w = mesh().apex(h);
       if (u != kInfiniteVertex && orient2d(P(a), P(u), P(b)) == 0.0 &&
           strictly_between(P(a), P(b), P(u))) {
-        split_at_vertex(a, u, b, marker);  // u lies on the segment
+        split_at_vertex(piece, u);  // u lies on the segment
         return;
       }
       if (u != kInfiniteVertex && w != kInfiniteVertex && orient2d(P(a), P(u), P(b)) > 0.0 &&
@@ -97,7 +120,7 @@ class SegmentInserter {
     HalfEdge e = entry;
     for (;;) {
       if (mesh().is_constrained(e)) {
-        split_crossing(a, b, e, marker);
+        split_crossing(piece, e);
         return;
       }
       crossed_.push_back({mesh().origin(e), mesh().dest(e)});
@@ -106,7 +129,7 @@ class SegmentInserter {
       if (y == b) break;
       const double oy = orient2d(P(a), P(b), P(y));
       if (oy == 0.0) {
-        split_at_vertex(a, y, b, marker);
+        split_at_vertex(piece, y);
         return;
       }
       e = oy > 0.0 ? mesh().next(t) : mesh().prev(t);
@@ -114,38 +137,42 @@ class SegmentInserter {
     remove_crossings(a, b);
     const HalfEdge ab = tri_.find_edge(a, b);
     if (ab == kNone) throw std::logic_error("segment insertion: segment not recovered");
-    constrain(ab, marker);
+    constrain(ab, piece.marker, piece.source);
     restore_delaunay();
   }
 
-  void split_at_vertex(VertexId a, VertexId mid, VertexId b, int marker) {
+  void split_at_vertex(const Piece& piece, VertexId mid) {
     ++splits_;
-    pending_.push_back({mid, b, marker});
-    pending_.push_back({a, mid, marker});
+    pending_.push_back({mid, piece.b, piece.marker, piece.source});
+    pending_.push_back({piece.a, mid, piece.marker, piece.source});
   }
 
   // a-b crosses the constrained edge e = r->l: split both at their intersection point.
-  void split_crossing(VertexId a, VertexId b, HalfEdge e, int marker) {
+  void split_crossing(const Piece& piece, HalfEdge e) {
+    const VertexId a = piece.a, b = piece.b;
+    const int marker = piece.marker;
     const VertexId r = mesh().origin(e), l = mesh().dest(e);
     const Point x = intersection(P(a), P(b), P(r), P(l));
     refuse_out_of_range(x);
     const auto existing = markers_.find(edge_key(r, l));
     const int old_marker = existing != markers_.end() ? existing->second : marker;
+    const std::uint32_t old_source = source_of(r, l);
     ++splits_;
-    // Rounding can land the point on an endpoint: route the pieces through that vertex.
-    for (const VertexId z : {a, b, r, l}) {
-      if (x == P(z)) {
-        if (z == r || z == l) {
-          split_at_vertex(a, z, b, marker);
-        } else {
-          release(e);
-          pending_.push_back({a, b, marker});  // retried once the old constraint is re-routed
-          pending_.push_back({z, l, old_marker});
-          pending_.push_back({r, z, old_marker});
-        }
-        return;
+    // The rounded point on an endpoint, or within rounding of one (where a segment ends on
+    // the other's line): route the pieces through that vertex.
+    if (const VertexId z = endpoint_within_rounding(x, {a, b, r, l}); z != kNone) {
+      count_crossing(piece.source, old_source, z);
+      if (z == r || z == l) {
+        split_at_vertex(piece, z);
+      } else {
+        release(e);
+        pending_.push_back(piece);  // retried once the old constraint is re-routed
+        pending_.push_back({z, l, old_marker, old_source});
+        pending_.push_back({r, z, old_marker, old_source});
       }
+      return;
     }
+    count_crossing(piece.source, old_source, kNone);
     if (!splits_cleanly(e, x)) {
       // Rounded off r-l far enough that splitting the edge there would fold a triangle
       // (x close to a vertex of the two faces, or a face nearly flat): x goes in as any
@@ -153,16 +180,57 @@ class SegmentInserter {
       // old edge is released only after, so the insertion runs on a CDT (its flips mend
       // only what the new vertex breaks).
       const VertexId v = insert_anywhere(x, e);
+      count_crossing(piece.source, old_source, v);
       release(tri_.find_edge(r, l));
-      pending_.push_back({v, b, marker});
-      pending_.push_back({a, v, marker});
-      pending_.push_back({v, l, old_marker});
-      pending_.push_back({r, v, old_marker});
+      pending_.push_back({v, b, marker, piece.source});
+      pending_.push_back({a, v, marker, piece.source});
+      pending_.push_back({v, l, old_marker, old_source});
+      pending_.push_back({r, v, old_marker, old_source});
       return;
     }
     const VertexId v = split_constrained(e, x, marker);
-    pending_.push_back({v, b, marker});
-    pending_.push_back({a, v, marker});
+    count_crossing(piece.source, old_source, v);
+    pending_.push_back({v, b, marker, piece.source});
+    pending_.push_back({a, v, marker, piece.source});
+  }
+
+  // Of the vertices `ends`, the nearest to x if it lies within a few ulps of x in both
+  // coordinates (ulps of the largest coordinate of the vertices, the scale of the rounding
+  // that made x); else kNone. Snapping there moves a constraint by no more than rounding
+  // the crossing to doubles already does.
+  VertexId endpoint_within_rounding(const Point& x, std::initializer_list<VertexId> ends) const {
+    constexpr double kSnapUlps = 4.0;
+    double largest = std::max(std::fabs(x.x), std::fabs(x.y));
+    for (const VertexId z : ends) largest = std::max({largest, std::fabs(P(z).x), std::fabs(P(z).y)});
+    const double tolerance = kSnapUlps * largest * std::numeric_limits<double>::epsilon();
+    VertexId best = kNone;
+    double best_distance = 0.0;
+    for (const VertexId z : ends) {
+      const double dx = std::fabs(x.x - P(z).x), dy = std::fabs(x.y - P(z).y);
+      if (dx > tolerance || dy > tolerance) continue;
+      if (best == kNone || std::max(dx, dy) < best_distance) best = z, best_distance = std::max(dx, dy);
+    }
+    return best;
+  }
+
+  // Records that input segments s and t cross at the vertex `at` (kNone: at a vertex still
+  // to be made, recorded by a second call once it is). Two straight segments cross once: a
+  // second crossing of the same pair elsewhere can only be rounding feeding on itself, and
+  // would not end, so the input is refused instead.
+  void count_crossing(std::uint32_t s, std::uint32_t t, VertexId at) {
+    if (s == kNoSource || t == kNoSource || s == t) return;
+    const std::uint64_t key = edge_key(s, t);
+    const auto [it, added] = crossings_.emplace(key, at);
+    if (added || it->second == at) return;  // new, or the same crossing met again at its vertex
+    if (it->second == kNone) {              // the vertex of the crossing just checked
+      it->second = at;
+      return;
+    }
+    throw InputError("input segments " + std::to_string(std::min(s, t) + 1) + " and " +
+                     std::to_string(std::max(s, t) + 1) +
+                     " (counting from 1) cross a second time: their crossing, rounded to "
+                     "doubles, lies so close to another vertex or segment that splitting them there "
+                     "would not end; move that vertex off the other segment, or join them at a shared vertex");
   }
 
   // Unconstrains the edge of e, to be recovered in pieces through a new vertex. The mesh
@@ -173,6 +241,7 @@ class SegmentInserter {
     const VertexId r = mesh().origin(e), l = mesh().dest(e);
     tri_.set_constrained(e, false, 0);
     markers_.erase(edge_key(r, l));
+    sources_.erase(edge_key(r, l));
     stack_.assign(1, e);
     tri_.make_delaunay(stack_);
   }
@@ -183,13 +252,17 @@ class SegmentInserter {
     const VertexId r = mesh().origin(e), l = mesh().dest(e);
     const auto existing = markers_.find(edge_key(r, l));
     const int marker = existing != markers_.end() ? existing->second : unknown_marker;
+    const std::uint32_t source = source_of(r, l);
     markers_.erase(edge_key(r, l));
+    sources_.erase(edge_key(r, l));
     const HalfEdge out = tri_.insert_on_edge(x, e);
     const VertexId v = mesh().origin(out);
     ++steiner_;
     mend_edges_round(out);
     markers_[edge_key(r, v)] = marker;
     markers_[edge_key(v, l)] = marker;
+    sources_[edge_key(r, v)] = source;
+    sources_[edge_key(v, l)] = source;
     if constexpr (Rec::enabled) {
       // The halves kept the old edge's flag; record that they carry its marker too.
       tri_.set_constrained(tri_.find_edge(r, v), true, marker);
@@ -313,6 +386,8 @@ class SegmentInserter {
   Triangulation<Mesh, Rec>& tri_;
   std::optional<ExactRange> range_;  // made at the first crossing
   std::unordered_map<std::uint64_t, int> markers_;
+  std::unordered_map<std::uint64_t, std::uint32_t> sources_;  // input segment of each constrained edge
+  std::unordered_map<std::uint64_t, VertexId> crossings_;  // pair of input segments -> where they cross (kNone: a new vertex)
   std::vector<Piece> pending_;
   std::vector<Pair> crossed_;
   std::deque<Pair> queue_;
