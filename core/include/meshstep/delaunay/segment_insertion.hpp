@@ -7,14 +7,14 @@
 //  - a vertex lying on a-b: the segment is split there (a T-junction);
 //  - a constrained edge crossing a-b: both are split at their intersection point, which is
 //    rounded to doubles and becomes a Steiner vertex.
-// Two input segments cross at one point at most, so a run makes at most one crossing
-// vertex per pair of input segments: that bound is what makes it end. Rounding can break
+// Two input segments cross at one point at most, so a run makes about one crossing vertex
+// per pair of input segments: a bound on that is what makes it end. Rounding can break
 // it: when a segment ends exactly on another whose piece there runs between two rounded
 // crossings, the piece passes an ulp beside the end, and their "crossing" rounded to an
 // ulp beside it again; its pieces then cross the same pair's once more, an ulp further,
 // without end (fuzz_polygons, issue 31). So a crossing within rounding of an endpoint of
-// either segment goes through that endpoint, and a pair of input segments that would
-// cross a second time is refused.
+// either segment goes through that endpoint, and a pair of input segments whose pieces
+// cross more than a few times is refused.
 #pragma once
 
 #include <algorithm>
@@ -161,7 +161,7 @@ class SegmentInserter {
     // The rounded point on an endpoint, or within rounding of one (where a segment ends on
     // the other's line): route the pieces through that vertex.
     if (const VertexId z = endpoint_within_rounding(x, {a, b, r, l}); z != kNone) {
-      count_crossing(piece.source, old_source, z);
+      count_crossing(piece.source, old_source);
       if (z == r || z == l) {
         split_at_vertex(piece, z);
       } else {
@@ -172,7 +172,7 @@ class SegmentInserter {
       }
       return;
     }
-    count_crossing(piece.source, old_source, kNone);
+    count_crossing(piece.source, old_source);
     if (!splits_cleanly(e, x)) {
       // Rounded off r-l far enough that splitting the edge there would fold a triangle
       // (x close to a vertex of the two faces, or a face nearly flat): x goes in as any
@@ -180,7 +180,6 @@ class SegmentInserter {
       // old edge is released only after, so the insertion runs on a CDT (its flips mend
       // only what the new vertex breaks).
       const VertexId v = insert_anywhere(x, e);
-      count_crossing(piece.source, old_source, v);
       release(tri_.find_edge(r, l));
       pending_.push_back({v, b, marker, piece.source});
       pending_.push_back({a, v, marker, piece.source});
@@ -189,48 +188,44 @@ class SegmentInserter {
       return;
     }
     const VertexId v = split_constrained(e, x, marker);
-    count_crossing(piece.source, old_source, v);
     pending_.push_back({v, b, marker, piece.source});
     pending_.push_back({a, v, marker, piece.source});
   }
 
-  // Of the vertices `ends`, the nearest to x if it lies within a few ulps of x in both
-  // coordinates (ulps of the largest coordinate of the vertices, the scale of the rounding
-  // that made x); else kNone. Snapping there moves a constraint by no more than rounding
-  // the crossing to doubles already does.
+  // Of the vertices `ends`, the nearest to x if it lies within a few ulps of x in each
+  // coordinate (ulps of that coordinate's own magnitude: the scale of the rounding that made
+  // x, whatever the other points' magnitudes); else kNone. Snapping there moves a
+  // constraint by no more than rounding the crossing to doubles already does.
   VertexId endpoint_within_rounding(const Point& x, std::initializer_list<VertexId> ends) const {
-    constexpr double kSnapUlps = 4.0;
-    double largest = std::max(std::fabs(x.x), std::fabs(x.y));
-    for (const VertexId z : ends) largest = std::max({largest, std::fabs(P(z).x), std::fabs(P(z).y)});
-    const double tolerance = kSnapUlps * largest * std::numeric_limits<double>::epsilon();
+    constexpr double kSnapUlps = 2.0;
+    const auto within = [](double c, double d) {
+      return std::fabs(c - d) <= kSnapUlps * std::numeric_limits<double>::epsilon() * std::max(std::fabs(c), std::fabs(d));
+    };
     VertexId best = kNone;
     double best_distance = 0.0;
     for (const VertexId z : ends) {
-      const double dx = std::fabs(x.x - P(z).x), dy = std::fabs(x.y - P(z).y);
-      if (dx > tolerance || dy > tolerance) continue;
-      if (best == kNone || std::max(dx, dy) < best_distance) best = z, best_distance = std::max(dx, dy);
+      if (!within(x.x, P(z).x) || !within(x.y, P(z).y)) continue;
+      const double distance = std::max(std::fabs(x.x - P(z).x), std::fabs(x.y - P(z).y));
+      if (best == kNone || distance < best_distance) best = z, best_distance = distance;
     }
     return best;
   }
 
-  // Records that input segments s and t cross at the vertex `at` (kNone: at a vertex still
-  // to be made, recorded by a second call once it is). Two straight segments cross once: a
-  // second crossing of the same pair elsewhere can only be rounding feeding on itself, and
-  // would not end, so the input is refused instead.
-  void count_crossing(std::uint32_t s, std::uint32_t t, VertexId at) {
+  // Counts a crossing of the pieces of input segments s and t. Two straight segments cross
+  // once; their pieces, bent by rounded crossings with others, may cross a few times more
+  // near that point (pencils of nearly concurrent segments), but a pair meeting more than
+  // kMaxCrossingsPerPair times is rounding feeding on itself, which would not end: the
+  // input is refused. This bound on the vertices a pair can make is what ends every run.
+  void count_crossing(std::uint32_t s, std::uint32_t t) {
+    constexpr int kMaxCrossingsPerPair = 16;
     if (s == kNoSource || t == kNoSource || s == t) return;
-    const std::uint64_t key = edge_key(s, t);
-    const auto [it, added] = crossings_.emplace(key, at);
-    if (added || it->second == at) return;  // new, or the same crossing met again at its vertex
-    if (it->second == kNone) {              // the vertex of the crossing just checked
-      it->second = at;
-      return;
-    }
+    if (++crossings_[edge_key(s, t)] <= kMaxCrossingsPerPair) return;
     throw InputError("input segments " + std::to_string(std::min(s, t) + 1) + " and " +
-                     std::to_string(std::max(s, t) + 1) +
-                     " (counting from 1) cross a second time: their crossing, rounded to "
-                     "doubles, lies so close to another vertex or segment that splitting them there "
-                     "would not end; move that vertex off the other segment, or join them at a shared vertex");
+                     std::to_string(std::max(s, t) + 1) + " (counting from 1) cross more than " +
+                     std::to_string(kMaxCrossingsPerPair) +
+                     " times: their crossing, rounded to doubles, lies so close to another vertex or segment "
+                     "that splitting them there would not end; move that vertex off the other segment, or "
+                     "join them at a shared vertex");
   }
 
   // Unconstrains the edge of e, to be recovered in pieces through a new vertex. The mesh
@@ -387,7 +382,7 @@ class SegmentInserter {
   std::optional<ExactRange> range_;  // made at the first crossing
   std::unordered_map<std::uint64_t, int> markers_;
   std::unordered_map<std::uint64_t, std::uint32_t> sources_;  // input segment of each constrained edge
-  std::unordered_map<std::uint64_t, VertexId> crossings_;  // pair of input segments -> where they cross (kNone: a new vertex)
+  std::unordered_map<std::uint64_t, int> crossings_;  // pair of input segments -> how many times their pieces crossed
   std::vector<Piece> pending_;
   std::vector<Pair> crossed_;
   std::deque<Pair> queue_;
