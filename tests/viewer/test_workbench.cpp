@@ -711,7 +711,9 @@ TEST_P(WorkbenchProgram, AnEditOfABigRunGoesLiveAndTheLastMeshStaysUntilItEnds) 
   const Result m = run(std::string(MESHSTEP_BINARY) + " refine " + saved + " --min-angle 20 -o " + out + " -q");
   ASSERT_EQ(m.status, 0) << m.output;
   EXPECT_EQ(static_cast<long long>(io::read_mesh(out).triangles.size()), field(after, "mesh_triangles")) << after;
-  // The window drew while the run went: frames logged with the live mark.
+  // The window drew while the run went: frames logged with the live mark (at least the
+  // peek's; how many more depends on how soon the run ends: on a quiet machine a window's
+  // three frames can outlast it).
   std::ifstream in(frames);
   std::size_t live_frames = 0;
   for (std::string line; std::getline(in, line);) {
@@ -722,7 +724,7 @@ TEST_P(WorkbenchProgram, AnEditOfABigRunGoesLiveAndTheLastMeshStaysUntilItEnds) 
     f >> index >> end_ms >> frame_ms >> allocations >> position >> shown >> live;
     live_frames += live == 1;
   }
-  EXPECT_GE(live_frames, 2u);
+  EXPECT_GE(live_frames, 1u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, WorkbenchProgram, ::testing::Values("egl", "osmesa", "window"),
