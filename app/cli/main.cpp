@@ -8,6 +8,7 @@
 
 #include "command.hpp"
 #include "console.hpp"
+#include "render/leak_check.hpp"
 
 namespace {
 
@@ -19,6 +20,7 @@ constexpr const char* kFooter =
 
 int main(int argc, char** argv) {
   using namespace meshstep::app;
+  meshstep::render::check_leaks_before_gl_in_this_program();
   CLI::App app{"meshstep " MESHSTEP_VERSION
                ": 2D Delaunay and constrained Delaunay triangulation, Delaunay\n"
                "refinement algorithms, terrain approximation, mesh checking, replay logs to\n"

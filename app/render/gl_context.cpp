@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "gl.hpp"
+#include "leak_check.hpp"
 
 namespace meshstep::render {
 
@@ -21,7 +22,7 @@ std::string text_of(GLenum what) {
 
 }  // namespace
 
-GlContext::GlContext() : serial_(next_serial++) {}
+GlContext::GlContext() : serial_(next_serial++) { check_leaks_now_if_gl_comes_next(); }
 
 GlProc GlContext::load_trampoline(void* self, const char* name) {
   return static_cast<const GlContext*>(self)->proc_address(name);

@@ -13,6 +13,7 @@
 #include "common/tour_run.hpp"
 #include "meshstep/error.hpp"
 #include "render/gl_context.hpp"
+#include "render/leak_check.hpp"
 #include "compare_view.hpp"
 #include "open_input.hpp"
 #include "run.hpp"
@@ -71,6 +72,7 @@ bool parse_size(const std::string& text, int& w, int& h) {
 
 int main(int argc, char** argv) {
   const auto started = std::chrono::steady_clock::now();
+  meshstep::render::check_leaks_before_gl_in_this_program();
   CLI::App app(
       "meshstep view: scrub a recorded run forward and backward and see why every point went where it did.\n"
       "INPUT is a replay log (written with --record), a mesh PREFIX, or a .poly/.node input (triangulated,\n"

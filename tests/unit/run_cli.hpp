@@ -43,21 +43,6 @@ inline std::string json_field(const std::string& json, const std::string& key) {
   return json.substr(start, json.find_first_of(",}", start) - start);
 }
 
-// Under AddressSanitizer, LeakSanitizer's check at a child's exit can die with a fatal error
-// of its own (its tracer, among llvmpipe's threads, in a program that drew with GL): the
-// children started after this call run without that check (memory errors are still
-// caught), as the viewer tests' programs do. Nothing changes in other builds.
-inline void gl_children_skip_leak_check() {
-#if defined(__SANITIZE_ADDRESS__)
-  static const bool done = [] {
-    const char* given = std::getenv("ASAN_OPTIONS");
-    const std::string options = given && *given ? std::string(given) + ":detect_leaks=0" : "detect_leaks=0";
-    return ::setenv("ASAN_OPTIONS", options.c_str(), 1) == 0;
-  }();
-  (void)done;
-#endif
-}
-
 inline CommandResult run_meshstep(const std::string& args, const std::filesystem::path& dir) {
   const std::filesystem::path out = dir / "stdout.txt", err = dir / "stderr.txt";
   const std::string command =

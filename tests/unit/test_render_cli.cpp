@@ -20,7 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 using meshstep::testing::CommandResult;
 using meshstep::testing::ffmpeg_works;
-using meshstep::testing::gl_children_skip_leak_check;
 using meshstep::testing::run_meshstep;
 using meshstep::testing::slurp;
 using meshstep::testing::TempDir;
@@ -304,7 +303,6 @@ PixelBox drawn_box(const meshstep::scene::Image& image, int legend_left) {
 // planar run's log has no heights, and --spin needs --orbit: both refused, nothing written.
 TEST_F(RenderCli, TerrainRunTurnsIn3D) {
   if (!gl_available()) GTEST_SKIP() << "no OpenGL on this machine";
-  gl_children_skip_leak_check();  // LeakSanitizer's tracer died at the 3D export's exit, 3 of 3
   const fs::path grid = file("hill.asc");
   {
     std::ofstream out(grid);
