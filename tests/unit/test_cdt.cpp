@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "meshstep/error.hpp"
+#include "meshstep/geometry/predicates.hpp"
 #include "triangulate_support.hpp"
 
 namespace meshstep {
@@ -239,6 +240,26 @@ TEST(Cdt, CrossingRoundedBesideASegmentsEndEnds) {
   EXPECT_EQ(near, 1u);
   // Ten segments cross at most once per pair.
   EXPECT_LE(report.steiner_vertices, 45u);
+}
+
+TEST(Cdt, CrossingOfASegmentAndAHugeOneLiesOnBoth) {
+  // A segment from (0.1, 0.7) to near (9e15, 2.9e16) crosses (0, 1)-(2, 0) near (0.167,
+  // 0.916). In doubles, the distance of (0, 1) to the huge segment's line lost every digit
+  // and the crossing, clamped into the segments' boxes, came out at (0.1, 1): on neither
+  // (issue 31, fuzz_refine_options).
+  Pslg in;
+  in.points = {{1.5, 4.1}, {0.0, 1.0}, {0.1, 0.7}, {9033723068545808.0, 29033723068545808.0}, {2.0, 0.0}};
+  in.segments = {{1, 4, 0}, {3, 2, 0}};
+  const TriMesh m = triangulate_everywhere(in, true);  // checked, the same on both structures
+  ASSERT_EQ(m.points.size(), 6u);
+  const Point& x = m.points[5];
+  // On the short segment's line, to within rounding of its unit coordinates ...
+  EXPECT_LT(std::fabs(orient2d_value(in.points[1], in.points[4], x)), 1e-15);
+  // ... and where the huge one crosses it: from (0.1, 0.7) along (X, Y), less 0.1 and 0.7
+  // (17 orders of magnitude below X and Y), the line y = 1 - x/2 is met at this x.
+  const double X = in.points[3].x, Y = in.points[3].y, tx = 0.1 + 0.25 * X / (Y + 0.5 * X);
+  EXPECT_NEAR(x.x, tx, 1e-14);
+  EXPECT_NEAR(x.y, 1.0 - 0.5 * tx, 1e-14);
 }
 
 TEST(Cdt, SegmentNamingAMissingVertexIsAnInputError) {

@@ -758,5 +758,33 @@ TEST(RefineIssue31, DuplicateVerticesAndSegmentsRefineToValidMeshes) {
     }
 }
 
+// The hour-long fuzz of refine_options after stop 34 (regressions/refine_options/
+// crossing_of_a_huge_segment_left_uncovered): a segment from (0.1, 0.7) to a vertex near
+// (9e15, 2.9e16) crosses the segment (0, 1)-(2, 0); offcenter on the convex hull, on dcel,
+// wrote a mesh in which the short segment was not covered by edges.
+TEST(RefineIssue31, CrossingOfAHugeSegmentStaysCovered) {
+  Pslg in;
+  in.points = {{1.5, 4.1}, {0.0, 1.0}, {0.1, 0.7}, {9033723068545808.0, 29033723068545808.0}, {2.0, 0.0}};
+  in.segments = {{1, 4, 0}, {3, 2, 0}};
+  for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel})
+    for (const Insertion insertion : {Insertion::flip, Insertion::cavity}) {
+      RefineOptions o = options_for(*find_algorithm("offcenter"));
+      o.triangulate.data_structure = ds;
+      o.triangulate.insertion = insertion;
+      o.triangulate.convex_hull = true;
+      o.encroachment = Encroachment::circle;
+      o.order = RefineOrder::worst_first;
+      o.criteria.min_angle_deg = 106 * (59.9 / 255.0);
+      o.criteria.max_angle_deg = 60.5 + (200 - 128) * (119.5 / 127.0);
+      o.criteria.max_area = in.points[3].x * in.points[3].y / 8.0;  // the box from (0, 0), over 8
+      o.criteria.max_steiner = 61;
+      RefineReport report;
+      const TriMesh m = refine(in, o, &report);
+      const std::string what = std::string(to_string(ds)) + (insertion == Insertion::cavity ? "/cavity" : "/flip");
+      const CheckReport check = check_mesh(m, &in, {});
+      EXPECT_TRUE(check.ok) << what << ": " << (check.problems.empty() ? std::string() : check.problems.front());
+    }
+}
+
 }  // namespace
 }  // namespace meshstep

@@ -59,6 +59,13 @@ struct Expansion {
   }
   // The sign of an expansion is the sign of its largest (last) component.
   int sign() const { return n == 0 ? 0 : (c[n - 1] > 0.0 ? 1 : -1); }
+  // The value rounded to a double, within a few ulps of it: the components summed from the
+  // smallest up (they do not overlap, so no sum cancels what a later one needs).
+  double estimate() const {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) sum += c[i];
+    return sum;
+  }
 };
 
 inline Expansion<2> difference(double a, double b) {

@@ -57,3 +57,14 @@ int incircle_tie_break(const Point& a, const Point& b, const Point& c, const Poi
 }
 
 }  // namespace meshstep::detail
+
+namespace meshstep {
+
+double orient2d_value(const Point& a, const Point& b, const Point& c) {
+  using namespace exact;
+  const auto acx = difference(a.x, c.x), acy = difference(a.y, c.y);
+  const auto bcx = difference(b.x, c.x), bcy = difference(b.y, c.y);
+  return (acx * bcy - acy * bcx).estimate();
+}
+
+}  // namespace meshstep

@@ -33,6 +33,7 @@
 #include "meshstep/delaunay/triangulation.hpp"
 #include "meshstep/error.hpp"
 #include "meshstep/geometry/magnitudes.hpp"
+#include "meshstep/geometry/predicates.hpp"
 
 namespace meshstep {
 
@@ -313,7 +314,11 @@ class SegmentInserter {
   // The crossing of a-b and r-l, rounded. Measured along the shorter segment from its end
   // nearer the crossing (the parameter's rounding error is multiplied by the distance
   // travelled, which a segment 1e16 long would turn into whole units), then kept within
-  // both segments' boxes, where the exact crossing lies.
+  // both segments' boxes, where the exact crossing lies. The parameter is the ratio of the
+  // shorter segment's ends' distances to the other's line, each from its exact value
+  // (orient2d_value): in doubles, the distance of (0, 1) to a line through (0.1, 0.7) and
+  // (9e15, 2.9e16) lost every digit, and the crossing fell 0.1 off both segments (issue 31,
+  // the hour-long fuzz of refine_options).
   // The range rule (geometry/magnitudes.hpp) holds for crossings too: a crossing far smaller
   // in magnitude than the input's largest coordinate would leave the span where the mesh
   // can be computed, and checked, exactly. The range is taken from the points at the first
@@ -334,9 +339,13 @@ class SegmentInserter {
     const bool along_ab = length2(a, b) <= length2(r, l);
     const Point &p = along_ab ? a : r, &q = along_ab ? b : l;
     const Point &u = along_ab ? r : a, &w = along_ab ? l : b;
-    const double dx = q.x - p.x, dy = q.y - p.y, ex = w.x - u.x, ey = w.y - u.y;
-    const double t = ((u.x - p.x) * ey - (u.y - p.y) * ex) / (dx * ey - dy * ex);
-    Point x = t <= 0.5 ? Point{p.x + t * dx, p.y + t * dy} : Point{q.x - (1.0 - t) * dx, q.y - (1.0 - t) * dy};
+    // p and q lie on opposite sides of u-w (they cross): no cancellation in the sums.
+    const double from_p = orient2d_value(u, w, p), from_q = orient2d_value(u, w, q);
+    const double dx = q.x - p.x, dy = q.y - p.y;
+    if (from_p == from_q) return {0.5 * (p.x + q.x), 0.5 * (p.y + q.y)};  // both 0: not a crossing; never asked
+    const double t = from_p / (from_p - from_q);  // from p, in [0, 1]
+    const double s = from_q / (from_q - from_p);  // from q
+    Point x = t <= 0.5 ? Point{p.x + t * dx, p.y + t * dy} : Point{q.x - s * dx, q.y - s * dy};
     x.x = std::clamp(x.x, std::max(std::min(a.x, b.x), std::min(r.x, l.x)), std::min(std::max(a.x, b.x), std::max(r.x, l.x)));
     x.y = std::clamp(x.y, std::max(std::min(a.y, b.y), std::min(r.y, l.y)), std::min(std::max(a.y, b.y), std::max(r.y, l.y)));
     return x;

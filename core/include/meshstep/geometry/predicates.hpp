@@ -39,6 +39,12 @@ inline constexpr double kInCircleErrBound = (10.0 + 96.0 * kEpsilon) * kEpsilon;
   return detail::orient2d_exact(a, b, c);
 }
 
+// Twice the signed area of a, b, c as orient2d's, but with its magnitude too computed from
+// the exact value: within a few ulps of it, where orient2d's double evaluation may be off by
+// all its digits (coordinates of 1e16 next to ones of 1). Out of line and far slower: for
+// the rare places that compute with the value, such as a crossing point.
+double orient2d_value(const Point& a, const Point& b, const Point& c);
+
 // > 0 when d lies strictly inside the circle through a, b, c (which must be
 // counterclockwise), < 0 strictly outside, 0 on it. Only the sign is exact.
 [[gnu::always_inline]] inline double incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
