@@ -1,9 +1,12 @@
 #include "canvas_worker.hpp"
 
 #include <sys/resource.h>
+#include <cerrno>
+#include <algorithm>
 #include <unistd.h>
 
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include "render/gl_context.hpp"
@@ -17,13 +20,14 @@ constexpr int kPreviewNice = 5;
 }  // namespace
 
 CanvasWorker::CanvasWorker(std::string log_path, std::string backend, Follow follow, std::size_t approximate_from,
-                           std::uint64_t keep_writes_bytes, Priority priority)
+                           std::uint64_t keep_writes_bytes, Priority priority, DrawTurns* turns)
     : log_path_(std::move(log_path)),
       backend_(std::move(backend)),
       follow_(follow),
       approximate_from_(approximate_from),
       keep_writes_bytes_(keep_writes_bytes),
       priority_(follow == Follow::growing_log ? Priority::below_ui : priority),
+      turns_(turns),
       thread_([this] { run(); }) {}
 
 CanvasWorker::~CanvasWorker() {
@@ -62,6 +66,11 @@ bool CanvasWorker::drawing() const {
 void CanvasWorker::wait_until_drawn() {
   std::unique_lock lock(mutex_);
   drawn_.wait(lock, [&] { return finished_ == asked_ || !error_.empty(); });
+}
+
+std::size_t CanvasWorker::pictures_drawn() const {
+  const std::lock_guard lock(mutex_);
+  return pictures_drawn_;
 }
 
 std::size_t CanvasWorker::approximate_pictures() const {
@@ -116,13 +125,19 @@ void CanvasWorker::draw(const CanvasRequest& wanted, Session& session, View3d& v
 
 void CanvasWorker::run() {
   // Below the UI thread (Priority): a live run's preview, where the machine is busy with the
-  // run beside it (on two cores: the run, this thread and its log reader's helper), and runs
-  // side by side, where four workers would otherwise outweigh the window's thread and its
-  // rasterizer's. Linux gives each thread its own nice value, inherited by the threads it
-  // starts (set before the GL context, whose rasterizer thread may start here); failing to
-  // lower it only costs responsiveness. A single run scrubbed keeps the normal priority:
-  // there the pictures are what the user waits for.
-  if (priority_ == Priority::below_ui) (void)setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kPreviewNice);
+  // run beside it (on two cores: the run, this thread and its log reader's helper). Linux
+  // gives each thread its own nice value, inherited by the threads it starts (set before
+  // the GL context, whose rasterizer thread may start here); failing to lower it only costs
+  // responsiveness. A single run scrubbed, and runs side by side (in turns), keep the
+  // normal priority: there the pictures are what the user waits for.
+  if (priority_ == Priority::below_ui) {
+    // Below the thread that started it, whatever its own nice value (a viewer started with
+    // `nice -n 10` keeps its workers below it too).
+    const auto tid = static_cast<id_t>(gettid());
+    errno = 0;
+    const int base = getpriority(PRIO_PROCESS, tid);
+    if (errno == 0) (void)setpriority(PRIO_PROCESS, tid, std::min(base + kPreviewNice, 19));
+  }
   std::unique_ptr<render::GlContext> context;
   std::unique_ptr<render::Renderer> renderer;
   std::unique_ptr<Session> session;
@@ -156,6 +171,14 @@ void CanvasWorker::run() {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] { return stop_ || (has_request_ && finished_ != asked_); });
       if (stop_) break;
+    }
+    // With turns, the request is read once the turn comes: what was asked while this worker
+    // waited for it replaces what woke it, so a wait never costs a stale picture. The turn
+    // ends with the drawing, before the picture is handed over.
+    std::optional<DrawTurns::Seat> seat(std::in_place, turns_);
+    {
+      const std::lock_guard lock(mutex_);
+      if (stop_) break;
       wanted = wanted_;
       number = asked_;
     }
@@ -179,6 +202,7 @@ void CanvasWorker::run() {
       fail("the canvas could not be drawn: ", e);
       break;
     }
+    seat.reset();
     {
       const std::lock_guard lock(mutex_);
       const bool approximate = drawn && out.approximate;
@@ -188,6 +212,7 @@ void CanvasWorker::run() {
       }
       // An approximate picture leaves the request pending: the loop takes it again (drawn
       // exactly) unless a newer one came meanwhile.
+      if (drawn) ++pictures_drawn_;
       if (approximate) {
         drawn_approximately = number;
         ++approximate_pictures_;

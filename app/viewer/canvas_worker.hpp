@@ -22,6 +22,7 @@
 
 #include "meshstep/scene/camera.hpp"
 #include "meshstep/scene/image.hpp"
+#include "draw_turns.hpp"
 #include "mesh_stats.hpp"
 #include "session.hpp"
 #include "view_3d.hpp"
@@ -87,10 +88,9 @@ class CanvasWorker {
   // it cannot be read yet, no picture is made (and no error reported).
   enum class Follow { fixed_log, growing_log };
   // Whose CPU comes first on a small machine. `normal`: the canvas's pictures are what the
-  // user waits for (a single run scrubbed). `below_ui`: the window's frames come first: a
-  // live run's preview (the run beside it needs the cores), runs side by side (four workers
-  // at the UI's priority took 5/8 of two cores from the window, which then drew 19 frames
-  // a second while scrubbing).
+  // user waits for (a single run scrubbed; runs side by side, which take turns instead:
+  // below the window, nice 5, their pictures starved). `below_ui`: the window's frames
+  // come first: a live run's preview (the run beside it needs the cores).
   enum class Priority { normal, below_ui };
 
   // Starts the thread; it opens LOG_PATH and an off-screen context of `backend` ("egl" or
@@ -98,11 +98,12 @@ class CanvasWorker {
   // `approximate_from`: the meshes that get an approximate picture first, by their triangles.
   // `keep_writes_bytes`: the biggest log whose writes the worker's reader keeps decoded
   // (LogReader; runs side by side share one budget). A growing log's worker is always
-  // below the UI.
+  // below the UI. `turns`: shared with other workers, each picture is drawn in a turn of
+  // its own (it must outlive the worker); none: drawn whenever asked.
   CanvasWorker(std::string log_path, std::string backend, Follow follow = Follow::fixed_log,
                std::size_t approximate_from = kApproximateFrom,
                std::uint64_t keep_writes_bytes = replay::LogReader::kKeepWritesBytes,
-               Priority priority = Priority::normal);
+               Priority priority = Priority::normal, DrawTurns* turns = nullptr);
   ~CanvasWorker();
   CanvasWorker(const CanvasWorker&) = delete;
   CanvasWorker& operator=(const CanvasWorker&) = delete;
@@ -116,6 +117,8 @@ class CanvasWorker {
   bool drawing() const;
   // Waits until the last request is drawn (scripts, before they look).
   void wait_until_drawn();
+  // Pictures drawn so far, approximate and exact.
+  std::size_t pictures_drawn() const;
   // Pictures drawn with the level of detail so far (each followed by an exact one at rest).
   std::size_t approximate_pictures() const;
   // Why the worker stopped ("" while it works): the log or the context failed.
@@ -132,6 +135,7 @@ class CanvasWorker {
   const std::size_t approximate_from_;
   const std::uint64_t keep_writes_bytes_;
   const Priority priority_;
+  DrawTurns* const turns_;
   mutable std::mutex mutex_;
   std::condition_variable wake_, drawn_;
   CanvasRequest wanted_;
@@ -141,7 +145,7 @@ class CanvasWorker {
   bool ready_fresh_ = false;  // not taken yet
   bool stop_ = false;
   std::string error_;
-  std::size_t approximate_pictures_ = 0;
+  std::size_t approximate_pictures_ = 0, pictures_drawn_ = 0;
   Stats stats_;  // the worker's own: of the moment it drew last
   std::size_t stats_serial_ = SIZE_MAX;
   std::thread thread_;  // last: starts once everything above exists

@@ -47,8 +47,7 @@ void CompareView::draw_panel(float width) {
   if (ImGui::BeginTable("runs", n + 1, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_BordersInnerV)) {
     // The labels' column as wide as its longest label, the rest shared by the runs.
     float label_w = ImGui::CalcTextSize("steps per phase").x;
-    for (const Pane& p : panes_)
-      for (const auto& [phase, steps] : p.phase_steps) label_w = std::max(label_w, ImGui::CalcTextSize(("  " + phase).c_str()).x);
+    for (const PhaseRow& r : phase_rows_) label_w = std::max(label_w, ImGui::CalcTextSize(r.label.c_str()).x);
     ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, label_w);
     for (int i = 0; i < n; ++i) {
       char name[16];
@@ -78,22 +77,17 @@ void CompareView::draw_panel(float width) {
     row("smallest", [](const Pane& p) { ImGui::Text("%.1f\u00B0", p.stats.min_angle); });
     row("largest", [](const Pane& p) { ImGui::Text("%.1f\u00B0", p.stats.max_angle); });
     // Steps per phase: one row per phase any run has, under a heading of their own.
-    std::vector<std::string> phases;
-    for (const Pane& p : panes_)
-      for (const auto& [phase, steps] : p.phase_steps)
-        if (std::find(phases.begin(), phases.end(), phase) == phases.end()) phases.push_back(phase);
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::TextDisabled("steps per phase");
-    for (const std::string& phase : phases) {
-      std::string label = "  " + phase;  // "insert vertices", not "insert_vertices"
-      std::replace(label.begin(), label.end(), '_', ' ');
-      row(label.c_str(), [&phase](const Pane& p) {
-        std::uint64_t steps = 0;
-        for (const auto& [name, count] : p.phase_steps)
-          if (name == phase) steps = count;
-        ImGui::Text("%llu", static_cast<unsigned long long>(steps));
-      });
+    for (const PhaseRow& r : phase_rows_) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextColored(heading_color(), "%s", r.label.c_str());
+      for (int i = 0; i < n; ++i) {
+        ImGui::TableNextColumn();
+        ImGui::Text("%llu", static_cast<unsigned long long>(r.steps[static_cast<std::size_t>(i)]));
+      }
     }
     if (difference) row("edges apart", [](const Pane& p) { ImGui::Text("%zu", p.different.size()); });
     ImGui::EndTable();

@@ -93,6 +93,8 @@ SideBySide open_side_by_side(const std::vector<std::string>& paths) {
 
 CompareView::CompareView(Viewer& viewer, SideBySide runs, const std::string& backend)
     : viewer_(viewer), panes_(runs.runs.size()), leader_(runs.leader_index) {
+  // At most two of the runs draw at a time, at the window's priority (draw_turns.hpp).
+  turns_ = std::make_unique<DrawTurns>(kDrawingAtOnce);
   for (std::size_t i = 0; i < panes_.size(); ++i) {
     Pane& p = panes_[i];
     p.own = std::move(runs.runs[i]);
@@ -104,9 +106,23 @@ CompareView::CompareView(Viewer& viewer, SideBySide runs, const std::string& bac
     // The pictures come from the workers: no scene is built on this thread.
     p.session->defer_pictures(true);
     p.worker = std::make_unique<CanvasWorker>(log.path(), backend, CanvasWorker::Follow::fixed_log, kApproximateFrom,
-                                              keep_writes_bytes(panes_.size()), CanvasWorker::Priority::below_ui);
+                                              keep_writes_bytes(panes_.size()), CanvasWorker::Priority::normal, turns_.get());
   }
+  for (std::size_t i = 0; i < panes_.size(); ++i)
+    for (const auto& [phase, steps] : panes_[i].phase_steps) {
+      std::string label = "  " + phase;  // "insert vertices", not "insert_vertices"
+      std::replace(label.begin(), label.end(), '_', ' ');
+      auto row = std::find_if(phase_rows_.begin(), phase_rows_.end(), [&](const PhaseRow& r) { return r.label == label; });
+      if (row == phase_rows_.end()) row = phase_rows_.insert(phase_rows_.end(), PhaseRow{label, {}});
+      row->steps[i] += steps;
+    }
   start_next_plots();
+}
+
+bool CompareView::drawing() const {
+  for (const Pane& p : panes_)
+    if (p.worker->drawing()) return true;
+  return false;
 }
 
 // The other runs' plots, one after another: each pass reads a whole log, and four at once
@@ -241,6 +257,13 @@ void CompareView::draw_difference(const Pane& p, ImDrawList& draw) const {
 }
 
 void CompareView::draw(float x, float y, float w, float h) {
+  // The pictures take what the window's frames leave (FramePace). Only frames drawn while
+  // pictures are coming count: an idle window sleeps between frames until an event.
+  const auto now = std::chrono::steady_clock::now();
+  if (last_frame_ != std::chrono::steady_clock::time_point{} && drawing())
+    pace_.frame(std::chrono::duration<double>(now - last_frame_).count());
+  last_frame_ = now;
+  if (pace_.seats() != turns_->seats()) turns_->set_seats(pace_.seats());
   sync();
   start_next_plots();
   place(x, y, w, h);

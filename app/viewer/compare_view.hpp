@@ -6,11 +6,13 @@
 // difference overlay is on.
 //
 // Every run is drawn by a canvas worker of its own (canvas_worker.hpp), so that scrubbing
-// four big runs never waits for a picture; the leader's pictures become the viewer's
-// session's moments, as a single big run's do.
+// four big runs never waits for a picture; the workers take turns (draw_turns.hpp), two
+// drawing at a time while the window's frames keep up, one while they come late. The
+// leader's pictures become the viewer's session's moments, as a single big run's do.
 #pragma once
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -21,6 +23,7 @@
 
 #include "canvas_worker.hpp"
 #include "compare_sync.hpp"
+#include "draw_turns.hpp"
 #include "edge_difference.hpp"
 #include "mesh_stats.hpp"
 #include "picture_texture.hpp"
@@ -32,6 +35,13 @@ namespace meshstep::viewer {
 class Viewer;
 
 inline constexpr std::size_t kMaxRunsSideBySide = 4;
+// How many of the runs' workers draw at once at most (DrawTurns), at the window's
+// priority, while its frames keep to kSideBySideFrameSeconds; one while they come late
+// (FramePace). Under load on 2 cores, two at once gave the timeline's run 2.3 times the new
+// pictures a second of four at once below the window's priority (nice 5), for 0.76 times
+// its frames (docs/viewer.md).
+inline constexpr unsigned kDrawingAtOnce = 2;
+inline constexpr double kSideBySideFrameSeconds = 1.0 / 30.0;
 
 // Logs opened for side by side: the leader (the run with the most steps) apart, for the
 // viewer's session, and the others in their places (the leader's slot empty).
@@ -101,6 +111,9 @@ class CompareView {
   void draw_panel(float width);
   // The other runs' plots are made (the leader's are the viewer's).
   bool plots_ready();
+  // Some canvas has not drawn its latest request yet (its worker is busy, or its picture
+  // not taken).
+  bool drawing() const;
 
  private:
   void fit(int pane_w, int pane_h);
@@ -110,13 +123,25 @@ class CompareView {
   void differences();
   void draw_difference(const Pane& pane, ImDrawList& draw) const;
 
+  // A row of the statistics' steps per phase: a phase any run has, its label, and each
+  // run's steps in it (0 when it has none). Made once: the panel's frames allocate nothing.
+  struct PhaseRow {
+    std::string label;  // "  insert vertices"
+    std::array<std::uint64_t, kMaxRunsSideBySide> steps{};
+  };
+
   Viewer& viewer_;
+  // Declared before the panes: their workers take turns with it until they stop.
+  std::unique_ptr<DrawTurns> turns_;
   std::vector<Pane> panes_;
+  std::vector<PhaseRow> phase_rows_;
   std::size_t leader_ = 0;
   SyncMode mode_ = SyncMode::step;
   bool differences_stale_ = true;
   int pane_w_ = 0, pane_h_ = 0;
   std::size_t next_plots_ = 0;
+  FramePace pace_{kSideBySideFrameSeconds, kDrawingAtOnce};
+  std::chrono::steady_clock::time_point last_frame_{};
   std::array<float, 4> plot_scales_{};  // the plots' shared value ranges, found once
   bool plot_scales_known_ = false;  // the first run whose plots are not ready yet
 };

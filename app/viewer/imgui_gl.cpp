@@ -111,4 +111,10 @@ void opaque_image(ImTextureID texture, ImVec2 size) {
   list->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glEnable(GL_BLEND); }, nullptr);
 }
 
+void opaque_image_at(ImDrawList& list, ImTextureID texture, ImVec2 p0, ImVec2 p1) {
+  list.AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisable(GL_BLEND); }, nullptr);
+  list.AddImage(texture, p0, p1);
+  list.AddCallback([](const ImDrawList*, const ImDrawCmd*) { glEnable(GL_BLEND); }, nullptr);
+}
+
 }  // namespace meshstep::viewer

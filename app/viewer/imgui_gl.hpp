@@ -45,6 +45,8 @@ class ImGuiGl {
 // on llvmpipe, blending the canvas's million pixels into the frame cost as much as the rest
 // of the window together. The window under it should not draw a background either.
 void opaque_image(ImTextureID texture, ImVec2 size);
+// The same, into a draw list, over the rectangle from p0 to p1.
+void opaque_image_at(ImDrawList& list, ImTextureID texture, ImVec2 p0, ImVec2 p1);
 
 // A GL texture name as ImGui carries it, and back.
 inline ImTextureID texture_id(GLuint name) { return reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(name)); }

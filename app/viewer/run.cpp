@@ -340,7 +340,10 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     }
     if (!host->interactive() && (!scripted || script.done())) break;
     // An idle window sleeps until an event; one with something to show soon does not.
-    const bool busy = live || bench.remeshing_live() || (viewer && (viewer->session().playback().playing || viewer->canvas_drawing()));
+    // Runs side by side: their pictures still coming are something to show soon too.
+    const bool busy = live || bench.remeshing_live() ||
+                      (viewer && (viewer->session().playback().playing || viewer->canvas_drawing() ||
+                                  (viewer->compare() && viewer->compare()->drawing())));
     if (host->interactive() && !scripted && !busy && picked.empty()) glfwWaitEventsTimeout(0.1);
     else if (host->interactive() && !scripted && busy && !(viewer && viewer->session().playback().playing))
       glfwWaitEventsTimeout(1.0 / 60.0);

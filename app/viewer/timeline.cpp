@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <thread>
 
@@ -49,6 +50,8 @@ void TimelineCache::update(const replay::LogReader& reader, int width, MarkSet w
   if (!new_log && columns == width && !arrived) return;
   log = &reader;
   columns = width;
+  static std::uint64_t stamps = 0;  // the UI thread's
+  stamp = ++stamps;
 
   const auto w = static_cast<std::size_t>(std::max(0, width));
   steps.assign(w, 0);
@@ -92,8 +95,25 @@ ImU32 mark_color(Mark mark) {
   return kColors[static_cast<std::size_t>(mark)];
 }
 
+void tick_strip_pixels(const TimelineCache& cache, scene::Image& image) {
+  // Each column's tick as its line drew it in its middle: the light grey at the column's
+  // strength over the bar's background.
+  constexpr float kBar[3] = {40.0f, 40.0f, 46.0f};
+  image.width = std::max(0, cache.columns);
+  image.height = 1;
+  image.rgba.resize(static_cast<std::size_t>(image.width) * 4);  // no allocation at the same width
+  for (int c = 0; c < image.width; ++c) {
+    const std::uint32_t n = cache.steps[static_cast<std::size_t>(c)];
+    const float strength = n == 0 ? 0.0f : 0.25f + 0.75f * static_cast<float>(n) / static_cast<float>(cache.most_steps);
+    const float a = static_cast<float>(static_cast<int>(255 * strength)) / 255.0f;
+    std::uint8_t* px = image.rgba.data() + 4 * static_cast<std::size_t>(c);
+    for (int k = 0; k < 3; ++k) px[k] = static_cast<std::uint8_t>(std::lround(220.0f * a + kBar[k] * (1.0f - a)));
+    px[3] = 255;
+  }
+}
+
 void draw_timeline_picture(ImDrawList& draw, const replay::LogReader& log, TimelineCache& cache, const Session& session,
-                           ImVec2 origin, ImVec2 size, MarkSet shown) {
+                           ImVec2 origin, ImVec2 size, MarkSet shown, TickStrip* strip) {
   const int width = static_cast<int>(size.x);
   cache.update(log, width, shown);
   const std::uint64_t events = std::max<std::uint64_t>(1, log.event_count());
@@ -141,7 +161,16 @@ void draw_timeline_picture(ImDrawList& draw, const replay::LogReader& log, Timel
 
   // Steps: one tick each when they have room, else their density per column.
   const bool ticks = log.step_count() > 0 && static_cast<double>(log.step_count()) * 3.0 < size.x;
-  for (int c = 0; c < cache.columns; ++c) {
+  if (!ticks && strip && cache.columns > 0 && ticks_bottom > band_bottom + 2.0f) {
+    if (strip->stamp != cache.stamp) {
+      tick_strip_pixels(cache, strip->image);
+      if (!strip->texture) strip->texture = std::make_unique<PictureTexture>();
+      strip->texture->upload(strip->image);
+      strip->stamp = cache.stamp;
+    }
+    opaque_image_at(draw, strip->texture->id(), ImVec2(origin.x, band_bottom + 2.0f),
+                    ImVec2(origin.x + static_cast<float>(cache.columns), ticks_bottom));
+  } else for (int c = 0; c < cache.columns; ++c) {
     const std::uint32_t n = cache.steps[static_cast<std::size_t>(c)];
     if (n == 0) continue;
     const float x = origin.x + static_cast<float>(c) + 0.5f;

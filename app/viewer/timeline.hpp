@@ -12,6 +12,8 @@
 
 #include <imgui.h>
 
+#include "picture_texture.hpp"
+
 #include "meshstep/replay/log_reader.hpp"
 #include "event_mark_scan.hpp"
 #include "timeline_marks.hpp"
@@ -39,6 +41,7 @@ struct TimelineCache {
   bool events_scanned = false;
   std::array<std::vector<std::uint64_t>, kMarkCount> event_positions;
   std::unique_ptr<EventMarkScan> scan;  // the pass, while it runs
+  std::uint64_t stamp = 0;  // new (in the whole program) whenever the counts are made anew
 
   // Counts again when the log or the width changed, or when `wanted` asks for event kinds
   // whose pass has not been made yet.
@@ -57,7 +60,24 @@ int column_of(std::uint64_t position, std::uint64_t event_count, int columns);
 // The colour of a kind's marks (Okabe-Ito, as the phases are).
 ImU32 mark_color(Mark mark);
 
+// The step ticks of a long run (a density per column, every column drawn) as one texture
+// of a pixel per column, drawn as one quad. As a thin antialiased line per column they
+// took llvmpipe about 3.5 ms of an idle frame's 18 ms of CPU with four runs side by side;
+// as a strip, 1.5 ms less (docs/viewer.md). Made again when the counts change; a run of
+// few steps keeps its ticks as lines.
+struct TickStrip {
+  std::unique_ptr<PictureTexture> texture;  // made on the UI thread when first wanted
+  scene::Image image;                       // columns x 1, opaque: the ticks over the bar
+  std::uint64_t stamp = 0;                  // the counts it shows (TimelineCache::stamp)
+};
+
+// The strip's pixels for the cache's step counts: a column without a step is the bar's
+// background, the others light grey at the strength the lines had (0.25 + 0.75 of their
+// share of the fullest column), over it.
+void tick_strip_pixels(const TimelineCache& cache, scene::Image& image);
+
+// `strip`: where the ticks of a long run are drawn from (none: as lines).
 void draw_timeline_picture(ImDrawList& draw, const replay::LogReader& log, TimelineCache& cache, const Session& session,
-                           ImVec2 origin, ImVec2 size, MarkSet shown);
+                           ImVec2 origin, ImVec2 size, MarkSet shown, TickStrip* strip = nullptr);
 
 }  // namespace meshstep::viewer

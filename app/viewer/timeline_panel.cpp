@@ -108,7 +108,7 @@ void Viewer::draw_timeline_bar(float height) {
     session_->seek(static_cast<std::uint64_t>(std::llround(t * static_cast<double>(events))));
   }
   draw_timeline_picture(*ImGui::GetWindowDrawList(), log, timeline_cache_, *session_, origin, ImVec2(width, height),
-                        timeline_marks);
+                        timeline_marks, &tick_strip_);
   // The selection's history (a vertex's, a triangle's, a segment's) as ticks along the bar's
   // bottom.
   if (selected_.kind != Picked::Kind::none) {

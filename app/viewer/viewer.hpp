@@ -277,6 +277,7 @@ class Viewer {
   std::string invariants_text_;  // the finished job's line, made once
   std::uint64_t code_position_ = UINT64_MAX;
   TimelineCache timeline_cache_;
+  TickStrip tick_strip_;  // the timeline's ticks of a long run
   // The canvas's worker (big runs), its last picture and the texture that shows it.
   std::unique_ptr<CanvasWorker> worker_;
   CanvasPicture picture_;

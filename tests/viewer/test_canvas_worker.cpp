@@ -3,9 +3,15 @@
 // main thread makes of the same moment.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
 
 #include "canvas_worker.hpp"
+#include "draw_turns.hpp"
 #include "golden_runs.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
@@ -116,12 +122,138 @@ TEST_P(CanvasWorkerTest, ANewMomentOfABigMeshIsApproximateFirstAndExactAtRest) {
       << "the note is drawn on an approximate picture";
 }
 
+// A worker that waits for its turn (runs side by side) draws, once the turn comes, the
+// newest moment asked for meanwhile: not first the one that woke it.
+TEST_P(CanvasWorkerTest, AWorkerWaitingForItsTurnDrawsOnlyTheNewestMoment) {
+  DrawTurns turns(1);
+  turns.acquire();  // the only seat, held here: the worker waits for it
+  CanvasWorker worker(log_->path(), GetParam(), CanvasWorker::Follow::fixed_log, kApproximateFrom,
+                      replay::LogReader::kKeepWritesBytes, CanvasWorker::Priority::normal, &turns);
+  worker.request(at(log_->step_start(5)));
+  // Until the worker queues for the seat (its context and log opened first).
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (turns.waiting() == 0 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  ASSERT_EQ(turns.waiting(), 1u) << worker.error();
+  worker.request(at(log_->step_start(40)));  // asked while it waits
+  turns.release();
+  worker.wait_until_drawn();
+  ASSERT_EQ(worker.error(), "");
+  CanvasPicture picture;
+  ASSERT_TRUE(worker.take(picture));
+  EXPECT_EQ(picture.moment.position, log_->step_start(40));
+  EXPECT_EQ(worker.pictures_drawn(), 1u) << "the moment asked for before the turn came is not drawn";
+  EXPECT_EQ(turns.drawing(), 0u) << "the seat is given back";
+}
+
 TEST_P(CanvasWorkerTest, AnUnreadableLogIsReportedNotThrown) {
   CanvasWorker worker("/nonexistent/run.mslog", GetParam());
   worker.request(at(0));
   worker.wait_until_drawn();
   EXPECT_NE(worker.error().find("/nonexistent/run.mslog"), std::string::npos) << worker.error();
   EXPECT_FALSE(worker.drawing());
+}
+
+// ---- Turns at drawing (no GL) --------------------------------------------------------
+
+// However many ask at once, no more than the seats draw together, and every one draws.
+TEST(DrawTurns, NoMoreDrawAtOnceThanTheSeats) {
+  DrawTurns turns(2);
+  std::atomic<int> now{0}, most{0}, done{0};
+  std::vector<std::thread> workers;
+  for (int w = 0; w < 6; ++w)
+    workers.emplace_back([&] {
+      for (int k = 0; k < 20; ++k) {
+        const DrawTurns::Seat seat(&turns);
+        const int n = ++now;
+        for (int m = most.load(); n > m && !most.compare_exchange_weak(m, n);) {
+        }
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+        --now;
+        ++done;
+      }
+    });
+  for (std::thread& t : workers) t.join();
+  EXPECT_EQ(done.load(), 120);
+  EXPECT_EQ(most.load(), 2) << "six workers asking together fill both seats, never more";
+  EXPECT_EQ(turns.drawing(), 0u);
+  EXPECT_EQ(turns.waiting(), 0u);
+}
+
+// Seats go first come, first served: one that asks again queues behind those waiting.
+TEST(DrawTurns, FirstComeFirstServed) {
+  DrawTurns turns(1);
+  turns.acquire();
+  std::vector<int> order;
+  std::mutex order_mutex;
+  const auto queue = [&](int who) {
+    return std::thread([&, who] {
+      const DrawTurns::Seat seat(&turns);
+      const std::lock_guard lock(order_mutex);
+      order.push_back(who);
+    });
+  };
+  const auto until_waiting = [&](std::uint64_t n) {
+    while (turns.waiting() < n) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  };
+  std::thread a = queue(1);
+  until_waiting(1);
+  std::thread b = queue(2);
+  until_waiting(2);
+  std::thread c = queue(3);
+  until_waiting(3);
+  turns.release();
+  a.join();
+  b.join();
+  c.join();
+  EXPECT_EQ(order, (std::vector<int>{1, 2, 3}));
+}
+
+// A seat more lets one that waits in at once; a seat fewer lets none in until one ends.
+TEST(DrawTurns, SeatsChangeWhileWorkersWait) {
+  DrawTurns turns(1);
+  turns.acquire();
+  std::thread waiting([&] {
+    const DrawTurns::Seat seat(&turns);
+  });
+  while (turns.waiting() < 1) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  turns.set_seats(2);
+  waiting.join();  // it drew beside the held seat
+  EXPECT_EQ(turns.drawing(), 1u);
+  turns.acquire();  // two held now
+  turns.set_seats(1);
+  std::atomic<bool> in{false};
+  std::thread late([&] {
+    const DrawTurns::Seat seat(&turns);
+    in = true;
+  });
+  while (turns.waiting() < 1) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  turns.release();  // one still draws: with one seat the late one still waits
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_FALSE(in.load());
+  turns.release();
+  late.join();
+  EXPECT_TRUE(in.load());
+}
+
+// The window's frames decide the seats: on time, the most; late, one; on time again, the
+// most (after a few frames: one slow frame or a script's long pause does not swing it).
+TEST(FramePace, LateFramesLeaveOneSeat) {
+  FramePace pace(1.0 / 30.0, 2);
+  EXPECT_EQ(pace.seats(), 2u) << "no frame yet";
+  for (int i = 0; i < 10; ++i) pace.frame(0.020);
+  EXPECT_EQ(pace.seats(), 2u);
+  pace.frame(0.045);
+  EXPECT_EQ(pace.seats(), 2u) << "one frame a little late";
+  for (int i = 0; i < 10; ++i) pace.frame(0.050);
+  EXPECT_EQ(pace.seats(), 1u) << "20 frames a second";
+  pace.frame(0.020);
+  EXPECT_EQ(pace.seats(), 1u) << "one frame on time";
+  for (int i = 0; i < 10; ++i) pace.frame(0.025);
+  EXPECT_EQ(pace.seats(), 2u) << "40 frames a second";
+  pace.frame(10.0);  // a script's long wait counts as four frames' time at most
+  for (int i = 0; i < 6; ++i) pace.frame(0.020);
+  EXPECT_EQ(pace.seats(), 2u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, CanvasWorkerTest, ::testing::Values("egl", "osmesa"),

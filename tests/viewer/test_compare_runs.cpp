@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -156,17 +157,17 @@ class SideBySide : public ::testing::TestWithParam<std::string> {
     std::filesystem::remove_all(dir_, ec);
   }
   // The viewer on these runs' logs with a script, in the mode of the parameter.
-  Result view(const std::vector<const replay::LogReader*>& logs, const std::string& script) {
+  Result view(const std::vector<const replay::LogReader*>& logs, const std::string& script, const std::string& extra = "") {
     std::string paths = logs[0]->path();
     for (std::size_t i = 1; i < logs.size(); ++i) paths += " " + logs[i]->path();
-    return testing::view_log(MESHSTEP_VIEW_BINARY, paths, dir_, GetParam(), "1280x800", script);
+    return testing::view_log(MESHSTEP_VIEW_BINARY, paths, dir_, GetParam(), "1280x800", script, extra);
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::filesystem::path dir_;
 };
 
-#define SIDE_OR_SKIP(result, logs, script)              \
-  const Result result = view(logs, script);             \
+#define SIDE_OR_SKIP(result, logs, script, ...)              \
+  const Result result = view(logs, script, ##__VA_ARGS__);      \
   if (result.status == 77) GTEST_SKIP() << result.output; \
   ASSERT_EQ(result.status, 0) << result.output
 
@@ -245,6 +246,37 @@ TEST_P(SideBySide, FourRunsInTwoRowsOfTwo) {
   EXPECT_GT(field(r2, "y"), field(r0, "y") + field(r0, "height") - 1);
   EXPECT_EQ(field(r0, "x"), field(r2, "x"));
   EXPECT_TRUE(has(r2, "\"caption\": \"offcenter, min angle 30, cavity\"")) << r2;
+}
+
+// Four runs side by side at rest, the overlay on: their frames allocate nothing (the side
+// panel's statistics in columns, the steps per phase among them, the overlay's legends).
+// On main they allocated 14 times a frame (the steps per phase's labels, made every frame).
+TEST_P(SideBySide, IdleFramesAllocateNothing) {
+  const std::vector<const replay::LogReader*> logs = {golden::lesson_run(kOffcenter), golden::lesson_run(kCircumcenter),
+                                                      golden::lesson_run(kCavity), golden::lesson_run(kLeppMidpoint)};
+  for (const auto* log : logs) ASSERT_NE(log, nullptr);
+  const std::string frames = path("frames.txt");
+  // A first frame lays the canvases out, so that `wait` then waits for their pictures.
+  SIDE_OR_SKIP(r, logs, "frames 1\nseek step 30\ndifference on\nwait\nframes 8\nseek step 40\nwait\nframes 8\nquit\n",
+               "--frame-log " + frames);
+  std::ifstream in(frames);
+  std::vector<unsigned long long> allocations;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    unsigned long long index = 0, count = 0;
+    double end_ms = 0, frame_ms = 0;
+    fields >> index >> end_ms >> frame_ms >> count;
+    allocations.push_back(count);
+  }
+  ASSERT_EQ(allocations.size(), 17u);
+  // Frames 1 and 9 show the new moments (and ImGui sizes its buffers over the first
+  // frames): the two after each are left to warm up, the other five of each are idle.
+  for (std::size_t i = 4; i < 9; ++i) EXPECT_EQ(allocations[i], 0u) << "idle frame " << i;
+  for (std::size_t i = 12; i < 17; ++i) EXPECT_EQ(allocations[i], 0u) << "idle frame " << i;
+  if (MESHSTEP_VIEW_COUNTS_NEW) {
+    EXPECT_GT(allocations[9], 0u) << "the frame after a move takes new moments";
+  }
 }
 
 // Counts the pixels of the overlay's colour (Okabe-Ito's reddish purple, 204 121 167,

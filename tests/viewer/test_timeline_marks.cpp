@@ -133,6 +133,43 @@ TEST(TimelineMarks, ColumnsCountEveryMarkedStepAndEventOnceInItsColumn) {
   fs::remove_all(dir);
 }
 
+// The ticks of a long run as a strip of a pixel per column (TickStrip): the bar's colour
+// where no step ends, light grey as strong as the column's share of the fullest one
+// elsewhere, and a new stamp whenever the counts are made anew.
+TEST(TimelineMarks, TheTickStripShadesEachColumnByItsSteps) {
+  const replay::LogReader* log = golden::lesson_run(kOffcenter);
+  ASSERT_NE(log, nullptr);
+  TimelineCache cache;
+  cache.update(*log, 40, MarkSet::none());  // fewer columns than steps: a density
+  const std::uint64_t stamp = cache.stamp;
+  cache.update(*log, 40, MarkSet::none());
+  EXPECT_EQ(cache.stamp, stamp) << "the same counts";
+  scene::Image strip;
+  tick_strip_pixels(cache, strip);
+  ASSERT_EQ(strip.width, 40);
+  ASSERT_EQ(strip.height, 1);
+  bool some_full = false;
+  for (int c = 0; c < 40; ++c) {
+    const std::uint8_t* px = strip.rgba.data() + 4 * c;
+    const std::uint32_t n = cache.steps[static_cast<std::size_t>(c)];
+    EXPECT_EQ(px[3], 255);
+    if (n == 0) {
+      EXPECT_EQ(px[0], 40);
+      EXPECT_EQ(px[2], 46);
+      continue;
+    }
+    some_full = some_full || n == cache.most_steps;
+    // The lines' alpha: 0.25 + 0.75 of the share, in 255ths, over (40, 40, 46).
+    const double a = std::floor(255.0 * (0.25 + 0.75 * double(n) / double(cache.most_steps))) / 255.0;
+    EXPECT_NEAR(px[0], 220.0 * a + 40.0 * (1.0 - a), 0.51) << "column " << c;
+    EXPECT_NEAR(px[2], 220.0 * a + 46.0 * (1.0 - a), 0.51) << "column " << c;
+    if (n == cache.most_steps) EXPECT_EQ(px[0], 220) << "the fullest column";
+  }
+  EXPECT_TRUE(some_full);
+  cache.update(*log, 41, MarkSet::none());
+  EXPECT_NE(cache.stamp, stamp) << "another width: counted anew";
+}
+
 TEST(TimelineMarks, EventKindsAreCountedOnlyOnceWantedAndAgainPerWidth) {
   const replay::LogReader* log = golden::lesson_run(kOffcenter);
   ASSERT_NE(log, nullptr);
