@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "meshstep/error.hpp"
@@ -22,6 +23,7 @@
 #include "meshstep/refine/run_spec.hpp"
 #include "meshstep/io/write_pslg.hpp"
 #include "meshstep/scene/image.hpp"
+#include "disposal.hpp"
 #include "lasso_path.hpp"
 #include "log_opening.hpp"
 #include "meshstep/refine/region.hpp"
@@ -186,6 +188,37 @@ TEST(WorkbenchModel, AnEndedLiveRunsLogIsOpenedOffTheWindowsThreadAndShownAsIfOp
   EXPECT_EQ(bench.notices().front().text, bad.error());
   EXPECT_EQ(bench.mesh_triangles(), triangles);
   fs::remove(junk);
+}
+
+// The run the workbench showed before is freed on a thread of its own (disposal.hpp), not
+// the window's: each thing given is destroyed once, off the caller's thread, and by the
+// time the disposal itself is gone.
+struct FreedOn {
+  std::vector<std::thread::id>* freed;
+  bool owns = true;
+  explicit FreedOn(std::vector<std::thread::id>* f) : freed(f) {}
+  FreedOn(FreedOn&& o) noexcept : freed(o.freed), owns(std::exchange(o.owns, false)) {}
+  FreedOn& operator=(FreedOn&&) = delete;
+  ~FreedOn() {
+    if (owns) freed->push_back(std::this_thread::get_id());
+  }
+};
+
+TEST(WorkbenchModel, TheRunShownBeforeIsFreedOffTheWindowsThread) {
+  std::vector<std::thread::id> freed;
+  {
+    Disposal disposal;
+    disposal.dispose(FreedOn(&freed));
+    disposal.dispose(FreedOn(&freed));  // after the first, which is then freed already
+    ASSERT_GE(freed.size(), 1u);
+    EXPECT_NE(freed[0], std::this_thread::get_id());
+    // A session too (what Viewer::release_run gives), with nothing left to free here.
+    Pslg square;
+    square.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    disposal.dispose(Session::still(square, "freed elsewhere"));
+  }
+  ASSERT_EQ(freed.size(), 2u);
+  EXPECT_NE(freed[1], std::this_thread::get_id());
 }
 
 // The panel's recipe list shows a polygon written out as a count, so that it wraps at its
