@@ -217,6 +217,21 @@ void edit_canvas(WorkbenchHost& host, const scene::Camera& camera, float x, floa
   }
 
   // --- The mouse.
+  // The right-click menu (opened below), drawn while it is open whatever the pointer is
+  // over: once open, the popup, not the canvas, is under the pointer (the canvas is no
+  // longer hovered), and a menu drawn only on a hovered canvas closed before it was seen.
+  if (ImGui::BeginPopup("##edit_menu")) {
+    if (st.menu_for) {
+      std::snprintf(label, sizeof label, "Delete %s %u", to_string(st.menu_for->kind),
+                    st.menu_for->index + static_cast<unsigned>(in.first_index));
+      if (ImGui::MenuItem(label)) {
+        st.selected = st.menu_for;
+        delete_selected(host);
+        st.menu_for.reset();
+      }
+    }
+    ImGui::EndPopup();
+  }
   if (st.dragging) {
     st.drag_to = pointer_world;
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
@@ -264,18 +279,6 @@ void edit_canvas(WorkbenchHost& host, const scene::Camera& camera, float x, floa
       st.menu_for = under;
       ImGui::OpenPopup("##edit_menu");
     }
-  }
-  if (ImGui::BeginPopup("##edit_menu")) {
-    if (st.menu_for) {
-      std::snprintf(label, sizeof label, "Delete %s %u", to_string(st.menu_for->kind),
-                    st.menu_for->index + static_cast<unsigned>(in.first_index));
-      if (ImGui::MenuItem(label)) {
-        st.selected = st.menu_for;
-        delete_selected(host);
-        st.menu_for.reset();
-      }
-    }
-    ImGui::EndPopup();
   }
   if (!ImGui::IsMouseReleased(ImGuiMouseButton_Left) || io.MouseDragMaxDistanceSqr[0] >= 9.0f) return;
   // A click.

@@ -171,7 +171,7 @@ void draw_edit_panel(Viewer& v) {
     ImGui::SameLine();
     if (ImGui::SmallButton("x")) change = Change::remove, changed_at = i;
     ImGui::SameLine();
-    ImGui::TextWrapped("%zu. %s", i + 1, bench.recipe_lines()[i].c_str());
+    ImGui::TextWrapped("%zu. %s", i + 1, bench.recipe_labels()[i].c_str());
     ImGui::PopID();
   }
   switch (change) {
@@ -196,7 +196,14 @@ void draw_edit_panel(Viewer& v) {
   double attribute = region_selected ? in.regions[st.selected->index].attribute : st.region_attribute;
   double max_area = region_selected ? in.regions[st.selected->index].max_area : st.region_max_area;
   ImGui::TextUnformatted(region_selected ? "Selected region point:" : "Next region point:");
+  // The fields as wide as the panel leaves beside the longer label: at ImGui's default
+  // width (two thirds of the panel) "max area (0: none)" was cut at 1280x720.
+  const float field_width = std::max(
+      60.0f, ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("max area (0: none)").x -
+                 ImGui::GetStyle().ItemInnerSpacing.x);
+  ImGui::SetNextItemWidth(field_width);
   bool changed = ImGui::InputDouble("attribute", &attribute, 0.0, 0.0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SetNextItemWidth(field_width);
   changed |= ImGui::InputDouble("max area (0: none)", &max_area, 0.0, 0.0, "%.6g",
                                 ImGuiInputTextFlags_EnterReturnsTrue);
   if (changed) {

@@ -70,4 +70,14 @@ bool Viewer::swap_session(std::unique_ptr<Session>& next) {
   return true;
 }
 
+Viewer::Leftovers Viewer::release_run() {
+  invariants_.reset();
+  history_.reset();
+  plots_.reset();
+  Leftovers out;
+  out.worker = std::move(worker_);
+  out.session = std::move(session_);
+  return out;
+}
+
 }  // namespace meshstep::viewer

@@ -76,6 +76,16 @@ class Viewer {
   // options (swap_session.cpp): the workbench's run after an edit. False (NEXT untouched)
   // when a new viewer is needed: a canvas worker's run, or runs side by side.
   bool swap_session(std::unique_ptr<Session>& next);
+  // What of the run shown is slow to free, taken out for the caller to free on another
+  // thread (disposal.hpp): the session and the canvas worker (which reads its own copy of
+  // the log, with its own GL context). The jobs that read the session's log (the history's
+  // index, the plots, the invariant check) are stopped first. The viewer is then only to be
+  // destroyed.
+  struct Leftovers {
+    std::unique_ptr<CanvasWorker> worker;
+    std::unique_ptr<Session> session;
+  };
+  Leftovers release_run();
 
   // The workbench (workbench_host.hpp), set by the loop: edit mode's keys, canvas overlay
   // and panel go through it. Null: no editing (tests of the viewer alone).

@@ -3,10 +3,12 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <string_view>
 
 #include "common/file_roles.hpp"
 #include "common/run_log.hpp"
@@ -53,9 +55,27 @@ ElementRef element_named(const std::string& message, int first_index) {
   return found;
 }
 
+std::string recipe_label(const std::string& line) {
+  static constexpr std::string_view kOption = "--region-polygon ";
+  std::string out;
+  std::size_t from = 0;
+  for (std::size_t at = line.find(kOption); at != std::string::npos; at = line.find(kOption, from)) {
+    const std::size_t value = at + kOption.size();
+    const std::size_t end = std::min(line.find(' ', value), line.size());
+    const std::size_t commas = static_cast<std::size_t>(std::count(line.begin() + static_cast<std::ptrdiff_t>(value),
+                                                                   line.begin() + static_cast<std::ptrdiff_t>(end), ','));
+    out.append(line, from, value - from);
+    out += "(lasso of " + std::to_string((commas + 1) / 2) + " points)";
+    from = end;
+  }
+  out.append(line, from, std::string::npos);
+  return out;
+}
+
 Workbench::Workbench(Pslg input, std::vector<Operation> recipe, std::string file)
     : editor_(std::move(input)), recipe_(std::move(recipe)), file_(std::move(file)) {
   for (const Operation& op : recipe_) recipe_lines_.push_back(print_operation(op));
+  for (const std::string& line : recipe_lines_) recipe_labels_.push_back(recipe_label(line));
   enabled_.assign(recipe_.size(), true);
   static std::atomic<int> count{0};
   folder_ = (fs::temp_directory_path() /
@@ -76,7 +96,9 @@ std::string Workbench::temporary(const std::string& name) const { return (fs::pa
 
 void Workbench::recipe_changed() {
   recipe_lines_.clear();
+  recipe_labels_.clear();
   for (const Operation& op : recipe_) recipe_lines_.push_back(print_operation(op));
+  for (const std::string& line : recipe_lines_) recipe_labels_.push_back(recipe_label(line));
   ++recipe_revision_;
 }
 
@@ -164,6 +186,10 @@ double thread_cpu_ms() {
 std::unique_ptr<Session> Workbench::shown(const std::string& log) {
   std::unique_ptr<Session> session = Session::open_log(log);
   session->to_end();  // the mesh made, at the end of its run
+  return shown(std::move(session), log);
+}
+
+std::unique_ptr<Session> Workbench::shown(std::unique_ptr<Session> session, const std::string& log) {
   session->set_title(title());
   has_mesh_ = true;
   std::error_code ec;

@@ -35,6 +35,10 @@ struct InputNotice {
 // "region point 2" or "segment 5", numbered from first_index; none when it names none.
 ElementRef element_named(const std::string& message, int first_index);
 
+// A recipe line as the panel shows it: each --region-polygon's list of coordinates replaced
+// by "(lasso of N points)"; the rest as it is.
+std::string recipe_label(const std::string& line);
+
 class Workbench {
  public:
   // `file`: where Ctrl+S saves (empty: a new input, which needs Save as).
@@ -48,6 +52,10 @@ class Workbench {
   const std::vector<Operation>& recipe() const { return recipe_; }
   // Its operations in the recipe's words, made once (the panel draws them every frame).
   const std::vector<std::string>& recipe_lines() const { return recipe_lines_; }
+  // The same lines as the panel lists them: a polygon written out (--region-polygon
+  // X0,Y0,...) as "--region-polygon (lasso of N points)", which wraps at its spaces (the
+  // numbers, wrapped in the middle, read badly). Made with the lines.
+  const std::vector<std::string>& recipe_labels() const { return recipe_labels_; }
   const std::string& file() const { return file_; }
   // The title the viewer shows: the file, or "new input".
   std::string title() const;
@@ -93,10 +101,13 @@ class Workbench {
     std::string log;
   };
   LiveCommand live_command(const std::string& program);
-  // The live run's end, as remesh() returns: the session of its log; null when it was
-  // refused (notices() say why, in the core's words) and the last good mesh stays.
+  // The live run's end, as remesh() returns: the session of its log, `opened` (the caller
+  // opens it off the window's thread: log_opening.hpp; null with `open_error` when it could
+  // not be read); null when the run was refused (notices() say why, in the core's words) and
+  // the last good mesh stays.
   std::unique_ptr<Session> finish_live(const std::string& log, bool succeeded, const std::string& messages,
-                                       const std::string& output, double cpu_seconds, double wall_ms);
+                                       const std::string& output, double cpu_seconds, double wall_ms,
+                                       std::unique_ptr<Session> opened, const std::string& open_error);
   std::size_t live_runs() const { return live_runs_; }
   double last_cpu_ms() const { return cpu_ms_; }
 
@@ -116,7 +127,7 @@ class Workbench {
 
   PslgEditor editor_;
   std::vector<Operation> recipe_;
-  std::vector<std::string> recipe_lines_;
+  std::vector<std::string> recipe_lines_, recipe_labels_;
   std::vector<bool> enabled_;          // per operation: run or switched off
   std::uint64_t recipe_revision_ = 0;  // goes up with every change of the recipe
   void recipe_changed();
@@ -130,6 +141,8 @@ class Workbench {
   std::size_t last_vertices_ = 0;    // vertices of the last mesh made
   std::size_t live_runs_ = 0;
   std::unique_ptr<Session> shown(const std::string& log);  // opened at its end, as the new mesh
+  // The same, for a log opened already (at its end).
+  std::unique_ptr<Session> shown(std::unique_ptr<Session> session, const std::string& log);
   bool has_mesh_ = false;
   std::string shown_log_;  // the log of the session last returned
 };

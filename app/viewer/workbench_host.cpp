@@ -94,6 +94,7 @@ std::string workbench_state_fields(const WorkbenchHost& host) {
 
 void WorkbenchHost::start_new() {
   std::vector<Operation> recipe = bench_ ? bench_->recipe() : std::vector<Operation>{};
+  if (opening_) abandoned_.push_back(std::move(opening_));
   live_.reset();
   bench_ = std::make_unique<Workbench>(Pslg{}, std::move(recipe), "");
   tool = {};
@@ -117,6 +118,7 @@ std::string WorkbenchHost::start_from(const Session& session, const std::optiona
     // Saved as a .poly: a .node input is saved beside itself with the new extension.
     std::string file = input;
     if (!file.ends_with(".poly")) file = file.substr(0, file.find_last_of('.')) + ".poly";
+    if (opening_) abandoned_.push_back(std::move(opening_));
     live_.reset();
     bench_ = std::make_unique<Workbench>(std::move(pslg), std::move(recipe), file);
     if (log) bench_->expect_vertices(log->vertices().size());
@@ -186,11 +188,22 @@ bool WorkbenchHost::in_view(const scene::Camera& camera) const {
   return true;
 }
 
+void WorkbenchHost::reap_abandoned() {
+  std::erase_if(abandoned_, [](const std::unique_ptr<LogOpening>& o) { return o->ready(); });
+}
+
+void WorkbenchHost::start_opening() {
+  if (opening_ || !live_ || live_->running() || !live_->succeeded()) return;
+  opening_ = std::make_unique<LogOpening>(live_->log(), bench_->title());
+}
+
 std::unique_ptr<Session> WorkbenchHost::take_session(bool take_ended_live) {
+  if (!abandoned_.empty()) reap_abandoned();
   if (!bench_) return nullptr;
   if (bench_->stale()) {
     if (live_) {  // a newer edit: the run of the older one is of no use
       live_->cancel();
+      if (opening_) abandoned_.push_back(std::move(opening_));
       live_.reset();
       ++live_cancelled_;
     }
@@ -203,15 +216,29 @@ std::unique_ptr<Session> WorkbenchHost::take_session(bool take_ended_live) {
     }
     return nullptr;
   }
-  if (!live_ || !take_ended_live || live_->running()) return nullptr;
-  std::unique_ptr<Session> s = bench_->finish_live(live_->log(), live_->succeeded(), live_->messages(),
-                                                   live_->output(), live_->cpu_seconds(), 1e3 * live_->seconds());
+  if (!live_ || live_->running()) return nullptr;
+  // Its log is opened on a thread of its own (log_opening.hpp), as soon as the run has
+  // ended; the session is taken on a later frame, once it is open.
+  start_opening();
+  if (!take_ended_live || (opening_ && !opening_->ready())) return nullptr;
+  std::unique_ptr<Session> opened;
+  std::string open_error;
+  if (opening_) {
+    opened = opening_->take();
+    open_error = opening_->error();
+  }
+  std::unique_ptr<Session> s =
+      bench_->finish_live(live_->log(), live_->succeeded(), live_->messages(), live_->output(), live_->cpu_seconds(),
+                          1e3 * live_->seconds(), std::move(opened), open_error);
+  opening_.reset();
   live_.reset();
   return s;
 }
 
 void WorkbenchHost::wait_live() {
   while (live_ && live_->running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  start_opening();
+  while (opening_ && !opening_->ready()) std::this_thread::sleep_for(std::chrono::milliseconds(2));
 }
 
 }  // namespace meshstep::viewer

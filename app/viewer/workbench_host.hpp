@@ -11,6 +11,7 @@
 
 #include "edit_canvas.hpp"
 #include "live_run.hpp"
+#include "log_opening.hpp"
 #include "meshstep/refine/run_spec.hpp"
 #include "meshstep/scene/camera.hpp"
 #include "session.hpp"
@@ -62,14 +63,18 @@ class WorkbenchHost {
   // `take_ended_live` false a live run that has ended is left for a later call (scripts
   // take it only when they look: what they see does not depend on the machine's speed).
   std::unique_ptr<Session> take_session(bool take_ended_live = true);
-  // Whether the live re-meshing's process still runs.
-  bool live_running() { return live_ && live_->running(); }
+  // Whether the live re-meshing goes: its process still runs, or its log is being opened
+  // (on a thread of its own: log_opening.hpp; the window keeps drawing the last mesh).
+  bool live_running() { return live_ && (live_->running() || (opening_ && !opening_->ready())); }
+  // The opening of the ended live run's log, while it goes (null else): for tests.
+  const LogOpening* live_opening() const { return opening_.get(); }
   // Whether a live re-meshing goes (or has ended, its mesh not yet taken); for how long.
   bool remeshing_live() const { return live_ != nullptr; }
   double live_seconds() const { return live_ ? live_->seconds() : 0.0; }
   // Live re-meshings stopped by a newer edit.
   std::size_t live_cancelled() const { return live_cancelled_; }
-  // Scripts, before they look: the live re-meshing has ended (take_session then has it).
+  // Scripts, before they look: the live re-meshing has ended and its log is open
+  // (take_session then has it).
   void wait_live();
   // Whether the viewer now shows the workbench's run (the loop carries its camera over).
   bool showing = false;
@@ -95,6 +100,14 @@ class WorkbenchHost {
   // folder is removed.
   std::unique_ptr<Workbench> bench_;
   std::unique_ptr<LiveRun> live_;
+  // The ended live run's log, being opened off the window's thread; and openings a newer
+  // edit made useless, kept until their threads end (joined then, not on the window's
+  // thread while they read). Declared after the run: they end before it (and its files).
+  std::unique_ptr<LogOpening> opening_;
+  std::vector<std::unique_ptr<LogOpening>> abandoned_;
+  void reap_abandoned();
+  // The ended live run's log being opened (when it succeeded): started once.
+  void start_opening();
   std::size_t live_cancelled_ = 0;
   std::string known_input_;
   std::vector<Operation> known_recipe_;

@@ -40,24 +40,24 @@ Workbench::LiveCommand Workbench::live_command(const std::string& program) {
 }
 
 std::unique_ptr<Session> Workbench::finish_live(const std::string& log, bool succeeded, const std::string& messages,
-                                                const std::string& output, double cpu_seconds, double wall_ms) {
+                                                const std::string& output, double cpu_seconds, double wall_ms,
+                                                std::unique_ptr<Session> opened, const std::string& open_error) {
   notices_.clear();
   cpu_ms_ = 1e3 * cpu_seconds;
   remesh_ms_ = wall_ms;
   const int first_index = editor_.input().first_index;
   std::unique_ptr<Session> session;
   if (succeeded) {
-    try {
-      session = shown(log);
-      last_vertices_ = session->log()->vertices().size();
-      // The triangles from its --stats line ("triangles":N).
-      if (const auto at = output.find("\"triangles\":"); at != std::string::npos)
-        mesh_triangles_ = std::strtoull(output.c_str() + at + 12, nullptr, 10);
-      return session;
-    } catch (const InputError& e) {
-      notices_.push_back({ElementRef{}, e.what(), true});
+    if (!opened) {
+      notices_.push_back({ElementRef{}, open_error.empty() ? log + ": the run's log could not be read" : open_error, true});
       return nullptr;
     }
+    session = shown(std::move(opened), log);
+    last_vertices_ = session->log() ? session->log()->vertices().size() : 0;
+    // The triangles from its --stats line ("triangles":N).
+    if (const auto at = output.find("\"triangles\":"); at != std::string::npos)
+      mesh_triangles_ = std::strtoull(output.c_str() + at + 12, nullptr, 10);
+    return session;
   }
   // Refused: the program's first line, less the temporary input's "FILE:LINE: " (the
   // element it names is drawn instead).

@@ -124,8 +124,11 @@ int report_live(const std::vector<Frame>& all, std::size_t vertices, const std::
     std::fprintf(stderr, "bench_workbench: the new mesh was never shown\n");
     return 1;
   }
-  std::vector<double> live_ms, idle_ms;
-  for (std::size_t i = begin; i < end; ++i) live_ms.push_back(all[i].ms);
+  std::vector<double> live_ms, idle_ms, live_allocations;
+  for (std::size_t i = begin; i < end; ++i) {
+    live_ms.push_back(all[i].ms);
+    live_allocations.push_back(static_cast<double>(all[i].allocations));
+  }
   for (std::size_t i = first + 1; i < all.size(); ++i) idle_ms.push_back(all[i].ms);
   if (live_ms.size() < 3 || idle_ms.size() < 10) {
     std::fprintf(stderr, "bench_workbench: %zu frames while live, %zu idle after: did the edit go live?\n",
@@ -133,11 +136,15 @@ int report_live(const std::vector<Frame>& all, std::size_t vertices, const std::
     return 1;
   }
   // The frame after the run: its log opened, the new mesh's first picture asked for.
-  std::printf("| input | recipe | frames while live | live frame: median / p95 / worst | idle frame median (same run) | median ratio | the new mesh's first frame |\n");
-  std::printf("|---|---|--:|--:|--:|--:|--:|\n");
-  std::printf("| %zu vertices | %s | %zu | %.1f / %.1f / %.1f ms | %.1f ms | %.2f | %.1f ms |\n", vertices, recipe.c_str(),
-              live_ms.size(), quantile(live_ms, 0.5), quantile(live_ms, 0.95), quantile(live_ms, 1.0),
-              quantile(idle_ms, 0.5), quantile(live_ms, 0.5) / quantile(idle_ms, 0.5), all[first].ms);
+  // Allocations per live frame: the first (the edit's) and the last (the run's end) are
+  // not the stretch's own; the median and worst of the rest.
+  std::vector<double> between(live_allocations.begin() + 1, live_allocations.end() - 1);
+  std::printf("| input | recipe | frames while live | live frame: median / p95 / worst | idle frame median (same run) | median ratio | the new mesh's first frame | allocations per live frame: median / worst |\n");
+  std::printf("|---|---|--:|--:|--:|--:|--:|--:|\n");
+  std::printf("| %zu vertices | %s | %zu | %.1f / %.1f / %.1f ms | %.1f ms | %.2f | %.1f ms | %.0f / %.0f |\n", vertices,
+              recipe.c_str(), live_ms.size(), quantile(live_ms, 0.5), quantile(live_ms, 0.95), quantile(live_ms, 1.0),
+              quantile(idle_ms, 0.5), quantile(live_ms, 0.5) / quantile(idle_ms, 0.5), all[first].ms,
+              quantile(between, 0.5), quantile(between, 1.0));
   return 0;
 }
 

@@ -13,6 +13,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
 #include "meshstep/error.hpp"
@@ -21,7 +23,9 @@
 #include "meshstep/refine/run_spec.hpp"
 #include "meshstep/io/write_pslg.hpp"
 #include "meshstep/scene/image.hpp"
+#include "disposal.hpp"
 #include "lasso_path.hpp"
+#include "log_opening.hpp"
 #include "meshstep/refine/region.hpp"
 #include "program_support.hpp"
 #include "script.hpp"
@@ -128,6 +132,111 @@ TEST(WorkbenchModel, RemeshesWhenStaleKeepsTheLastGoodMeshAndRunsTheRecipe) {
   EXPECT_NE(bench.remesh(), nullptr);
   EXPECT_FALSE(bench.refused());
   EXPECT_EQ(bench.mesh_triangles(), good);  // the same input, the same recipe: the same mesh
+}
+
+// A live re-meshing's log is opened on a thread of its own (log_opening.hpp), not on the
+// window's: the session it gives is the one opening the log on the caller's thread gives
+// (the same run, at its end, the same mesh), and the workbench takes it as the new run. A
+// log that cannot be read is refused with its words, and the last good mesh stays.
+TEST(WorkbenchModel, AnEndedLiveRunsLogIsOpenedOffTheWindowsThreadAndShownAsIfOpenedOnIt) {
+  Pslg square;
+  square.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.3, 0.6}};
+  square.segments = {{0, 1, 0}, {1, 2, 0}, {2, 3, 0}, {3, 0, 0}};
+  Workbench bench(square, {parse_operation("refine --algorithm lepp-centroid --min-angle 25 --max-area 0.01")}, "");
+  std::unique_ptr<Session> made = bench.remesh();
+  ASSERT_NE(made, nullptr);
+  ASSERT_NE(made->log(), nullptr);
+  const std::string log = made->log()->path();
+  const std::size_t triangles = bench.mesh_triangles();
+
+  LogOpening opening(log, "opened elsewhere");
+  std::unique_ptr<Session> opened = opening.take();
+  ASSERT_NE(opened, nullptr) << opening.error();
+  EXPECT_TRUE(opening.ready());
+  EXPECT_EQ(opening.error(), "");
+  EXPECT_NE(opening.opened_on(), std::this_thread::get_id());
+  EXPECT_EQ(opened->title(), "opened elsewhere");
+  // As the window's thread would have it: the whole run, at its end.
+  std::unique_ptr<Session> here = Session::open_log(log);
+  here->to_end();
+  EXPECT_EQ(opened->cursor_info().position, here->cursor_info().position);
+  EXPECT_EQ(opened->cursor_info().position, opened->log()->event_count());
+  EXPECT_EQ(opened->cursor_info().step, here->cursor_info().step);
+  EXPECT_EQ(opened->scene().mesh.triangles.size(), here->scene().mesh.triangles.size());
+  EXPECT_EQ(opened->scene().mesh.triangles.size(), triangles);
+
+  // The workbench takes it as the live run's end: its title, its counts.
+  bench.editor().move_vertex(4, {0.31, 0.6});
+  const std::string said = "{\"triangles\":" + std::to_string(triangles) + "}";
+  std::unique_ptr<Session> shown =
+      bench.finish_live(log, true, "", said, 0.5, 700.0, std::move(opened), opening.error());
+  ASSERT_NE(shown, nullptr);
+  EXPECT_FALSE(bench.refused());
+  EXPECT_EQ(shown->title(), bench.title());
+  EXPECT_EQ(bench.mesh_triangles(), triangles);
+  EXPECT_EQ(bench.remesh_ms(), 700.0);
+
+  // Not a log: nothing opened, the reader's words kept; the workbench refuses it and keeps
+  // its last mesh.
+  const std::string junk = (fs::temp_directory_path() / ("meshstep-not-a-log-" + std::to_string(::getpid()))).string();
+  std::ofstream(junk) << "not a log\n";
+  LogOpening bad(junk, "junk");
+  EXPECT_EQ(bad.take(), nullptr);
+  EXPECT_NE(bad.error().find(junk), std::string::npos) << bad.error();
+  EXPECT_EQ(bench.finish_live(junk, true, "", "", 0.1, 1.0, nullptr, bad.error()), nullptr);
+  EXPECT_TRUE(bench.refused());
+  EXPECT_EQ(bench.notices().front().text, bad.error());
+  EXPECT_EQ(bench.mesh_triangles(), triangles);
+  fs::remove(junk);
+}
+
+// The run the workbench showed before is freed on a thread of its own (disposal.hpp), not
+// the window's: each thing given is destroyed once, off the caller's thread, and by the
+// time the disposal itself is gone.
+struct FreedOn {
+  std::vector<std::thread::id>* freed;
+  bool owns = true;
+  explicit FreedOn(std::vector<std::thread::id>* f) : freed(f) {}
+  FreedOn(FreedOn&& o) noexcept : freed(o.freed), owns(std::exchange(o.owns, false)) {}
+  FreedOn& operator=(FreedOn&&) = delete;
+  ~FreedOn() {
+    if (owns) freed->push_back(std::this_thread::get_id());
+  }
+};
+
+TEST(WorkbenchModel, TheRunShownBeforeIsFreedOffTheWindowsThread) {
+  std::vector<std::thread::id> freed;
+  {
+    Disposal disposal;
+    disposal.dispose(FreedOn(&freed));
+    disposal.dispose(FreedOn(&freed));  // after the first, which is then freed already
+    ASSERT_GE(freed.size(), 1u);
+    EXPECT_NE(freed[0], std::this_thread::get_id());
+    // A session too (what Viewer::release_run gives), with nothing left to free here.
+    Pslg square;
+    square.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    disposal.dispose(Session::still(square, "freed elsewhere"));
+  }
+  ASSERT_EQ(freed.size(), 2u);
+  EXPECT_NE(freed[1], std::this_thread::get_id());
+}
+
+// The panel's recipe list shows a polygon written out as a count, so that it wraps at its
+// words and not in the middle of a number; the saved recipe keeps the numbers.
+TEST(WorkbenchModel, ThePanelShowsALassosPolygonAsACount) {
+  EXPECT_EQ(recipe_label("refine --algorithm circumcenter --max-area 0.005 --region-polygon 5.134,1.154,5.252,1.356,4,1"),
+            "refine --algorithm circumcenter --max-area 0.005 --region-polygon (lasso of 3 points)");
+  EXPECT_EQ(recipe_label("refine --region-polygon 0,0,1,0,1,1,0,1 --min-angle 25"),
+            "refine --region-polygon (lasso of 4 points) --min-angle 25");
+  EXPECT_EQ(recipe_label("refine --region 0,0,1,1 --min-angle 25"), "refine --region 0,0,1,1 --min-angle 25");
+  Pslg square;
+  square.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  square.segments = {{0, 1, 0}, {1, 2, 0}, {2, 3, 0}, {3, 0, 0}};
+  Workbench bench(square, {}, "");
+  bench.append_operation(parse_operation("refine --max-area 0.01 --region-polygon 0.1,0.1,0.9,0.1,0.5,0.8"));
+  ASSERT_EQ(bench.recipe_labels().size(), 1u);
+  EXPECT_NE(bench.recipe_labels()[0].find("(lasso of 3 points)"), std::string::npos) << bench.recipe_labels()[0];
+  EXPECT_NE(bench.recipe_text().find("0.1,0.1,0.9,0.1,0.5,0.8"), std::string::npos) << bench.recipe_text();
 }
 
 // A recipe saved over the input being edited would lose the user's file: refused, the file

@@ -172,6 +172,10 @@ class WorkbenchXEvents : public ::testing::TestWithParam<std::string> {
   // The edit panel's places in a 1024x640 window (from its screenshot): the hole tool's
   // radio button, the region form's max-area field and its "Refine the box" button.
   static constexpr std::pair<int, int> hole_radio_{836, 136}, max_area_field_{710, 373}, refine_button_{711, 424};
+  static constexpr std::pair<int, int> vertex_radio_{662, 136};
+  // The right-click menu opens at the pointer: its one item ("Delete vertex N") a little
+  // right of the pointer, half a line below it (its screenshot).
+  static constexpr std::pair<int, int> menu_item_offset_{40, 8};
   fs::path dir_;
   std::string display_, window_;
   pid_t xvfb_ = 0, viewer_ = 0;
@@ -286,6 +290,84 @@ TEST_P(WorkbenchXEvents, RealMouseAndKeysEditUndoRedoHoleRegionAndSave) {
   ASSERT_EQ(m.status, 0) << m.output << read_text(path("rect.recipe"));
   EXPECT_EQ(static_cast<long long>(io::read_mesh(path("reproduced")).triangles.size()), field(s6, "mesh_triangles"));
   EXPECT_EQ(scene::read_png(path("xevents.png")).width, 1024);
+}
+
+// The vertex tool with the real pointer: a click on empty canvas makes a vertex where the
+// pointer is; a drag moves it (one edit), Ctrl+Z puts it back bit for bit and Ctrl+Shift+Z
+// moves it again; the right-click menu's Delete deletes it, and Ctrl+Z brings it back
+// where it was dragged to, bit for bit. Each stage saved (Ctrl+S) and read back.
+TEST_P(WorkbenchXEvents, TheVertexToolAddsDragsUndoesAndDeletesFromTheMenu) {
+  const std::string input = path("rect.poly");
+  std::ofstream(input) << kRectangle;
+  std::string script;
+  for (const char* s : {"s0", "s1", "s2", "s3", "s4", "s5", "s6"}) script += script_stage(s);
+  start(input, script + "screenshot " + path("vertex.png") + "\nquit\n");
+  if (HasFatalFailure()) return;
+  key("e");
+  const std::string s0 = stage("s0");
+  EXPECT_EQ(counts(s0), "4 4 0 0") << s0;
+  const View view(s0);
+  ASSERT_GT(view.scale, 10.0) << s0;
+
+  // The vertex tool (the panel's first radio button), a click inside the rectangle.
+  click(vertex_radio_);
+  const auto at = view.pixel(1.5, 1.2);
+  click(at);
+  key("ctrl+s");
+  const std::string s1 = stage("s1");
+  EXPECT_TRUE(has(s1, "\"edit_tool\": \"vertex\"")) << s1;
+  EXPECT_EQ(counts(s1), "5 4 0 0") << s1;
+  const Pslg added = io::read_poly(input);
+  ASSERT_EQ(added.points.size(), 5u);
+  const Point w = view.world(at.first, at.second);
+  EXPECT_NEAR(added.points[4].x, w.x, 1e-6);
+  EXPECT_NEAR(added.points[4].y, w.y, 1e-6);
+
+  // Dragged 35 pixels right and 25 up: one edit, the vertex where the button was released.
+  const std::pair<int, int> moved{at.first + 35, at.second - 25};
+  drag(at, moved);
+  key("ctrl+s");
+  const std::string s2 = stage("s2");
+  EXPECT_EQ(counts(s2), "5 4 0 0") << s2;
+  EXPECT_EQ(field(s2, "undo_depth"), field(s1, "undo_depth") + 1) << s2;
+  const Pslg dragged = io::read_poly(input);
+  ASSERT_EQ(dragged.points.size(), 5u);
+  const Point m = view.world(moved.first, moved.second);
+  EXPECT_NEAR(dragged.points[4].x, m.x, 1e-6);
+  EXPECT_NEAR(dragged.points[4].y, m.y, 1e-6);
+  EXPECT_NE(dragged.points[4], added.points[4]);
+
+  // Ctrl+Z: where the click put it, bit for bit; Ctrl+Shift+Z: where the drag put it.
+  key("ctrl+z");
+  key("ctrl+s");
+  const std::string s3 = stage("s3");
+  EXPECT_EQ(field(s3, "undo_depth"), field(s1, "undo_depth")) << s3;
+  EXPECT_EQ(io::read_poly(input).points.at(4), added.points[4]);
+  key("ctrl+shift+z");
+  key("ctrl+s");
+  const std::string s4 = stage("s4");
+  EXPECT_EQ(field(s4, "undo_depth"), field(s2, "undo_depth")) << s4;
+  EXPECT_EQ(io::read_poly(input).points.at(4), dragged.points[4]);
+
+  // A right click on it opens the menu; its Delete deletes it (the rectangle's corners and
+  // sides stay).
+  click(moved, 3);
+  click({moved.first + menu_item_offset_.first, moved.second + menu_item_offset_.second});
+  key("ctrl+s");
+  const std::string s5 = stage("s5");
+  EXPECT_EQ(counts(s5), "4 4 0 0") << s5;
+  const Pslg deleted = io::read_poly(input);
+  ASSERT_EQ(deleted.points.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(deleted.points[i], added.points[i]) << "corner " << i;
+
+  // Ctrl+Z: back where it was dragged to, bit for bit.
+  key("ctrl+z");
+  key("ctrl+s");
+  const std::string s6 = stage("s6");
+  EXPECT_EQ(counts(s6), "5 4 0 0") << s6;
+  EXPECT_EQ(io::read_poly(input).points.at(4), dragged.points[4]);
+  ASSERT_EQ(finish(), 0) << read_text(path("view.out"));
+  EXPECT_EQ(scene::read_png(path("vertex.png")).width, 1024);
 }
 
 // Shift+B and a lasso drawn with the real pointer (press, 24 moves round an ellipse,
