@@ -15,6 +15,7 @@
 
 #include "meshstep/check/mesh_check.hpp"
 #include "meshstep/error.hpp"
+#include "meshstep/geometry/predicates.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/refine/refine.hpp"
 #include "meshstep/refine/registry.hpp"
@@ -227,6 +228,41 @@ TEST(SegmentSplits, TheReportCountsTrianglesLeftOverTheBound) {
   EXPECT_GT(report.steiner_vertices, 0u);
 }
 
+// Lepp beside kept segments: on A.poly every Lepp path ends at the boundary, whose
+// terminal midpoints (and centroids beside it) are refused when the boundary is kept; the
+// bad triangle's own point is inserted instead. Without that fallback both Lepp selections
+// added no point at all under interior (offcenter adds 2). The run ends, and no vertex
+// lands on a kept segment.
+TEST(SegmentSplits, LeppFallsBackToTheBadTrianglesOwnPointBesideKeptSegments) {
+  const auto path = testing::shared_data() / "pslg" / "A.poly";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no shared corpus";
+  const Pslg in = io::read_pslg(path.string());
+  const std::set<Edge> input_boundary = boundary_edges(triangulate(in));
+  for (const char* name : {"lepp-centroid", "lepp-midpoint"})
+    for (const SegmentSplits splits : {SegmentSplits::interior, SegmentSplits::none}) {
+      SCOPED_TRACE(std::string(name) + " " + to_string(splits));
+      const RefineOptions o = options(*find_algorithm(name), splits, DataStructure::tds);
+      RefineReport report;
+      const TriMesh m = refine(in, o, &report);
+      EXPECT_FALSE(report.stopped_by_cap);
+      EXPECT_GT(report.steiner_vertices, 0u);
+      EXPECT_GT(m.points.size(), in.points.size());
+      EXPECT_EQ(boundary_edges(m), input_boundary);
+      if (splits == SegmentSplits::none) EXPECT_EQ(segment_set(m.segments), segment_set(in.segments));
+      // No new vertex on an input segment (all of A.poly's are on its boundary).
+      for (std::size_t v = in.points.size(); v < m.points.size(); ++v)
+        for (const Segment& s : in.segments) {
+          const Point &a = in.points[s.a], &b = in.points[s.b], &p = m.points[v];
+          const bool collinear = orient2d(a, b, p) == 0.0;  // exact
+          const bool within = std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
+                              std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+          EXPECT_FALSE(collinear && within) << "vertex " << v << " on segment " << s.a << "-" << s.b;
+        }
+      const CheckReport check = check_mesh(m, &in);
+      EXPECT_TRUE(check.ok) << (check.problems.empty() ? std::string() : check.problems.front());
+    }
+}
+
 // The same mesh on both data structures (the refiner decides in the mesh's own order).
 TEST(SegmentSplits, BothDataStructuresGiveTheSameMesh) {
   const Pslg in = small_angles_and_near_collinear();
@@ -275,6 +311,25 @@ TEST(SegmentSplits, TheLogHeaderSaysWhichSegmentsWereKept) {
   EXPECT_NE(replay::refine_parameters(o, "", 4, 0).find(" split_segments=interior"), std::string::npos);
   o.segment_splits = SegmentSplits::none;
   EXPECT_NE(replay::refine_parameters(o, "", 4, 0).find(" split_segments=none"), std::string::npos);
+}
+
+// A caption names the mode when segments were kept (the run is not the default's), read
+// back from the header as written; a run that splits them all is described as before.
+TEST(SegmentSplits, TheRunsDescriptionNamesTheModeWhenSegmentsAreKept) {
+  RefineOptions o = options_for(*find_algorithm("offcenter"));
+  o.criteria.min_angle_deg = 30.0;
+  replay::LogHeader header;
+  header.algorithm = "offcenter";
+  header.data_structure = "tds";
+  header.parameters = replay::refine_parameters(o, "", 4, 0);
+  EXPECT_EQ(replay::describe_run(header, replay::read_run_header(header, "run.log")), "offcenter, min angle 30");
+  for (const SegmentSplits splits : {SegmentSplits::interior, SegmentSplits::none}) {
+    o.segment_splits = splits;
+    header.parameters = replay::refine_parameters(o, "", 4, 0);
+    const replay::RunHeader run = replay::read_run_header(header, "run.log");
+    EXPECT_EQ(run.segment_splits, splits);
+    EXPECT_EQ(replay::describe_run(header, run), std::string("offcenter, min angle 30, split segments ") + to_string(splits));
+  }
 }
 
 }  // namespace

@@ -368,11 +368,11 @@ class Builder {
     // Constrained edges that keep a triangle on at least one side, decided while the mesh
     // is still closed (afterwards a vertex where two parts of the domain touch has two
     // separate fans, and an edge search from it could miss one).
-    for (const auto& [key, marker] : segments_.markers()) {
+    for (const auto& [key, constraint] : segments_.constraints()) {
       const auto a = static_cast<VertexId>(key >> 32), b = static_cast<VertexId>(key & 0xFFFFFFFFu);
       const HalfEdge h = tri_.find_edge(a, b);
       if (h != kNone && (!dead[m.face(h)] || !dead[m.face(m.twin(h))]))
-        kept_segments_.push_back({a, b, marker});
+        kept_segments_.push_back({a, b, constraint.marker});
     }
     for (const FaceId f : removed) {
       const HalfEdge first = m.half_edge(f);

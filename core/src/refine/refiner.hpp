@@ -384,7 +384,10 @@ class Refiner {
   }
 
   // The point a bad triangle asks for, and the alternative weighed against it.
-  Point select(const Candidate& c, Point& alternative) {
+  // `terminal`: whether it is a Lepp terminal point (else the bad triangle's own point);
+  // with `lepp` false the Lepp path is not followed (the fallback in fix()).
+  Point select(const Candidate& c, Point& alternative, bool lepp, bool& terminal) {
+    terminal = false;
     const Point &pa = point(c.a), &pb = point(c.b), &pc = point(c.c);
     Point center = quality::circumcenter(pa, pb, pc);
     const quality::Shape s = quality::shape(pa, pb, pc);
@@ -397,9 +400,12 @@ class Refiner {
       center = {(p.x + q.x) / 2.0, (p.y + q.y) / 2.0};
     }
     alternative = center;
-    if (lepp_selection()) {
+    if (lepp && lepp_selection()) {
       const Point p = lepp_point(c.face);
-      if (!too_close_to_terminal_vertices(p, s.shortest2)) return p;
+      if (!too_close_to_terminal_vertices(p, s.shortest2)) {
+        terminal = true;
+        return p;
+      }
     }
     if (options_.selection == Selection::longest_edge_midpoint) {
       const Point* v[3] = {&pa, &pb, &pc};
@@ -565,21 +571,47 @@ class Refiner {
 
   void fix(const Candidate& c) {
     held_lepp_.held = false;  // a path held for a point that made no step is not recorded
+    fix_with(c, lepp_selection());
+  }
+
+  // Lepp under kept segments (--split-segments interior|none). A terminal edge on a segment
+  // asks for its midpoint, and a terminal quadrilateral beside one has its centroid inside
+  // the segment's diametral circle: both are refused when that segment is kept whole, and
+  // on a domain whose Lepp paths all end at its boundary (A.poly) nothing was inserted at
+  // all. Rivara's algorithm has no answer (it always splits the terminal edge), so it falls
+  // back to what the other point-insertion algorithms insert for that bad triangle: its own
+  // off-center (or circumcenter), as Triangle's -Y does, which improves the triangle itself
+  // rather than the larger ones at the end of its path. The centroid of a single terminal
+  // triangle would not do: on its longest edge, the segment, it lies in the diametral
+  // circle unless the triangle is very flat. If the own point is refused too, the triangle
+  // is set aside as before, so the run still ends.
+  void fix_with(const Candidate& c, bool lepp) {
     Point alternative;
-    const Point p = select(c, alternative);
+    bool terminal = false;
+    const Point p = select(c, alternative, lepp, terminal);
     if (!exact_range_.holds(p)) {  // left as it is, like a triangle at a small input angle
       ++out_of_range_;
       return;
     }
+    // Refused for a segment kept whole: a Lepp terminal point falls back (see above).
+    const auto refuse = [&] {
+      if (terminal) {
+        held_lepp_.held = false;  // the step, if any, is the bad triangle's own
+        fix_with(c, false);
+        return;
+      }
+      ++kept_refusals_;
+    };
     // A Lepp point is located from its terminal triangle: the straight line from the bad
-    // triangle to it may cross a segment that the path went around.
-    const WalkResult w = walk(lepp_selection() ? lepp_faces_.back() : c.face, p);
+    // triangle to it may cross a segment that the path went around. (The fallback, its own
+    // point, from the bad triangle.)
+    const WalkResult w = walk(lepp && lepp_selection() ? lepp_faces_.back() : c.face, p);
     if (w.kind == WalkResult::Kind::on_vertex) return;  // a vertex there already: left as it is
     if (w.kind == WalkResult::Kind::blocked || (w.kind == WalkResult::Kind::on_edge && is_segment(w.h))) {
       // Beyond a segment kept whole (outside the domain, for a boundary one) or on it: the
       // triangle is set aside, never retried, so a run with kept segments ends as one without.
       if (!may_split(w.h)) {
-        ++kept_refusals_;
+        refuse();
         return;
       }
       ++rejected_;
@@ -590,7 +622,7 @@ class Refiner {
     // Encroaching on a segment kept whole: set aside as above (splitting the others it
     // encroaches would not make the point acceptable).
     if (std::any_of(encroached_.begin(), encroached_.end(), [&](HalfEdge e) { return !may_split(e); })) {
-      ++kept_refusals_;
+      refuse();
       return;
     }
     if (!encroached_.empty()) {
@@ -610,7 +642,12 @@ class Refiner {
       record_failed_criteria(rec, criteria_, tri_.points(), c.a, c.b, c.c);
       record_held_lepp_path(rec);
       const Point alternatives[1] = {alternative};
-      rec.point_selected(static_cast<std::uint8_t>(options_.selection), c.a, c.b, c.c, p,
+      // The fallback beside a kept segment inserts the off-center's point: recorded as
+      // such, so that the step's story names the point it inserted. (A terminal point too
+      // close to a terminal vertex falls back to the same point and is still recorded as
+      // the Lepp selection's, as it always was.)
+      const Selection recorded = lepp_selection() && !lepp ? Selection::offcenter : options_.selection;
+      rec.point_selected(static_cast<std::uint8_t>(recorded), c.a, c.b, c.c, p,
                          std::span<const Point>(alternatives, p == alternative ? 0 : 1));
     }
     const VertexId v = tri_.add_point(p);

@@ -88,6 +88,9 @@ std::string describe_run(const LogHeader& h, const RunHeader& run) {
   if (run.max_aspect && *run.max_aspect > 0.0) add("max aspect " + short_number(*run.max_aspect));
   if (run.max_area && *run.max_area > 0.0) add("max area " + short_number(*run.max_area));
   if (run.size && *run.size > 0.0) add("size " + short_number(*run.size));
+  // The mode changes the mesh as much as a bound does (the boundary kept whole, triangles
+  // left over the bound beside it): named as the option names it.
+  if (run.segment_splits != SegmentSplits::all) add(std::string("split segments ") + to_string(run.segment_splits));
   if (!h.data_structure.empty() && h.data_structure != "tds") add(h.data_structure);
   const std::string insertion = run.insertion.empty() ? h.insertion : run.insertion;
   if (!insertion.empty() && insertion != "flip") add(insertion);
@@ -132,6 +135,8 @@ RunHeader read_run_header(const LogHeader& header, const std::string& path) {
   run.max_area = bound("max_area");
   run.size = bound("size");
   run.max_error = bound("max_error");
+  for (const SegmentSplits mode : {SegmentSplits::interior, SegmentSplits::none})
+    if (text("split_segments") == to_string(mode)) run.segment_splits = mode;
   if (const std::string r = text("region"); !r.empty()) {
     try {
       run.region = RefineRegion::parse_text(r);

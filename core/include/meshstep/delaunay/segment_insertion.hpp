@@ -55,8 +55,15 @@ class SegmentInserter {
     }
   }
 
-  // Marker of every constrained edge, keyed by its endpoints (smaller id first).
-  const std::unordered_map<std::uint64_t, int>& markers() const { return markers_; }
+  // What a constrained edge carries: its marker, and the input segment it is a piece of
+  // (kNoSource for none), to count the crossings of each pair of input segments.
+  static constexpr std::uint32_t kNoSource = static_cast<std::uint32_t>(-1);
+  struct Constraint {
+    int marker;
+    std::uint32_t source;
+  };
+  // Every constrained edge, keyed by its endpoints (smaller id first).
+  const std::unordered_map<std::uint64_t, Constraint>& constraints() const { return constraints_; }
   static std::uint64_t edge_key(VertexId a, VertexId b) {
     if (a > b) std::swap(a, b);
     return (std::uint64_t{a} << 32) | b;
@@ -73,20 +80,17 @@ class SegmentInserter {
     int marker;
     std::uint32_t source;  // the input segment it is a piece of
   };
-  static constexpr std::uint32_t kNoSource = static_cast<std::uint32_t>(-1);
-
   const Point& P(VertexId v) const { return tri_.point(v); }
   const Mesh& mesh() const { return tri_.mesh(); }
 
   void constrain(HalfEdge h, int marker, std::uint32_t source) {
     tri_.set_constrained(h, true, marker);
-    const std::uint64_t key = edge_key(mesh().origin(h), mesh().dest(h));
-    markers_[key] = marker;
-    sources_[key] = source;
+    constraints_[edge_key(mesh().origin(h), mesh().dest(h))] = {marker, source};
   }
-  std::uint32_t source_of(VertexId r, VertexId l) const {
-    const auto it = sources_.find(edge_key(r, l));
-    return it == sources_.end() ? kNoSource : it->second;
+  // What r-l carries; an edge not recorded here takes `marker` and no source.
+  Constraint constraint_of(VertexId r, VertexId l, int marker) const {
+    const auto it = constraints_.find(edge_key(r, l));
+    return it == constraints_.end() ? Constraint{marker, kNoSource} : it->second;
   }
 
   // Inserts the piece a-b, or pushes the pieces it must be split into onto pending_.
@@ -155,9 +159,7 @@ class SegmentInserter {
     const VertexId r = mesh().origin(e), l = mesh().dest(e);
     const Point x = intersection(P(a), P(b), P(r), P(l));
     refuse_out_of_range(x);
-    const auto existing = markers_.find(edge_key(r, l));
-    const int old_marker = existing != markers_.end() ? existing->second : marker;
-    const std::uint32_t old_source = source_of(r, l);
+    const auto [old_marker, old_source] = constraint_of(r, l, marker);
     ++splits_;
     // The rounded point on an endpoint, or within rounding of one (where a segment ends on
     // the other's line): route the pieces through that vertex.
@@ -236,8 +238,7 @@ class SegmentInserter {
   void release(HalfEdge e) {
     const VertexId r = mesh().origin(e), l = mesh().dest(e);
     tri_.set_constrained(e, false, 0);
-    markers_.erase(edge_key(r, l));
-    sources_.erase(edge_key(r, l));
+    constraints_.erase(edge_key(r, l));
     stack_.assign(1, e);
     tri_.make_delaunay(stack_);
   }
@@ -246,19 +247,14 @@ class SegmentInserter {
   // triangle is counterclockwise); both halves keep its marker. Returns the new vertex.
   VertexId split_constrained(HalfEdge e, const Point& x, int unknown_marker) {
     const VertexId r = mesh().origin(e), l = mesh().dest(e);
-    const auto existing = markers_.find(edge_key(r, l));
-    const int marker = existing != markers_.end() ? existing->second : unknown_marker;
-    const std::uint32_t source = source_of(r, l);
-    markers_.erase(edge_key(r, l));
-    sources_.erase(edge_key(r, l));
+    const auto [marker, source] = constraint_of(r, l, unknown_marker);
+    constraints_.erase(edge_key(r, l));
     const HalfEdge out = tri_.insert_on_edge(x, e);
     const VertexId v = mesh().origin(out);
     ++steiner_;
     mend_edges_round(out);
-    markers_[edge_key(r, v)] = marker;
-    markers_[edge_key(v, l)] = marker;
-    sources_[edge_key(r, v)] = source;
-    sources_[edge_key(v, l)] = source;
+    constraints_[edge_key(r, v)] = {marker, source};
+    constraints_[edge_key(v, l)] = {marker, source};
     if constexpr (Rec::enabled) {
       // The halves kept the old edge's flag; record that they carry its marker too.
       tri_.set_constrained(tri_.find_edge(r, v), true, marker);
@@ -389,8 +385,7 @@ class SegmentInserter {
 
   Triangulation<Mesh, Rec>& tri_;
   std::optional<ExactRange> range_;  // made at the first crossing
-  std::unordered_map<std::uint64_t, int> markers_;
-  std::unordered_map<std::uint64_t, std::uint32_t> sources_;  // input segment of each constrained edge
+  std::unordered_map<std::uint64_t, Constraint> constraints_;  // one entry per constrained edge
   std::unordered_map<std::uint64_t, int> crossings_;  // pair of input segments -> how many times their pieces crossed
   std::vector<Piece> pending_;
   std::vector<Pair> crossed_;

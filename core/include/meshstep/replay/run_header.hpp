@@ -28,6 +28,9 @@ struct RunHeader {
   std::optional<double> lens_angle;  // degrees, under the lens rule
   // The bounds as numbers (none: not set, written as 0, or not a number: a --size grid's name).
   std::optional<double> min_angle, max_angle, max_aspect, max_area, size, max_error;
+  // Which segments the refinement could split (split_segments=, written only when not all;
+  // a word that is none of the modes reads as all, as a header without it does).
+  SegmentSplits segment_splits = SegmentSplits::all;
   // The part of the plane the refinement was limited to (region=box:... or polygon:...).
   std::optional<RefineRegion> region;
   // A recipe's operations in the order they ran (empty: a run of one, described above).
@@ -57,8 +60,9 @@ std::string surface_parameters(double max_edge, double max_area, std::uint64_t i
 std::string terrain_parameters(const terrain::TerrainOptions& options, const terrain::HeightGrid& grid);
 
 // The run in a few words, for a caption or a column: the algorithm, its bounds, and the
-// parts that are not the defaults (a dcel, cavities), so that two runs' descriptions say how
-// they differ: "offcenter, min angle 30", "triangulate, dcel, cavity".
+// parts that are not the defaults (segments kept whole, a dcel, cavities), so that two runs'
+// descriptions say how they differ: "offcenter, min angle 30", "offcenter, min angle 30,
+// split segments interior", "triangulate, dcel, cavity".
 std::string describe_run(const LogHeader& header, const RunHeader& run);
 
 // A value from the header's "key=value" parameters, or `fallback` (what read_run_header
