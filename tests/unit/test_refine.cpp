@@ -786,5 +786,36 @@ TEST(RefineIssue31, CrossingOfAHugeSegmentStaysCovered) {
     }
 }
 
+// The same hour-long run, later: the segment (1,3)-(4,0) passes exactly through the vertex
+// (3,1), but its piece from a rounded crossing passed an ulp beside it, on the hole's side;
+// the refiner's split of that boundary piece then left (3,1) inside a triangle
+// (regressions/refine_options/vertex_beside_a_bent_piece_covered). Every algorithm, both
+// structures, the circle rule that made the split.
+TEST(RefineIssue31, VertexOnASegmentBentByACrossingStaysAVertexOfTheMesh) {
+  Pslg in;
+  in.points = {{0, 0}, {4, 0}, {41, 3}, {0, 8}, {1, 2}, {3, 1}, {3, 3}, {1, 3}};
+  for (const auto& [a, b] : std::vector<std::pair<std::uint32_t, std::uint32_t>>{
+           {0, 1}, {1, 2}, {2, 3}, {3, 0}, {2, 4}, {5, 3}, {6, 7}, {7, 1}})
+    in.segments.push_back({a, b, 1});
+  in.holes = {{2, 2}};
+  for (const AlgorithmInfo& algorithm : algorithms())
+    for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel}) {
+      RefineOptions o = options_for(algorithm);
+      o.triangulate.data_structure = ds;
+      o.encroachment = Encroachment::circle;
+      o.criteria.min_angle_deg = o.insertion == RefineInsertion::bisection ? 0.0 : 24.9;
+      o.criteria.max_area = 41.0;
+      o.criteria.max_steiner = 61;
+      if (algorithm.aspect_then_angle) o.phases = aspect_then_angle_phases(o.criteria, algorithm);
+      RefineReport report;
+      const TriMesh m = refine(in, o, &report);
+      CheckOptions c;
+      c.delaunay = o.insertion == RefineInsertion::delaunay;
+      const CheckReport check = check_mesh(m, &in, c);
+      EXPECT_TRUE(check.ok) << algorithm.name << "/" << to_string(ds) << ": "
+                            << (check.problems.empty() ? std::string() : check.problems.front());
+    }
+}
+
 }  // namespace
 }  // namespace meshstep

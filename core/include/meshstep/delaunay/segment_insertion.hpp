@@ -47,6 +47,9 @@ class SegmentInserter {
   // of each pair); distinct segments need distinct indices.
   void insert(VertexId a, VertexId b, int marker, std::uint32_t index) {
     tri_.recorder().step_begin(tri_.mesh(), replay::StepKind::recover_segment, a, b);
+    if (source_ends_.empty()) input_vertices_ = tri_.points().size();  // segments come after every vertex
+    if (index >= source_ends_.size()) source_ends_.resize(index + 1, {kInfiniteVertex, kInfiniteVertex});
+    source_ends_[index] = {a, b};
     pending_.push_back({a, b, marker, index});
     while (!pending_.empty()) {
       const Piece piece = pending_.back();
@@ -93,11 +96,42 @@ class SegmentInserter {
     return it == constraints_.end() ? Constraint{marker, kNoSource} : it->second;
   }
 
+  // A piece with a rounded crossing for an end is bent off its input segment's line by an
+  // ulp or so, and may pass beside an input vertex that lies exactly on that segment: the
+  // vertex is left on one side, and when the piece is a boundary, a later split of it (rounded
+  // too) can leave the vertex inside a triangle (issue 31, fuzz_refine_options: the segment
+  // (1,3)-(4,0) through the input vertex (3,1), split first where another crosses it).
+  // Such a vertex is on the segment's chain: the piece is split there. Every vertex an ulp
+  // beside the piece borders the faces it crosses (an end of a crossed edge) or, when the
+  // piece is an edge already, is the apex of a face of it.
+  bool bent(const Piece& piece) const {
+    if (piece.source >= source_ends_.size() || source_ends_[piece.source].first == kInfiniteVertex) return false;
+    const Point &s = P(source_ends_[piece.source].first), &t = P(source_ends_[piece.source].second);
+    return orient2d(s, t, P(piece.a)) != 0.0 || orient2d(s, t, P(piece.b)) != 0.0;
+  }
+  // An input vertex exactly on the piece's input segment, strictly inside it, and ahead of a
+  // towards b (no vertex within rounding of a or b: those are snapped to them).
+  bool on_source_segment(const Piece& piece, VertexId y) const {
+    if (y == kInfiniteVertex || y >= input_vertices_ || y == piece.a || y == piece.b) return false;
+    const Point &s = P(source_ends_[piece.source].first), &t = P(source_ends_[piece.source].second);
+    const Point &a = P(piece.a), &b = P(piece.b), &v = P(y);
+    return orient2d(s, t, v) == 0.0 && strictly_between(s, t, v) &&
+           (v.x - a.x) * (b.x - a.x) + (v.y - a.y) * (b.y - a.y) > 0.0 &&
+           (v.x - b.x) * (a.x - b.x) + (v.y - b.y) * (a.y - b.y) > 0.0;
+  }
+
   // Inserts the piece a-b, or pushes the pieces it must be split into onto pending_.
   void insert_piece(const Piece& piece) {
     const VertexId a = piece.a, b = piece.b;
     if (a == b) return;
+    const bool is_bent = bent(piece);
     if (const HalfEdge h = tri_.find_edge(a, b); h != kNone) {
+      if (is_bent)
+        for (const HalfEdge side : {h, mesh().twin(h)})
+          if (const VertexId y = mesh().apex(side); on_source_segment(piece, y)) {
+            split_at_vertex(piece, y);
+            return;
+          }
       constrain(h, piece.marker, piece.source);
       return;
     }
@@ -139,6 +173,13 @@ class SegmentInserter {
       }
       e = oy > 0.0 ? mesh().next(t) : mesh().prev(t);
     }
+    if (is_bent)
+      for (const Pair& crossed : crossed_)
+        for (const VertexId y : {crossed.first, crossed.second})
+          if (on_source_segment(piece, y)) {
+            split_at_vertex(piece, y);
+            return;
+          }
     remove_crossings(a, b);
     const HalfEdge ab = tri_.find_edge(a, b);
     if (ab == kNone) throw std::logic_error("segment insertion: segment not recovered");
@@ -385,6 +426,8 @@ class SegmentInserter {
 
   Triangulation<Mesh, Rec>& tri_;
   std::optional<ExactRange> range_;  // made at the first crossing
+  std::vector<Pair> source_ends_;     // input segment (its index) -> its two ends
+  std::size_t input_vertices_ = 0;   // vertices below this number are the input's
   std::unordered_map<std::uint64_t, Constraint> constraints_;  // one entry per constrained edge
   std::unordered_map<std::uint64_t, int> crossings_;  // pair of input segments -> how many times their pieces crossed
   std::vector<Piece> pending_;
