@@ -14,6 +14,7 @@
 #include "meshstep/error.hpp"
 #include "meshstep/geometry/predicates.hpp"
 #include "triangulate_support.hpp"
+#include "bent_segment_input.hpp"
 
 namespace meshstep {
 namespace {
@@ -267,12 +268,7 @@ TEST(Cdt, VertexOnASegmentSplitFirstAtARoundedCrossingIsOnItsChain) {
   // (41,3)-(1,2) crosses it, at a point rounded an ulp off its line: the piece from there to
   // (4,0) passed beside (3,1), and offcenter's later split of that boundary piece left (3,1)
   // inside a triangle (issue 31, fuzz_refine_options). The piece goes through the vertex.
-  Pslg in;
-  in.points = {{0, 0}, {4, 0}, {41, 3}, {0, 8}, {1, 2}, {3, 1}, {3, 3}, {1, 3}};
-  for (const auto& [a, b] : std::vector<std::pair<std::uint32_t, std::uint32_t>>{
-           {0, 1}, {1, 2}, {2, 3}, {3, 0}, {2, 4}, {5, 3}, {6, 7}, {7, 1}})
-    in.segments.push_back({a, b, 1});
-  in.holes = {{2, 2}};
+  const Pslg in = testing::segment_through_a_vertex_bent_by_a_crossing();
   const TriMesh m = triangulate_everywhere(in);  // checked, the same on both structures
   bool through = false;  // the edge (4,0)-(3,1) is a segment piece
   for (const Segment& s : m.segments) through |= (s.a == 1 && s.b == 5) || (s.a == 5 && s.b == 1);

@@ -24,6 +24,7 @@
 #include "meshstep/replay/verify.hpp"
 #include "temp_dir.hpp"
 #include "triangulate_support.hpp"
+#include "bent_segment_input.hpp"
 
 namespace meshstep {
 namespace {
@@ -792,12 +793,7 @@ TEST(RefineIssue31, CrossingOfAHugeSegmentStaysCovered) {
 // (regressions/refine_options/vertex_beside_a_bent_piece_covered). Every algorithm, both
 // structures, the circle rule that made the split.
 TEST(RefineIssue31, VertexOnASegmentBentByACrossingStaysAVertexOfTheMesh) {
-  Pslg in;
-  in.points = {{0, 0}, {4, 0}, {41, 3}, {0, 8}, {1, 2}, {3, 1}, {3, 3}, {1, 3}};
-  for (const auto& [a, b] : std::vector<std::pair<std::uint32_t, std::uint32_t>>{
-           {0, 1}, {1, 2}, {2, 3}, {3, 0}, {2, 4}, {5, 3}, {6, 7}, {7, 1}})
-    in.segments.push_back({a, b, 1});
-  in.holes = {{2, 2}};
+  const Pslg in = testing::segment_through_a_vertex_bent_by_a_crossing();
   for (const AlgorithmInfo& algorithm : algorithms())
     for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel}) {
       RefineOptions o = options_for(algorithm);
