@@ -248,7 +248,9 @@ TEST(SegmentSplits, LeppFallsBackToTheBadTrianglesOwnPointBesideKeptSegments) {
       EXPECT_GT(report.steiner_vertices, 0u);
       EXPECT_GT(m.points.size(), in.points.size());
       EXPECT_EQ(boundary_edges(m), input_boundary);
-      if (splits == SegmentSplits::none) EXPECT_EQ(segment_set(m.segments), segment_set(in.segments));
+      if (splits == SegmentSplits::none) {
+        EXPECT_EQ(segment_set(m.segments), segment_set(in.segments));
+      }
       // No new vertex on an input segment (all of A.poly's are on its boundary).
       for (std::size_t v = in.points.size(); v < m.points.size(); ++v)
         for (const Segment& s : in.segments) {
