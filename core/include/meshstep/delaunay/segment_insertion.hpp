@@ -96,6 +96,11 @@ class SegmentInserter {
     return it == constraints_.end() ? Constraint{marker, kNoSource} : it->second;
   }
 
+  // The two ends of the input segment the piece is part of (nullptr: none recorded).
+  const Pair* source_ends(const Piece& piece) const {
+    if (piece.source >= source_ends_.size() || source_ends_[piece.source].first == kInfiniteVertex) return nullptr;
+    return &source_ends_[piece.source];
+  }
   // A piece with a rounded crossing for an end is bent off its input segment's line by an
   // ulp or so, and may pass beside an input vertex that lies exactly on that segment: the
   // vertex is left on one side, and when the piece is a boundary, a later split of it (rounded
@@ -105,15 +110,17 @@ class SegmentInserter {
   // beside the piece borders the faces it crosses (an end of a crossed edge) or, when the
   // piece is an edge already, is the apex of a face of it.
   bool bent(const Piece& piece) const {
-    if (piece.source >= source_ends_.size() || source_ends_[piece.source].first == kInfiniteVertex) return false;
-    const Point &s = P(source_ends_[piece.source].first), &t = P(source_ends_[piece.source].second);
+    const Pair* ends = source_ends(piece);
+    if (!ends || (ends->first == piece.a && ends->second == piece.b)) return false;  // none, or the whole segment
+    const Point &s = P(ends->first), &t = P(ends->second);
     return orient2d(s, t, P(piece.a)) != 0.0 || orient2d(s, t, P(piece.b)) != 0.0;
   }
   // An input vertex exactly on the piece's input segment, strictly inside it, and ahead of a
   // towards b (no vertex within rounding of a or b: those are snapped to them).
   bool on_source_segment(const Piece& piece, VertexId y) const {
-    if (y == kInfiniteVertex || y >= input_vertices_ || y == piece.a || y == piece.b) return false;
-    const Point &s = P(source_ends_[piece.source].first), &t = P(source_ends_[piece.source].second);
+    const Pair* ends = source_ends(piece);
+    if (!ends || y == kInfiniteVertex || y >= input_vertices_ || y == piece.a || y == piece.b) return false;
+    const Point &s = P(ends->first), &t = P(ends->second);
     const Point &a = P(piece.a), &b = P(piece.b), &v = P(y);
     return orient2d(s, t, v) == 0.0 && strictly_between(s, t, v) &&
            (v.x - a.x) * (b.x - a.x) + (v.y - a.y) * (b.y - a.y) > 0.0 &&
