@@ -14,6 +14,7 @@
 #include "meshstep/check/mesh_check.hpp"
 #include "meshstep/check/quality.hpp"
 #include "meshstep/error.hpp"
+#include "meshstep/geometry/predicates.hpp"
 #include "meshstep/geometry/triangle_field.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/refine/refine.hpp"
@@ -805,6 +806,64 @@ TEST(RefineIssue31, VertexOnASegmentBentByACrossingStaysAVertexOfTheMesh) {
       if (algorithm.aspect_then_angle) o.phases = aspect_then_angle_phases(o.criteria, algorithm);
       RefineReport report;
       const TriMesh m = refine(in, o, &report);
+      CheckOptions c;
+      c.delaunay = o.insertion == RefineInsertion::delaunay;
+      const CheckReport check = check_mesh(m, &in, c);
+      EXPECT_TRUE(check.ok) << algorithm.name << "/" << to_string(ds) << ": "
+                            << (check.problems.empty() ? std::string() : check.problems.front());
+    }
+}
+
+
+// A boundary split at a rounded point a hair beyond the boundary's line carried the boundary
+// out over the sliver between the old edge and the new pieces, and any vertex the mesh had left
+// outside there ended inside a triangle. Each of the two vertices here lies 1.6e-16 beyond an
+// edge of the quadrilateral, where a split of that edge (a shell point round the corner (2.9,
+// 4.1); a midpoint) rounds to: every algorithm wrote an invalid mesh before the refiner kept
+// its boundary split points on the mesh's side (inside_boundary).
+TEST(RefineIssue31, BoundarySplitsLeaveVerticesJustOutsideTheDomainOutside) {
+  Pslg in;
+  in.points = {{0.1, 0.3}, {3.7, 0.9}, {2.9, 4.1}, {0.3, 2.7}, {1.1390578001556484, 3.1518003539299646},
+               {1.5999999999999974, 3.3999999999999986}};
+  in.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}};
+  for (const Point& outside : {in.points[4], in.points[5]})
+    ASSERT_LT(orient2d(in.points[2], in.points[3], outside), 0.0) << "the vertex must lie beyond the edge";
+  for (const AlgorithmInfo& algorithm : algorithms())
+    for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel}) {
+      RefineOptions o = options_for(algorithm);
+      o.triangulate.data_structure = ds;
+      o.criteria.max_area = 0.05;
+      if (algorithm.aspect_then_angle) o.phases = aspect_then_angle_phases(o.criteria, algorithm);
+      RefineReport report;
+      const TriMesh m = refine(in, o, &report);
+      EXPECT_GT(report.segment_splits, 0u) << algorithm.name;
+      CheckOptions c;
+      c.delaunay = o.insertion == RefineInsertion::delaunay;
+      const CheckReport check = check_mesh(m, &in, c);
+      EXPECT_TRUE(check.ok) << algorithm.name << "/" << to_string(ds) << ": "
+                            << (check.problems.empty() ? std::string() : check.problems.front());
+    }
+}
+
+// The same fault through a bent piece (fuzz_pipeline, regressions/pipeline/
+// vertex_an_ulp_beside_a_bent_boundary_piece): (0.15, 0.75) lies 3e-17 to the left of the
+// segment (0,0)-(1,5), whose piece to its rounded crossing with (1,0)-(0,2) passes to its
+// left, so that the carve leaves it outside; the split of that boundary piece swept it in.
+TEST(RefineIssue31, VertexAnUlpBesideABentBoundaryPieceStaysOutside) {
+  Pslg in;
+  in.points = {{0, 0}, {1, 5}, {1, 0}, {0, 999999989}, {0.15, 0.75}, {0, 2}};
+  in.segments = {{0, 1, 0}, {0, 3, 0}, {2, 5, 0}};
+  for (const AlgorithmInfo& algorithm : algorithms())
+    for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel}) {
+      RefineOptions o = options_for(algorithm);
+      o.triangulate.data_structure = ds;
+      o.criteria.min_angle_deg = o.insertion == RefineInsertion::bisection ? 0.0 : 25.0;
+      if (o.insertion == RefineInsertion::bisection) o.criteria.max_area = 0.05;
+      o.criteria.max_steiner = 200;
+      if (algorithm.aspect_then_angle) o.phases = aspect_then_angle_phases(o.criteria, algorithm);
+      RefineReport report;
+      const TriMesh m = refine(in, o, &report);
+      EXPECT_GT(report.segment_splits, 0u) << algorithm.name;
       CheckOptions c;
       c.delaunay = o.insertion == RefineInsertion::delaunay;
       const CheckReport check = check_mesh(m, &in, c);

@@ -149,7 +149,7 @@ class LeppBisector {
     const HalfEdge e = lepp(mesh_, tri_.points(), t.face, [](HalfEdge) { return false; }, path_);
     const VertexId a = mesh_.origin(e), b = mesh_.dest(e);
     const Point &pa = point(a), &pb = point(b);
-    const Point m{(pa.x + pb.x) / 2.0, (pa.y + pb.y) / 2.0};
+    const Point m = detail::inside_boundary(mesh_, tri_.points(), e, {(pa.x + pb.x) / 2.0, (pa.y + pb.y) / 2.0});
     if (!splits_cleanly(e, m) || !exact_range_.holds(m)) {
       ++unsplittable_;
       return false;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -41,7 +42,8 @@ bool holds_triangle(const Mesh& mesh, FaceId f, VertexId a, VertexId b, VertexId
 }
 
 // Would splitting the edge of h at p (a rounded point on it) leave every triangle on both
-// sides counterclockwise, exactly? Not for an edge a few ulps long.
+// sides counterclockwise, exactly, and the mesh within what it covered? Not for an edge a few
+// ulps long, nor for a boundary edge and a point beyond its line (see inside_boundary).
 template <TriangleMesh Mesh>
 bool splits_cleanly(const Mesh& mesh, const std::vector<Point>& points, HalfEdge h, const Point& p) {
   const Point &a = points[mesh.origin(h)], &b = points[mesh.dest(h)];
@@ -49,9 +51,30 @@ bool splits_cleanly(const Mesh& mesh, const std::vector<Point>& points, HalfEdge
   const Point& c = points[mesh.apex(h)];
   if (orient2d(a, p, c) <= 0.0 || orient2d(p, b, c) <= 0.0) return false;
   const HalfEdge t = mesh.twin(h);
-  if (t == kNone) return true;
+  if (t == kNone) return orient2d(a, b, p) >= 0.0;
   const Point& d = points[mesh.apex(t)];
   return orient2d(b, p, d) > 0.0 && orient2d(p, a, d) > 0.0;
+}
+
+// The point p at which to split the edge of h, moved onto the mesh's side of its line when h
+// is a boundary edge (no triangle beyond it). Rounded a hair beyond the line, p would carry
+// the boundary out over the sliver (a, p, b), and with it any vertex the mesh left outside
+// there: an input vertex an ulp beyond a segment would end inside a triangle (issue 31,
+// fuzz_pipeline). It moves an ulp at a time towards the inside, which the rounding of a
+// midpoint or a shell point undoes in a step or two. An interior edge's split stays within
+// its two triangles (splits_cleanly): p is returned as it is.
+template <TriangleMesh Mesh>
+Point inside_boundary(const Mesh& mesh, const std::vector<Point>& points, HalfEdge h, Point p) {
+  if (mesh.twin(h) != kNone) return p;
+  const Point &a = points[mesh.origin(h)], &b = points[mesh.dest(h)];
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  // The inside is to the left of a->b: along (a.y - b.y, b.x - a.x).
+  const double inward_x = a.y - b.y, inward_y = b.x - a.x;
+  for (int step = 0; step < 8 && orient2d(a, b, p) < 0.0; ++step) {
+    if (inward_x != 0.0) p.x = std::nextafter(p.x, inward_x > 0.0 ? kInf : -kInf);
+    if (inward_y != 0.0) p.y = std::nextafter(p.y, inward_y > 0.0 ? kInf : -kInf);
+  }
+  return p;
 }
 
 // The criteria one by one: does the triangle (a, b, c) of shape s miss the bound? Both

@@ -676,7 +676,7 @@ class Refiner {
       corner_a = corner_a || is_segment(mesh_.next(t));
       corner_b = corner_b || is_segment(mesh_.prev(t));
     }
-    const Point p = split_point(a, b, corner_a, corner_b);
+    const Point p = detail::inside_boundary(mesh_, tri_.points(), h, split_point(a, b, corner_a, corner_b));
     if (!splits_cleanly(h, p) || !exact_range_.holds(p)) {
       ++unsplittable_;
       return false;
