@@ -15,30 +15,6 @@
 
 namespace meshstep::viewer {
 
-std::vector<Operation> recipe_of(const replay::LogReader& log) {
-  const replay::RunHeader& run = log.run();
-  if (!run.operations.empty()) return run.operations;
-  if (log.header().algorithm == "triangulate") return {};
-  // One refinement: what its header keeps typed. (Its caps and flags other than these are
-  // not in the header: the workbench's run may then differ from the recorded one.)
-  Operation op;
-  op.algorithm = log.header().algorithm;
-  op.selection = run.selection;
-  op.encroachment = run.encroachment;
-  op.min_angle = run.min_angle;
-  op.max_angle = run.max_angle;
-  op.max_aspect = run.max_aspect;
-  op.max_area = run.max_area;
-  if (run.insertion == "bisection") op.insertion = PointInsertion::bisection;
-  else if (run.insertion == "cavity") op.insertion = PointInsertion::cavity;
-  if (run.region && run.region->kind() == RefineRegion::Kind::box) {
-    op.region = RegionSpec{std::pair{run.region->low(), run.region->high()}, {}, {}};
-  } else if (run.region) {
-    op.region = RegionSpec{std::nullopt, {}, run.region->vertices()};  // a polygon, written out
-  }
-  return {op};
-}
-
 std::string workbench_state_fields(const WorkbenchHost& host) {
   const Workbench* bench = host.bench();
   std::string out;
@@ -113,7 +89,7 @@ std::string WorkbenchHost::start_from(const Session& session, const std::optiona
     Pslg pslg = io::read_pslg(input);
     std::vector<Operation> recipe = known                                       ? *known
                                     : !known_input_.empty() && input == known_input_ ? known_recipe_
-                                    : log                                            ? recipe_of(*log)
+                                    : log                                            ? replay::recorded_recipe(log->header(), log->run())
                                                                                      : std::vector<Operation>{};
     // Saved as a .poly: a .node input is saved beside itself with the new extension.
     std::string file = input;

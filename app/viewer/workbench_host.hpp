@@ -19,11 +19,6 @@
 
 namespace meshstep::viewer {
 
-// The recipe of a recorded run, as its log's header tells it: a recipe's operations; none
-// for a triangulation; else the one refinement, rebuilt from its typed header (algorithm,
-// selection, bounds, caps, region).
-std::vector<Operation> recipe_of(const replay::LogReader& log);
-
 class WorkbenchHost;
 // The `state` fields of the workbench, each "  \"key\": value,\n": "editing"; "input" (its
 // counts: vertices, segments, holes, regions); "recipe" (its operations' lines); "refusal"

@@ -106,5 +106,40 @@ TEST(RunHeader, AVertexCountThatIsNoNumberIsRefusedWhenTheLogOpens) {
   }
 }
 
+
+// A refinement's header read back as the recipe to run again (the workbench re-runs a log's
+// input with it): written again, it gives the header it came from, kept segments, order,
+// caps, data structure and convex hull included (the workbench once dropped the kept
+// segments and the caps), and the region too.
+TEST(RunHeader, ARefinementsHeaderIsTheRecipeToRunItAgain) {
+  for (const char* line :
+       {"refine --algorithm offcenter --min-angle 30 --split-segments interior --order worst --max-steiner 50 --ds dcel "
+        "--insertion cavity",
+        "refine --algorithm lepp-bisection --max-area 0.001 --max-triangles 900 -c --region 0.25,0.5,1,2",
+        "refine --algorithm lepp-centroid --size 0.125 --split-segments none --order fifo --encroachment circle"}) {
+    SCOPED_TRACE(line);
+    const Operation op = parse_operation(line);
+    const RefineOptions options = refine_options(op);
+    replay::LogHeader h;
+    h.algorithm = op.algorithm;
+    h.data_structure = to_string(op.data_structure);
+    h.insertion = to_string(options.triangulate.insertion);
+    h.parameters = replay::refine_parameters(options, op.size.value_or(""), 12, 1);
+    if (const auto region = region_of(op)) h.parameters += " region=" + region->text();
+    const std::vector<Operation> recipe = replay::recorded_recipe(h, replay::read_run_header(h, "run.mslog"));
+    ASSERT_EQ(recipe.size(), 1u);
+    const Operation& again = recipe.front();
+    EXPECT_EQ(again.algorithm, op.algorithm);
+    EXPECT_EQ(again.data_structure, op.data_structure);
+    EXPECT_EQ(again.region, op.region);
+    EXPECT_EQ(replay::refine_parameters(refine_options(again), again.size.value_or(""), 12, 1),
+              replay::refine_parameters(options, op.size.value_or(""), 12, 1));
+  }
+  replay::LogHeader triangulation;
+  triangulation.algorithm = "triangulate";
+  triangulation.parameters = replay::triangulate_parameters(false, 3, 0);
+  EXPECT_TRUE(replay::recorded_recipe(triangulation, replay::read_run_header(triangulation, "t.mslog")).empty());
+}
+
 }  // namespace
 }  // namespace meshstep

@@ -106,6 +106,36 @@ std::string header_parameter(const LogHeader& header, const std::string& key, co
   return fallback;
 }
 
+std::vector<Operation> recorded_recipe(const LogHeader& header, const RunHeader& run) {
+  if (!run.operations.empty()) return run.operations;
+  if (header.algorithm == "triangulate") return {};
+  const auto text = [&](const char* key) { return header_parameter(header, key); };
+  Operation op;
+  op.algorithm = header.algorithm;
+  op.selection = run.selection;
+  op.encroachment = run.encroachment;
+  op.min_angle = run.min_angle;
+  op.max_angle = run.max_angle;
+  op.max_aspect = run.max_aspect;
+  op.max_area = run.max_area;
+  if (run.size) op.size = io::shortest_text(*run.size);
+  else if (const std::string s = text("size"); !s.empty() && s != "0") op.size = s;  // a grid's name
+  op.max_triangles = number<std::size_t>(text("max_triangles")).value_or(0);
+  op.max_steiner = number<std::size_t>(text("max_steiner")).value_or(0);
+  for (const RefineOrder order : {RefineOrder::smallest_first, RefineOrder::worst_first, RefineOrder::fifo})
+    if (text("order") == to_string(order)) op.order = order;
+  if (run.insertion == "bisection") op.insertion = PointInsertion::bisection;
+  else if (run.insertion == "cavity") op.insertion = PointInsertion::cavity;
+  op.segment_splits = run.segment_splits;
+  if (header.data_structure == to_string(DataStructure::dcel)) op.data_structure = DataStructure::dcel;
+  op.convex_hull = text("convex_hull") == "1";
+  if (run.region && run.region->kind() == RefineRegion::Kind::box)
+    op.region = RegionSpec{std::pair{run.region->low(), run.region->high()}, {}, {}};
+  else if (run.region)
+    op.region = RegionSpec{std::nullopt, {}, run.region->vertices()};  // a polygon, written out
+  return {op};
+}
+
 RunHeader read_run_header(const LogHeader& header, const std::string& path) {
   RunHeader run;
   const auto text = [&](const char* key) { return header_parameter(header, key); };

@@ -44,6 +44,13 @@ struct RunHeader {
 // and for a region= that is no region.
 RunHeader read_run_header(const LogHeader& header, const std::string& path);
 
+// The run as a recipe to run again (the workbench's re-runs): a recipe's operations, or a
+// refinement's one operation rebuilt from what its header records (algorithm, selection,
+// bounds as written, size, caps, order, insertion, encroachment, kept segments, data
+// structure, convex hull, region); empty for a triangulation. What the header does not keep
+// (--improve, free-vertex deletion) stays at its default.
+std::vector<Operation> recorded_recipe(const LogHeader& header, const RunHeader& run);
+
 // The header parameters each kind of run records, which read_run_header reads back.
 // A triangulation: the convex hull flag and the input's numbering.
 std::string triangulate_parameters(bool convex_hull, std::uint64_t input_vertices, int first_index);
