@@ -194,7 +194,9 @@ void draw_edit_panel(Viewer& v) {
   const bool region_selected = st.selected && st.selected->kind == InputElement::region &&
                                st.selected->index < in.regions.size();
   double attribute = region_selected ? in.regions[st.selected->index].attribute : st.region_attribute;
-  double max_area = region_selected ? in.regions[st.selected->index].max_area : st.region_max_area;
+  // Shown as 0 when there is no bound: the input keeps Triangle's -1 for that, which the
+  // label's "(0: none)" contradicted.
+  double max_area = std::max(0.0, region_selected ? in.regions[st.selected->index].max_area : st.region_max_area);
   ImGui::TextUnformatted(region_selected ? "Selected region point:" : "Next region point:");
   // The fields as wide as the panel leaves beside the longer label: at ImGui's default
   // width (two thirds of the panel) "max area (0: none)" was cut at 1280x720.
@@ -207,6 +209,7 @@ void draw_edit_panel(Viewer& v) {
   changed |= ImGui::InputDouble("max area (0: none)", &max_area, 0.0, 0.0, "%.6g",
                                 ImGuiInputTextFlags_EnterReturnsTrue);
   if (changed) {
+    if (!(max_area > 0.0)) max_area = -1.0;  // none, as a .poly writes it
     if (region_selected) {
       Region r = in.regions[st.selected->index];
       r.attribute = attribute;
