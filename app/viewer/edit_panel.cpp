@@ -67,7 +67,7 @@ void draw_region_form(WorkbenchHost& host, Workbench& bench) {
     ++k;
   }
   ImGui::BeginDisabled(!st.box && !lasso);
-  if (ImGui::SmallButton(lasso ? "Refine the lasso" : "Refine the box")) {
+  if (ImGui::SmallButton(lasso || (!st.box && st.lasso_shape) ? "Refine the lasso" : "Refine the box")) {
     // The recipe line's words: what `refine-region` and a recipe file take.
     std::vector<std::string> words{"refine", "--algorithm", std::string(all[static_cast<std::size_t>(algorithm)].name)};
     k = 0;
