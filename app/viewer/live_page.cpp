@@ -27,7 +27,10 @@ void draw_live_page(LiveView& live, int width, int height) {
   if (ImGui::Button("Cancel (Esc)") || (!ImGui::GetIO().WantCaptureKeyboard && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)))
     run.cancel();
   const CanvasPicture& p = live.picture;
-  if (live.has_picture) {
+  if (live.opening) {
+    ImGui::Text("ran %.1f s \u00B7 opening its log%s", run.seconds(),
+                live.has_picture ? " (the canvas shows the mesh the run wrote last)" : "");
+  } else if (live.has_picture) {
     ImGui::Text("%s %.1f s \u00B7 the mesh so far: %zu triangles \u00B7 %s", going ? "running for" : "ran", run.seconds(),
                 p.moment.scene.mesh.triangles.size(), p.moment.explanation.heading.c_str());
   } else {

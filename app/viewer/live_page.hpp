@@ -9,6 +9,7 @@
 
 #include "canvas_worker.hpp"
 #include "live_run.hpp"
+#include "log_opening.hpp"
 #include "picture_texture.hpp"
 
 namespace meshstep::viewer {
@@ -20,6 +21,9 @@ struct LiveView {
   PictureTexture texture;
   bool has_picture = false;
   std::size_t pictures = 0;
+  // The ended run's log, opened off the window's thread (a 1e6-point log takes a second or
+  // more); the page stays, its last picture on the canvas, until the log is open.
+  std::unique_ptr<LogOpening> opening;
 };
 
 // Draws the page over the whole window (between ImGui::NewFrame and ImGui::Render).

@@ -166,7 +166,8 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     }
   };
   // When the live run has ended: its log opens, or the window says why it failed.
-  const auto end_live = [&] {
+  // `wait_for_log`: a script's action comes next, which looks at the run once it is open.
+  const auto end_live = [&](bool wait_for_log) {
     if (!live || live->run->running()) return;
     LiveRun& run = *live->run;
     if (run.succeeded() && !compare_base.empty()) {
@@ -181,14 +182,15 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
       }
       compare_base.clear();
     } else if (run.succeeded()) {
-      try {
-        std::unique_ptr<Session> s = Session::open_log(run.log());
-        s->set_title(run.input());
+      // Opened off the window's thread: the live page stays until the log is open.
+      if (!live->opening) live->opening = std::make_unique<LogOpening>(run.log(), run.input());
+      if (!live->opening->ready() && !wait_for_log) return;
+      if (std::unique_ptr<Session> s = live->opening->take()) {
         if (options.start_step >= 0) s->seek_step(static_cast<std::uint64_t>(options.start_step));
         if (options.start_event >= 0) s->seek(static_cast<std::uint64_t>(options.start_event));
         show(std::move(s));
-      } catch (const InputError& e) {
-        problem = e.what();
+      } else {
+        problem = live->opening->error();
       }
     } else if (!run.cancelled()) {
       const std::string said = run.messages();
@@ -273,7 +275,7 @@ int run_viewer(std::unique_ptr<Session> session, const RunOptions& options, Open
     if (live && scripted && script.waits_for_live())
       while (live->run->running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     if (scripted && script.waits_for_live()) bench.wait_live();  // the workbench's, likewise
-    end_live();
+    end_live(scripted && script.waits_for_live());
     if (status != 0) break;
     show_edited();  // an edit of the last frame's, before a script looks
     if (scripted) script.set_live_state(live ? live_state_json(*live) : std::string());
