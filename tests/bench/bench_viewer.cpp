@@ -17,9 +17,16 @@
 //           (`watch`): the run's time, the frames drawn meanwhile, their median, 99th
 //           percentile and worst time.
 // Repeated R times (alternating sizes); medians over the repetitions.
+// --side-by-side K (2 to 4): the scrub's script on K runs of the same points at once (tds
+// and dcel, flips and cavities: one Delaunay triangulation made K ways), as `meshstep view A
+// B C D` shows them (issue 28: under 1 GB and above 30 frames a second with four runs of
+// 1e5 points); the table gains the viewer's peak resident memory. --no-live: no live runs.
 //
 //   bench_viewer --view PATH --meshstep PATH --make-points PATH [--sizes 1e5,1e6] [--repeat R]
+//                [--side-by-side K] [--no-live]
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -39,7 +46,8 @@ using meshstep::bench::parse_whole;
 using meshstep::bench::usage_error;
 
 constexpr const char* kUsage =
-    "usage: bench_viewer --view PATH --meshstep PATH --make-points PATH [--sizes 1e5,1e6] [--repeat R]\n";
+    "usage: bench_viewer --view PATH --meshstep PATH --make-points PATH [--sizes 1e5,1e6] [--repeat R]\n"
+    "                    [--side-by-side K] [--no-live]\n";
 
 struct Frame {
   double end_ms = 0, ms = 0;
@@ -49,6 +57,23 @@ struct Frame {
 
 int run(const std::string& command) {
   const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+}
+
+// The same, the command's own peak resident memory (MiB) in *peak_mib: the shell execs it,
+// so that wait4's usage is the command's.
+int run_measured(const std::string& command, double* peak_mib) {
+  const pid_t pid = fork();
+  if (pid < 0) return 1;
+  if (pid == 0) {
+    const std::string exec_command = "exec " + command;
+    execl("/bin/sh", "sh", "-c", exec_command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  if (wait4(pid, &status, 0, &usage) != pid) return 1;
+  *peak_mib = static_cast<double>(usage.ru_maxrss) / 1024.0;  // KiB on Linux
   return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
 }
 
@@ -79,7 +104,7 @@ struct Live {
 
 struct Run {
   double open_ms = 0, picture_ms = 0, scrub_median_ms = 0, scrub_p95_ms = 0, scrub_max_ms = 0, scrub_rate = 0,
-         pictures_per_s = 0, idle_ms = 0;
+         pictures_per_s = 0, idle_ms = 0, peak_mib = 0;
   unsigned long long idle_allocations = 0;
 };
 
@@ -88,7 +113,8 @@ struct Run {
 int main(int argc, char** argv) {
   std::string view, meshstep, make_points;
   std::vector<std::size_t> sizes = {100000, 1000000};
-  int repeat = 3;
+  int repeat = 3, side_by_side = 1;
+  bool live_runs = true;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const bool has_value = i + 1 < argc;
@@ -97,6 +123,11 @@ int main(int argc, char** argv) {
     else if (arg == "--make-points" && has_value) make_points = argv[++i];
     else if (arg == "--repeat" && has_value) {
       if (!parse_whole(argv[++i], repeat) || repeat < 1) return usage_error("bench_viewer", "--repeat: expected >= 1", kUsage);
+    } else if (arg == "--side-by-side" && has_value) {
+      if (!parse_whole(argv[++i], side_by_side) || side_by_side < 2 || side_by_side > 4)
+        return usage_error("bench_viewer", "--side-by-side: 2 to 4 runs", kUsage);
+    } else if (arg == "--no-live") {
+      live_runs = false;
     } else if (arg == "--sizes" && has_value) {
       sizes.clear();
       std::stringstream list(argv[++i]);
@@ -115,18 +146,27 @@ int main(int argc, char** argv) {
   const fs::path dir = fs::temp_directory_path() / "bench_viewer";
   fs::remove_all(dir);
   fs::create_directories(dir);
+  // logs[s]: the viewer's arguments for size s, one log or side_by_side of them.
   std::vector<std::string> logs, nodes;
-  std::vector<unsigned long long> events;
+  static constexpr const char* kWays[] = {"--ds tds --insertion flip", "--ds dcel --insertion flip",
+                                          "--ds tds --insertion cavity", "--ds dcel --insertion cavity"};
   for (const std::size_t n : sizes) {
     const std::string node = (dir / ("p" + std::to_string(n) + ".node")).string();
-    const std::string log = (dir / ("p" + std::to_string(n) + ".mslog")).string();
-    if (run(make_points + " " + std::to_string(n) + " " + node + " 11") != 0 ||
-        run(meshstep + " triangulate " + node + " --record " + log + " --no-output -q") != 0) {
-      std::fprintf(stderr, "bench_viewer: recording %zu points failed\n", n);
+    if (run(make_points + " " + std::to_string(n) + " " + node + " 11") != 0) {
+      std::fprintf(stderr, "bench_viewer: making %zu points failed\n", n);
       return 1;
     }
+    std::string arguments;
+    for (int k = 0; k < side_by_side; ++k) {
+      const std::string log = (dir / ("p" + std::to_string(n) + "_" + std::to_string(k) + ".mslog")).string();
+      if (run(meshstep + " triangulate " + node + " " + kWays[k] + " --record " + log + " --no-output -q") != 0) {
+        std::fprintf(stderr, "bench_viewer: recording %zu points failed\n", n);
+        return 1;
+      }
+      arguments += (k ? " " : "") + log;
+    }
     nodes.push_back(node);
-    logs.push_back(log);
+    logs.push_back(arguments);
   }
 
   // The script: seeks spread over the run (event numbers beyond the end are clamped), one
@@ -144,8 +184,10 @@ int main(int argc, char** argv) {
         out << "wait\nframes 30\nquit\n";  // the canvas and the background work done
       }
       const fs::path frames_file = dir / "frames.txt";
-      if (run(view + " " + logs[s] + " --offscreen --window 1280x800 -q --script " + script.string() + " --frame-log " +
-              frames_file.string()) != 0) {
+      double peak_mib = 0;
+      if (run_measured(view + " " + logs[s] + " --offscreen --window 1280x800 -q --script " + script.string() +
+                           " --frame-log " + frames_file.string(),
+                       &peak_mib) != 0) {
         std::fprintf(stderr, "bench_viewer: the viewer failed on %s\n", logs[s].c_str());
         return 1;
       }
@@ -155,6 +197,7 @@ int main(int argc, char** argv) {
         return 1;
       }
       Run result;
+      result.peak_mib = peak_mib;
       result.open_ms = f[0].end_ms;
       const auto shows_cursor = [](const Frame& fr) { return fr.shown == static_cast<long long>(fr.position); };
       result.picture_ms = shows_cursor(f[0]) ? f[0].end_ms : f[1].end_ms;
@@ -185,7 +228,7 @@ int main(int argc, char** argv) {
 
   // Live runs: the viewer on the points, drawing while the run goes.
   std::vector<std::vector<Live>> lives(sizes.size());
-  for (int r = 0; r < repeat; ++r) {
+  for (int r = 0; r < repeat && live_runs; ++r) {
     for (std::size_t s = 0; s < sizes.size(); ++s) {
       std::ofstream(script) << "watch\nquit\n";
       const fs::path frames_file = dir / "live_frames.txt";
@@ -209,12 +252,14 @@ int main(int argc, char** argv) {
     }
   }
 
-  std::printf("| log of N points | open: timeline shown (ms) | mesh shown (ms) | scrub frame median / p95 / worst (ms) | scrub frames/s (61 frames over the drag's time) | new pictures/s while scrubbing | idle frame (ms) | idle allocations |\n");
-  std::printf("|--:|--:|--:|--:|--:|--:|--:|--:|\n");
+  if (side_by_side > 1) std::printf("%d runs side by side, each a log of the same N points\n\n", side_by_side);
+  std::printf("| log of N points | open: timeline shown (ms) | mesh shown (ms) | scrub frame median / p95 / worst (ms) | scrub frames/s (61 frames over the drag's time) | new pictures/s while scrubbing | idle frame (ms) | idle allocations | peak resident (MiB) |\n");
+  std::printf("|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
   for (std::size_t s = 0; s < sizes.size(); ++s) {
-    std::vector<double> open, picture, med, p95, worst, rate, pictures, idle;
+    std::vector<double> open, picture, med, p95, worst, rate, pictures, idle, peak;
     unsigned long long allocations = 0;
     for (const Run& r : runs[s]) {
+      peak.push_back(r.peak_mib);
       open.push_back(r.open_ms);
       picture.push_back(r.picture_ms);
       pictures.push_back(r.pictures_per_s);
@@ -225,9 +270,13 @@ int main(int argc, char** argv) {
       idle.push_back(r.idle_ms);
       allocations += r.idle_allocations;
     }
-    std::printf("| %zu | %.0f | %.0f | %.1f / %.0f / %.0f | %.1f | %.1f | %.1f | %llu |\n", sizes[s], median(open),
-                median(picture), median(med), median(p95), median(worst), median(rate), median(pictures), median(idle),
-                allocations);
+    std::printf("| %zu | %.0f | %.0f | %.1f / %.0f / %.0f | %.1f | %.1f | %.1f | %llu | %.0f (worst %.0f) |\n", sizes[s],
+                median(open), median(picture), median(med), median(p95), median(worst), median(rate), median(pictures),
+                median(idle), allocations, median(peak), *std::max_element(peak.begin(), peak.end()));
+  }
+  if (!live_runs) {
+    fs::remove_all(dir);
+    return 0;
   }
   std::printf("\n| N points, run live | run (s) | frames drawn meanwhile | frame median / p99 / worst (ms) |\n");
   std::printf("|--:|--:|--:|--:|\n");
