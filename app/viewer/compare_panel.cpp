@@ -142,13 +142,11 @@ void CompareView::draw_panel(float width) {
       if (v.empty()) continue;
       const float plot_w = run_label(i, width);
       const float w = std::max(8.0f, plot_w * static_cast<float>(v.size() - 1) / static_cast<float>(longest));
-      ImGui::PushID(static_cast<int>(10 * k + static_cast<int>(i)));
-      ImGui::PlotLines("##run", v.data(), static_cast<int>(v.size()), 0, nullptr, std::min(lo, 0.0f), hi, ImVec2(w, 30.0f));
-      ImGui::PopID();
       const std::size_t at = std::min<std::size_t>(panes_[i].session->cursor_info().completed, v.size() - 1);
-      const ImVec2 min = ImGui::GetItemRectMin();
-      const float x = min.x + w * static_cast<float>(at) / static_cast<float>(std::max<std::size_t>(1, v.size() - 1));
-      ImGui::GetWindowDrawList()->AddLine(ImVec2(x, min.y), ImVec2(x, min.y + 30.0f), IM_COL32(255, 60, 60, 255), 1.5f);
+      ImGui::PushID(static_cast<int>(i));
+      panes_[i].plot_pictures[static_cast<std::size_t>(k)].draw(kTitles[k], v, plots.generation(), std::min(lo, 0.0f), hi,
+                                                                 ImVec2(w, 30.0f), at, nullptr);
+      ImGui::PopID();
     }
   }
 }

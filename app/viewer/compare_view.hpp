@@ -28,6 +28,7 @@
 #include "mesh_stats.hpp"
 #include "picture_texture.hpp"
 #include "run_plots.hpp"
+#include "series_plot.hpp"
 #include "session.hpp"
 
 namespace meshstep::viewer {
@@ -83,6 +84,7 @@ class CompareView {
     std::vector<std::array<Point, 2>> different;  // its edges the run compared with lacks
     RunPlots plots;
     bool plots_started = false;
+    std::array<SeriesPlot, 2> plot_pictures;  // its triangles and smallest angle over the run
     ImVec4 rect{0, 0, 0, 0};  // its picture's rectangle in the window
   };
 

@@ -67,6 +67,7 @@ void RunPlots::reset() {
   if (thread_.joinable()) thread_.join();
   stop_ = false;
   ready_.store(false, std::memory_order_release);
+  ++generation_;
   triangles_.clear();
   smallest_angle_.clear();
   bad_.clear();

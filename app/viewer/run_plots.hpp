@@ -21,6 +21,9 @@ class RunPlots {
   // Stops a build and forgets what was built: not ready() until the next build.
   void reset();
   bool ready() const { return ready_.load(std::memory_order_acquire); }
+  // Counts the builds (and resets): a picture of the values drawn at one generation is of
+  // those values only (the vectors are refilled in place, at the same address).
+  std::uint64_t generation() const { return generation_; }
 
   // One value per step boundary: [k] is the mesh after k steps (k = 0 .. step count).
   const std::vector<float>& triangles() const { return triangles_; }
@@ -35,6 +38,7 @@ class RunPlots {
   std::vector<float> triangles_, smallest_angle_, bad_;
   double seconds_ = 0.0;
   std::string error_;
+  std::uint64_t generation_ = 0;
 };
 
 }  // namespace meshstep::viewer

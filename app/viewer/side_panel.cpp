@@ -47,14 +47,8 @@ void Viewer::draw_run_plots(float width) {
     const std::size_t at = std::min<std::size_t>(step, v.size() - 1);
     char overlay[64];
     std::snprintf(overlay, sizeof overlay, "%s: %.6g", kTitles[i], static_cast<double>(v[at]));
-    ImGui::PushID(static_cast<int>(i));
-    ImGui::PlotLines("##plot", v.data(), static_cast<int>(v.size()), 0, overlay, plot_scales_[2 * i],
-                     plot_scales_[2 * i + 1], ImVec2(width, 48.0f));
-    ImGui::PopID();
-    const ImVec2 lo = ImGui::GetItemRectMin();
-    const float plot_w = width;
-    const float x = lo.x + plot_w * static_cast<float>(at) / static_cast<float>(std::max<std::size_t>(1, v.size() - 1));
-    ImGui::GetWindowDrawList()->AddLine(ImVec2(x, lo.y), ImVec2(x, lo.y + 48.0f), IM_COL32(255, 60, 60, 255), 1.5f);
+    run_plot_pictures_[i].draw(kTitles[i], v, plots_.generation(), plot_scales_[2 * i], plot_scales_[2 * i + 1],
+                               ImVec2(width, 48.0f), at, overlay);
   }
 }
 

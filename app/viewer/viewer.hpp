@@ -28,6 +28,7 @@
 #include "picture_texture.hpp"
 #include "meshstep/scene/pseudocode.hpp"
 #include "run_plots.hpp"
+#include "series_plot.hpp"
 #include "session.hpp"
 #include "settings.hpp"
 #include "timeline.hpp"
@@ -279,6 +280,7 @@ class Viewer {
   InvariantJob invariants_;
   ElementIndex history_;
   RunPlots plots_;
+  std::array<SeriesPlot, 3> run_plot_pictures_;  // the three plots of draw_run_plots
   std::array<float, 6> plot_scales_{};  // min, max of each plot, found once when ready
   bool plot_scales_known_ = false;
   void draw_run_plots(float width);
