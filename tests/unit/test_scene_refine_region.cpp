@@ -113,5 +113,6 @@ TEST_F(SceneRefineRegion, ARecipesInlinePolygonIsDrawnEdgeByEdge) {
   }
 }
 
+
 }  // namespace
 }  // namespace meshstep

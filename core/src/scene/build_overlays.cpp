@@ -7,6 +7,11 @@
 #include <cstdlib>
 #include <numbers>
 #include <span>
+#include <vector>
+#include <utility>
+#include <tuple>
+#include <optional>
+#include <limits>
 
 #include "meshstep/refine/quality.hpp"
 #include "meshstep/scene/colormap.hpp"
@@ -101,6 +106,55 @@ class OverlayPainter {
     label(p, std::move(text), -0.5f * width, 0.35f * px::label);
   }
   void line(Shape& s, const Point& a, const Point& b) { s.points.insert(s.points.end(), {a, b}); }
+
+  // The circle through a, b, c (center, radius), or none: when they are collinear, or so
+  // nearly that its radius passes kFlatRadius times their longest side, where `chord` gets
+  // the straight line through them instead, across the run's extent. Within any picture the
+  // two then differ by less than the triangle's size in a view a thousand times as wide; and
+  // a ring that big, drawn in floats, filled a block of the canvas (a flip of a triangle
+  // 1e-15 from flat, in a lepp-midpoint run shown side by side).
+  std::optional<std::pair<Point, double>> circle_through(const Point& a, const Point& b, const Point& c,
+                                                         std::vector<Point>& chord) {
+    static constexpr double kFlatRadius = 1e6;
+    const Point center = quality::circumcenter(a, b, c);
+    const double radius = std::sqrt(quality::squared_distance(center, a));
+    // The two farthest apart of the three: the chord's ends.
+    std::array<Point, 2> ends{a, b};
+    for (const auto& [p, q] : {std::pair{b, c}, std::pair{a, c}})
+      if (quality::squared_distance(p, q) > quality::squared_distance(ends[0], ends[1])) ends = {p, q};
+    const double longest = std::sqrt(quality::squared_distance(ends[0], ends[1]));
+    if (std::isfinite(center.x) && std::isfinite(center.y) && radius <= kFlatRadius * longest)
+      return std::pair{center, radius};
+    if (longest > 0.0 && std::isfinite(longest)) clip_to_extent(ends[0], ends[1], chord);
+    return std::nullopt;
+  }
+  // The line through p and q, cut to the run's vertices' box (grown by a tenth, as a circle's
+  // is in scene_bounds): its two ends appended to `out`.
+  void clip_to_extent(const Point& p, const Point& q, std::vector<Point>& out) {
+    if (!extent_) {
+      BBox box;
+      for (const replay::VertexInfo& v : vertices_)
+        if (v.event != kNone && std::isfinite(v.point.x) && std::isfinite(v.point.y)) box.add(v.point);
+      const double grow = box.empty() ? 0.0 : 0.1 * std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y);
+      extent_ = BBox{{box.lo.x - grow, box.lo.y - grow}, {box.hi.x + grow, box.hi.y + grow}};
+    }
+    // Liang-Barsky: the parameters t of p + t (q - p) inside the box.
+    const double dx = q.x - p.x, dy = q.y - p.y;
+    double t0 = -std::numeric_limits<double>::infinity(), t1 = std::numeric_limits<double>::infinity();
+    for (const auto& [delta, low, high, at] : {std::tuple{dx, extent_->lo.x, extent_->hi.x, p.x},
+                                               std::tuple{dy, extent_->lo.y, extent_->hi.y, p.y}}) {
+      if (delta == 0.0) {
+        if (at < low || at > high) return;
+        continue;
+      }
+      const double ta = (low - at) / delta, tb = (high - at) / delta;
+      t0 = std::max(t0, std::min(ta, tb));
+      t1 = std::min(t1, std::max(ta, tb));
+    }
+    if (!(t0 < t1)) return;
+    out.push_back({p.x + t0 * dx, p.y + t0 * dy});
+    out.push_back({p.x + t1 * dx, p.y + t1 * dy});
+  }
   // Markers: `paint.stroke` outlines them, `paint.fill` fills them (alpha 0: hollow).
   Shape& markers(std::string role, std::string text, const Paint& paint, Marker kind, float size,
                  std::span<const Point> at_points) {
@@ -218,13 +272,19 @@ class OverlayPainter {
   void circumcircle(const StepStory::Selected& sel) {
     if (!all_finite(sel.bad)) return;
     const auto c = corners(sel.bad);
-    const Point center = quality::circumcenter(c[0], c[1], c[2]);
-    if (!std::isfinite(center.x) || !std::isfinite(center.y)) return;  // flat: no circle
-    Shape& s =
-        add(ShapeKind::circles, "circumcircle", "circumcircle of the bad triangle", style_.circumcircle.stroke, 2.0f);
+    std::vector<Point> chord;
+    const auto circle = circle_through(c[0], c[1], c[2], chord);
+    Shape& s = add(circle ? ShapeKind::circles : ShapeKind::lines, "circumcircle",
+                   circle ? "circumcircle of the bad triangle" : "circumcircle of the bad triangle (nearly a straight line)",
+                   style_.circumcircle.stroke, 2.0f);
     s.dashed = true;
-    s.points.push_back(center);
-    s.radii.push_back(std::sqrt(quality::squared_distance(center, c[0])));
+    if (circle) {
+      s.points.push_back(circle->first);
+      s.radii.push_back(circle->second);
+    } else {
+      s.points = std::move(chord);
+    }
+    drop_if_empty();
   }
 
   void failed_criteria(const std::vector<StepStory::Criterion>& failed) {
@@ -283,15 +343,22 @@ class OverlayPainter {
       Shape& circle =
           add(ShapeKind::circles, "flip_circle", "in-circle test: d inside the circle through a, b, c" + which,
               emphasised ? style_.flip_circle.stroke : fade(style_.flip_circle.stroke), emphasised ? 2.0f : 1.0f);
+      std::vector<Point> chords;  // the circles of nearly flat triangles, as lines
       for (std::size_t i = begin; i < end; ++i) {
         const auto& v = list[i].v;
         if (list[i].reason != replay::FlipReason::delaunay || !all_finite(std::array{v[0], v[1], v[2]})) continue;
-        const Point center = quality::circumcenter(at(v[0]), at(v[1]), at(v[2]));
-        if (!std::isfinite(center.x) || !std::isfinite(center.y)) continue;
-        circle.points.push_back(center);
-        circle.radii.push_back(std::sqrt(quality::squared_distance(center, at(v[0]))));
+        if (const auto c = circle_through(at(v[0]), at(v[1]), at(v[2]), chords)) {
+          circle.points.push_back(c->first);
+          circle.radii.push_back(c->second);
+        }
       }
+      const Rgba color = circle.color;
+      const float width = circle.width_px;
       drop_if_empty();
+      if (!chords.empty())
+        add(ShapeKind::lines, "flip_circle", "in-circle test: d inside the circle through a, b, c (nearly a straight line)" + which,
+            color, width)
+            .points = std::move(chords);
       for (const bool after : {false, true}) {
         const Paint& paint = after ? style_.flip_after : style_.flip_before;
         Shape& s =
@@ -429,6 +496,7 @@ class OverlayPainter {
   const std::vector<replay::VertexInfo>& vertices_;
   const OverlayStyle& style_;
   const replay::LogReader& log_;
+  std::optional<BBox> extent_;  // of the run's vertices, grown: made when a flat circle needs it
 };
 
 }  // namespace
