@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -788,24 +789,20 @@ TEST(RefineIssue31, CrossingOfAHugeSegmentStaysCovered) {
     }
 }
 
-// The same hour-long run, later: the segment (1,3)-(4,0) passes exactly through the vertex
-// (3,1), but its piece from a rounded crossing passed an ulp beside it, on the hole's side;
-// the refiner's split of that boundary piece then left (3,1) inside a triangle
-// (regressions/refine_options/vertex_beside_a_bent_piece_covered). Every algorithm, both
-// structures, the circle rule that made the split.
-TEST(RefineIssue31, VertexOnASegmentBentByACrossingStaysAVertexOfTheMesh) {
-  const Pslg in = testing::segment_through_a_vertex_bent_by_a_crossing();
+// Every algorithm of the registry on both data structures, each with its options set by
+// `set` after its own: the mesh passes the checker (conforming for bisection runs, else
+// constrained Delaunay), and, with `splits`, the run split some segment.
+void every_algorithm_gives_a_valid_mesh(const Pslg& in, const std::function<void(RefineOptions&)>& set,
+                                        bool splits = false) {
   for (const AlgorithmInfo& algorithm : algorithms())
     for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel}) {
       RefineOptions o = options_for(algorithm);
       o.triangulate.data_structure = ds;
-      o.encroachment = Encroachment::circle;
-      o.criteria.min_angle_deg = o.insertion == RefineInsertion::bisection ? 0.0 : 24.9;
-      o.criteria.max_area = 41.0;
-      o.criteria.max_steiner = 61;
+      set(o);
       if (algorithm.aspect_then_angle) o.phases = aspect_then_angle_phases(o.criteria, algorithm);
       RefineReport report;
       const TriMesh m = refine(in, o, &report);
+      if (splits) EXPECT_GT(report.segment_splits, 0u) << algorithm.name;
       CheckOptions c;
       c.delaunay = o.insertion == RefineInsertion::delaunay;
       const CheckReport check = check_mesh(m, &in, c);
@@ -814,6 +811,19 @@ TEST(RefineIssue31, VertexOnASegmentBentByACrossingStaysAVertexOfTheMesh) {
     }
 }
 
+// The same hour-long run, later: the segment (1,3)-(4,0) passes exactly through the vertex
+// (3,1), but its piece from a rounded crossing passed an ulp beside it, on the hole's side;
+// the refiner's split of that boundary piece then left (3,1) inside a triangle
+// (regressions/refine_options/vertex_beside_a_bent_piece_covered). Every algorithm, both
+// structures, the circle rule that made the split.
+TEST(RefineIssue31, VertexOnASegmentBentByACrossingStaysAVertexOfTheMesh) {
+  every_algorithm_gives_a_valid_mesh(testing::segment_through_a_vertex_bent_by_a_crossing(), [](RefineOptions& o) {
+    o.encroachment = Encroachment::circle;
+    o.criteria.min_angle_deg = o.insertion == RefineInsertion::bisection ? 0.0 : 24.9;
+    o.criteria.max_area = 41.0;
+    o.criteria.max_steiner = 61;
+  });
+}
 
 // A boundary split at a rounded point a hair beyond the boundary's line carried the boundary
 // out over the sliver between the old edge and the new pieces, and any vertex the mesh had left
@@ -828,21 +838,7 @@ TEST(RefineIssue31, BoundarySplitsLeaveVerticesJustOutsideTheDomainOutside) {
   in.segments = {{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 0, 1}};
   for (const Point& outside : {in.points[4], in.points[5]})
     ASSERT_LT(orient2d(in.points[2], in.points[3], outside), 0.0) << "the vertex must lie beyond the edge";
-  for (const AlgorithmInfo& algorithm : algorithms())
-    for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel}) {
-      RefineOptions o = options_for(algorithm);
-      o.triangulate.data_structure = ds;
-      o.criteria.max_area = 0.05;
-      if (algorithm.aspect_then_angle) o.phases = aspect_then_angle_phases(o.criteria, algorithm);
-      RefineReport report;
-      const TriMesh m = refine(in, o, &report);
-      EXPECT_GT(report.segment_splits, 0u) << algorithm.name;
-      CheckOptions c;
-      c.delaunay = o.insertion == RefineInsertion::delaunay;
-      const CheckReport check = check_mesh(m, &in, c);
-      EXPECT_TRUE(check.ok) << algorithm.name << "/" << to_string(ds) << ": "
-                            << (check.problems.empty() ? std::string() : check.problems.front());
-    }
+  every_algorithm_gives_a_valid_mesh(in, [](RefineOptions& o) { o.criteria.max_area = 0.05; }, true);
 }
 
 // The same fault through a bent piece (fuzz_pipeline, regressions/pipeline/
@@ -853,23 +849,14 @@ TEST(RefineIssue31, VertexAnUlpBesideABentBoundaryPieceStaysOutside) {
   Pslg in;
   in.points = {{0, 0}, {1, 5}, {1, 0}, {0, 999999989}, {0.15, 0.75}, {0, 2}};
   in.segments = {{0, 1, 0}, {0, 3, 0}, {2, 5, 0}};
-  for (const AlgorithmInfo& algorithm : algorithms())
-    for (const DataStructure ds : {DataStructure::tds, DataStructure::dcel}) {
-      RefineOptions o = options_for(algorithm);
-      o.triangulate.data_structure = ds;
-      o.criteria.min_angle_deg = o.insertion == RefineInsertion::bisection ? 0.0 : 25.0;
-      if (o.insertion == RefineInsertion::bisection) o.criteria.max_area = 0.05;
-      o.criteria.max_steiner = 200;
-      if (algorithm.aspect_then_angle) o.phases = aspect_then_angle_phases(o.criteria, algorithm);
-      RefineReport report;
-      const TriMesh m = refine(in, o, &report);
-      EXPECT_GT(report.segment_splits, 0u) << algorithm.name;
-      CheckOptions c;
-      c.delaunay = o.insertion == RefineInsertion::delaunay;
-      const CheckReport check = check_mesh(m, &in, c);
-      EXPECT_TRUE(check.ok) << algorithm.name << "/" << to_string(ds) << ": "
-                            << (check.problems.empty() ? std::string() : check.problems.front());
-    }
+  every_algorithm_gives_a_valid_mesh(
+      in,
+      [](RefineOptions& o) {
+        o.criteria.min_angle_deg = o.insertion == RefineInsertion::bisection ? 0.0 : 25.0;
+        if (o.insertion == RefineInsertion::bisection) o.criteria.max_area = 0.05;
+        o.criteria.max_steiner = 200;
+      },
+      true);
 }
 
 }  // namespace
