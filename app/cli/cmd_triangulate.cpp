@@ -1,4 +1,5 @@
 // meshstep triangulate: Delaunay triangulation of a .node, constrained Delaunay of a .poly.
+#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -89,10 +90,13 @@ int run_triangulate(const TriangulateArgs& args) {
                      options.data_structure, options.insertion, &input);
       options.record = log.get();
     }
+    std::optional<Pslg> to_check;  // for the full check of a small output (mesh_output.hpp)
+    if (input.points.size() <= kFullCheckTriangles) to_check = input;
     mesh = triangulate(std::move(input), options, &report);
     triangulate_ms = clock.lap_ms();
     for (const std::string& w : report.warnings) print_warning(verbosity, args.input + ": " + w);
     if (!args.no_output) {
+      check_before_writing(mesh, to_check ? &*to_check : nullptr, true);
       print_progress(verbosity, "writing " + output.files());
       output.write(mesh, {.edges = args.edges, .neighbors = args.neighbors});
       if (args.voronoi) {

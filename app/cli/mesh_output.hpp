@@ -6,7 +6,10 @@
 
 #include <string>
 
+#include <stdexcept>
+
 #include "refuse_overwrites.hpp"
+#include "meshstep/check/mesh_check.hpp"
 #include "meshstep/io/formats.hpp"
 #include "meshstep/io/triangle_io.hpp"
 #include "meshstep/mesh/tri_mesh.hpp"
@@ -36,5 +39,24 @@ struct MeshOutput {
     else io::write_mesh(path, mesh, options);
   }
 };
+
+// The full checker (`meshstep check`: coverage of the input's segments and vertices, holes,
+// overlaps, the constrained Delaunay property when `delaunay`) on a mesh about to be
+// written, when it is small enough for the check to cost little beside the run (up to
+// kFullCheckTriangles, about 70 ms at most); bigger meshes have the cheap checks only
+// (delaunay/invariants.hpp, docs/cli.md). A failure is a bug in meshstep: std::logic_error,
+// which the commands report as an internal error, writing nothing. `input`: the PSLG the
+// mesh was made from (null: none to compare with, as for a mesh refined again).
+inline constexpr std::size_t kFullCheckTriangles = 20000;
+inline void check_before_writing(const TriMesh& mesh, const Pslg* input, bool delaunay) {
+  if (mesh.triangles.size() > kFullCheckTriangles) return;
+  CheckOptions options;
+  options.delaunay = delaunay;
+  options.max_problems = 1;
+  const CheckReport report = check_mesh(mesh, input, options);
+  if (!report.ok)
+    throw std::logic_error("the mesh made fails its check (" + std::to_string(report.problem_count) +
+                           " problems; the first: " + report.problems.front() + ")");
+}
 
 }  // namespace meshstep::app

@@ -2,6 +2,7 @@
 // input, each next one the mesh the one before left, as `refine PREFIX` re-refines.
 #include "planar_refine.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -332,6 +333,9 @@ int run_planar_refine(const PlanarRefineJob& job) {
     };
     // Every operation on the one mesh, in one run (refine.hpp: refine_chain).
     std::vector<RefineReport> reports(operations.size());
+    // Kept for the full check of a small output (mesh_output.hpp), when it can be small.
+    std::optional<Pslg> to_check;
+    if (!re_refine && input.points.size() <= kFullCheckTriangles) to_check = input;
     mesh = re_refine ? refine_mesh_chain(old, operations, reports, announce)
                      : refine_chain(std::move(input), operations, reports, announce);
     report = combined_report(reports);
@@ -346,6 +350,10 @@ int run_planar_refine(const PlanarRefineJob& job) {
     for (std::size_t i = 0; i < reports.size(); ++i)
       stopped_by_budget |= reports[i].stopped_by_cap && budget_capped[i] && mesh.triangles.size() >= budget_triangles;
     if (!job.no_output && (!stopped_by_budget || job.write_partial)) {
+      const bool delaunay = std::none_of(operations.begin(), operations.end(), [](const RefineOptions& o) {
+        return o.insertion == RefineInsertion::bisection;
+      });
+      check_before_writing(mesh, to_check ? &*to_check : nullptr, delaunay);
       print_progress(verbosity, "writing " + output.files());
       output.write(mesh);
       write_ms = clock.lap_ms();
