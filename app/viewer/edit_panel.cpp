@@ -7,6 +7,7 @@
 #include <cstring>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "edit_keys.hpp"
@@ -160,6 +161,10 @@ void draw_edit_panel(Viewer& v) {
   // What a button asked for, done after the list is drawn (it changes the list).
   enum class Change { none, on, off, up, down, remove } change = Change::none;
   std::size_t changed_at = 0;
+  // The operation whose line is being edited (SIZE_MAX: none), and the line.
+  static std::size_t editing = SIZE_MAX;
+  static char line[2048] = "";
+  static bool focus_line = false;  // the field takes the keys once, when the edit starts
   for (std::size_t i = 0; i < bench.recipe().size(); ++i) {
     ImGui::PushID(static_cast<int>(i));
     bool on = bench.operation_on(i);
@@ -171,8 +176,34 @@ void draw_edit_panel(Viewer& v) {
     ImGui::SameLine();
     if (ImGui::SmallButton("x")) change = Change::remove, changed_at = i;
     ImGui::SameLine();
+    if (ImGui::SmallButton("e")) {
+      editing = i;
+      focus_line = true;
+      std::snprintf(line, sizeof line, "%s", bench.recipe_lines()[i].c_str());
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("edit this operation's line");
+    ImGui::SameLine();
     ImGui::TextWrapped("%zu. %s", i + 1, bench.recipe_labels()[i].c_str());
     ImGui::PopID();
+  }
+  if (editing < bench.recipe().size()) {
+    // The line in the recipe's words (refine --algorithm ... --min-angle ...): Enter runs it.
+    ImGui::Text("operation %zu (Enter: run it, Esc: leave it):", editing + 1);
+    ImGui::SetNextItemWidth(-1.0f);
+    if (std::exchange(focus_line, false)) ImGui::SetKeyboardFocusHere();
+    const bool entered = ImGui::InputText("##operation", line, sizeof line, ImGuiInputTextFlags_EnterReturnsTrue);
+    if (entered) {
+      try {
+        bench.replace_operation(editing, parse_operation(std::string_view(line)));
+        editing = SIZE_MAX;
+      } catch (const RunSpecError& e) {
+        host->say(std::string("operation ") + std::to_string(editing + 1) + ": " + e.what());
+      }
+    } else if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+      editing = SIZE_MAX;
+    }
+  } else {
+    editing = SIZE_MAX;
   }
   switch (change) {
     case Change::none: break;

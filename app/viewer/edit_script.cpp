@@ -70,6 +70,11 @@ Operation lasso_operation(const ScriptAction& a) {
   return parse_operation(words);
 }
 
+// `recipe edit N WORDS...`: the operation the words make. Throws RunSpecError.
+Operation edited_operation(const ScriptAction& a) {
+  return parse_operation(std::vector<std::string>(a.args.begin() + 2, a.args.end()));
+}
+
 }  // namespace
 
 bool is_edit_action(const std::string& verb) {
@@ -86,10 +91,20 @@ std::string check_edit_action(const ScriptAction& a) {
   }
   if (a.verb == "save-recipe") return n == 1 ? "" : "expected: save-recipe FILE";
   if (a.verb == "recipe") {
-    const bool known = n == 2 && (a.args[0] == "remove" || a.args[0] == "off" || a.args[0] == "on" ||
-                                  a.args[0] == "up" || a.args[0] == "down");
-    if (known && std::strtol(a.args[1].c_str(), nullptr, 10) >= 1 && is_real(a.args[1])) return "";
-    return "expected: recipe remove|off|on|up|down N (an operation's number, from 1)";
+    const char* usage =
+        "expected: recipe remove|off|on|up|down N, or recipe edit N refine OPTIONS... (an operation's number, from 1)";
+    const bool edit = n >= 3 && a.args[0] == "edit";
+    const bool known = edit || (n == 2 && (a.args[0] == "remove" || a.args[0] == "off" || a.args[0] == "on" ||
+                                           a.args[0] == "up" || a.args[0] == "down"));
+    if (!known || std::strtol(a.args[1].c_str(), nullptr, 10) < 1 || !is_real(a.args[1])) return usage;
+    if (edit) {
+      try {
+        edited_operation(a);
+      } catch (const RunSpecError& e) {
+        return std::string("recipe edit: ") + e.what();
+      }
+    }
+    return "";
   }
   if (a.verb == "refine-region") {
     if (n < 4) return "expected: refine-region X0 Y0 X1 Y1 OPTIONS...";
@@ -168,6 +183,7 @@ void run_edit_action(const ScriptAction& a, WorkbenchHost& host, const Session* 
       fail("recipe " + a.args[0] + ": there is no operation " + a.args[1] + " (the recipe has " +
            std::to_string(bench.recipe().size()) + ")");
     if (a.args[0] == "remove") bench.remove_operation(i);
+    else if (a.args[0] == "edit") bench.replace_operation(i, edited_operation(a));
     else if (a.args[0] == "off" || a.args[0] == "on") bench.switch_operation(i, a.args[0] == "on");
     else bench.move_operation(i, a.args[0] == "up" ? -1 : +1);
     return;

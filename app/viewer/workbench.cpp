@@ -115,6 +115,12 @@ void Workbench::remove_operation(std::size_t i) {
   recipe_changed();
 }
 
+void Workbench::replace_operation(std::size_t i, Operation op) {
+  if (i >= recipe_.size()) return;
+  recipe_[i] = std::move(op);
+  recipe_changed();
+}
+
 void Workbench::move_operation(std::size_t i, int direction) {
   const std::size_t j = direction < 0 ? i - 1 : i + 1;
   if (i >= recipe_.size() || j >= recipe_.size()) return;

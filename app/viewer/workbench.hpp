@@ -65,6 +65,9 @@ class Workbench {
   // in the list and is not run. Each makes the mesh stale. Indices out of range do nothing.
   void append_operation(Operation op);
   void remove_operation(std::size_t i);
+  // Operation i becomes `op` (its line edited in the recipe panel, or `recipe edit`), keeping
+  // its place and whether it is switched on.
+  void replace_operation(std::size_t i, Operation op);
   void move_operation(std::size_t i, int direction);
   void switch_operation(std::size_t i, bool on);
   bool operation_on(std::size_t i) const { return i < enabled_.size() && enabled_[i]; }

@@ -487,6 +487,37 @@ TEST_P(WorkbenchProgram, TheRunsRecipeRunsAgainAfterAnEdit) {
   EXPECT_TRUE(has(before, "\"editing\": false")) << before;
 }
 
+// An operation of the recipe edited (issue 27 item 4: "each operation can be edited"): its
+// line replaced keeps its place, the run is made again with it, and the saved recipe runs it
+// through `meshstep run` to the mesh the window shows. Words that are no operation stop the
+// script at their line with the recipe parser's words.
+TEST_P(WorkbenchProgram, AnOperationEditedRunsInItsPlace) {
+  const std::string input = path("plate.poly");
+  fs::copy_file(MESHSTEP_ASSETS "/examples/plate.poly", input);
+  const std::string saved = path("edited.poly"), recipe = path("edited.recipe");
+  VIEW_OR_SKIP(r, "edit move 10 0 10 0.25\nrefine-region 0 0 3 3 --max-area 0.05\nstate " + path("before.json") +
+                      "\nrecipe edit 1 refine --algorithm offcenter --min-angle 30\nstate " + path("after.json") +
+                      "\nsave " + saved + "\nsave-recipe " + recipe + "\nquit\n",
+               input, "--algorithm lepp-centroid --min-angle 25");
+  const std::string before = read_text(path("before.json")), after = read_text(path("after.json"));
+  EXPECT_TRUE(has(before, "\"recipe\": [\"refine --algorithm lepp-centroid --min-angle 25\", \"refine --max-area 0.05"))
+      << before;
+  // (offcenter is the default algorithm: the line does not name it)
+  EXPECT_TRUE(has(after, "\"recipe\": [\"refine --min-angle 30\", \"refine --max-area 0.05"))
+      << after;
+  EXPECT_NE(field(after, "mesh_triangles"), field(before, "mesh_triangles")) << after;
+  const std::string out = path("edited_out");
+  const Result m = run(std::string(MESHSTEP_BINARY) + " run " + recipe + " " + saved + " -o " + out + " -q");
+  ASSERT_EQ(m.status, 0) << m.output;
+  EXPECT_EQ(static_cast<long long>(io::read_mesh(out).triangles.size()), field(after, "mesh_triangles")) << after;
+
+  const Result bad = view("new\nedit add-segment 0 0 4 0\nrefine-region 0 0 1 1 --max-area 0.1\n"
+                          "recipe edit 1 refine --algorithm nonesuch\nquit\n");
+  EXPECT_EQ(bad.status, 1) << bad.output;
+  EXPECT_TRUE(has(bad.output, "script.txt:4: recipe edit: ")) << bad.output;
+  EXPECT_TRUE(has(bad.output, "nonesuch")) << bad.output;
+}
+
 // A region refined from a script (issue 27 item 3): the operation goes to the end of the
 // recipe and runs at once; the saved recipe and input give, through `meshstep run`, the mesh
 // the window shows. Switched off (item 4), the operation no longer runs.
