@@ -91,7 +91,7 @@ int run_triangulate(const TriangulateArgs& args) {
       options.record = log.get();
     }
     std::optional<Pslg> to_check;  // for the full check of a small output (mesh_output.hpp)
-    if (input.points.size() <= kFullCheckTriangles) to_check = input;
+    if (!args.no_output && input.points.size() <= kFullCheckTriangles) to_check = input;
     mesh = triangulate(std::move(input), options, &report);
     triangulate_ms = clock.lap_ms();
     for (const std::string& w : report.warnings) print_warning(verbosity, args.input + ": " + w);

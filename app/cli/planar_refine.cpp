@@ -333,9 +333,10 @@ int run_planar_refine(const PlanarRefineJob& job) {
     };
     // Every operation on the one mesh, in one run (refine.hpp: refine_chain).
     std::vector<RefineReport> reports(operations.size());
-    // Kept for the full check of a small output (mesh_output.hpp), when it can be small.
+    // Kept for the full check of an output that can be small (mesh_output.hpp: a mesh of at
+    // most kFullCheckTriangles has fewer vertices than that), when one is written.
     std::optional<Pslg> to_check;
-    if (!re_refine && input.points.size() <= kFullCheckTriangles) to_check = input;
+    if (!job.no_output && !re_refine && input.points.size() <= kFullCheckTriangles) to_check = input;
     mesh = re_refine ? refine_mesh_chain(old, operations, reports, announce)
                      : refine_chain(std::move(input), operations, reports, announce);
     report = combined_report(reports);

@@ -10,23 +10,19 @@
 #include "meshstep/replay/step_numbers.hpp"
 #include "meshstep/scene/build.hpp"
 #include "run_cli.hpp"
+#include "scene_at_step.hpp"
 
 namespace meshstep {
 namespace {
 
 using scene::Scene;
+using testing::scene_at_step;
 
 std::string asset(const std::string& name) { return std::string(MESHSTEP_ASSETS) + "/examples/" + name; }
 
 class SceneFlatCircle : public testing::CliTest {
  protected:
   SceneFlatCircle() : CliTest("meshstep_flat_circle_") {}
-
-  static Scene scene_at_step(const replay::LogReader& log, std::uint64_t step) {
-    replay::Replay cursor(log);
-    cursor.seek_event(replay::step_position(log, step));
-    return build_scene(cursor, scene::SceneOptions{});
-  }
 };
 
 // The in-circle test of a triangle a hair from flat (lepp-midpoint on lesson.poly at 28

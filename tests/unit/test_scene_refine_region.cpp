@@ -13,11 +13,13 @@
 #include "meshstep/replay/step_numbers.hpp"
 #include "meshstep/scene/build.hpp"
 #include "run_cli.hpp"
+#include "scene_at_step.hpp"
 
 namespace meshstep {
 namespace {
 
 using scene::Scene;
+using testing::scene_at_step;
 
 constexpr const char* kSquare =
     "4 2 0 0\n1 0 0\n2 10 0\n3 10 10\n4 0 10\n"
@@ -27,12 +29,6 @@ constexpr const char* kSquare =
 class SceneRefineRegion : public testing::CliTest {
  protected:
   SceneRefineRegion() : CliTest("meshstep_region_scene_") {}
-
-  static Scene scene_at_step(const replay::LogReader& log, std::uint64_t step) {
-    replay::Replay cursor(log);
-    cursor.seek_event(replay::step_position(log, step));
-    return build_scene(cursor, scene::SceneOptions{});
-  }
 };
 
 // The outline's corners, each once, sorted.

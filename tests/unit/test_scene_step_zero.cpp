@@ -18,10 +18,13 @@
 #include "meshstep/replay/step_numbers.hpp"
 #include "meshstep/scene/build.hpp"
 #include "run_cli.hpp"
+#include "scene_at_step.hpp"
 #include "temp_dir.hpp"
 
 namespace meshstep::scene {
 namespace {
+
+using meshstep::testing::scene_at_step;
 
 std::string lesson() { return std::string(MESHSTEP_ASSETS) + "/examples/lesson.poly"; }
 
@@ -69,12 +72,6 @@ std::vector<std::pair<Point, Point>> pieces(const std::vector<Point>& ends) {
     return less(x.first, y.first) || (x.first == y.first && less(x.second, y.second));
   });
   return out;
-}
-
-Scene scene_at_step(const replay::LogReader& log, std::uint64_t step) {
-  replay::Replay cursor(log);
-  cursor.seek_event(replay::step_position(log, step));
-  return build_scene(cursor, SceneOptions{});
 }
 
 TEST(SceneStepZero, LessonShowsExactlyItsInputBeforeTheFirstTriangle) {
