@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "meshstep/replay/log_reader.hpp"
 
@@ -121,6 +122,22 @@ inline long long field(const std::string& json, const std::string& key) {
   const std::string tag = "\"" + key + "\": ";
   const auto at = json.find(tag);
   return at == std::string::npos ? -1 : std::atoll(json.c_str() + at + tag.size());
+}
+
+// The allocations column of a viewer's --frame-log (`# frame end_ms frame_ms allocations
+// ...`), one entry a frame.
+inline std::vector<unsigned long long> frame_allocations(const std::filesystem::path& frame_log) {
+  std::ifstream in(frame_log);
+  std::vector<unsigned long long> out;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    unsigned long long index = 0, count = 0;
+    double end_ms = 0, frame_ms = 0;
+    fields >> index >> end_ms >> frame_ms >> count;
+    out.push_back(count);
+  }
+  return out;
 }
 
 }  // namespace meshstep::viewer::testing

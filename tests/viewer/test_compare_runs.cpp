@@ -24,6 +24,7 @@ namespace meshstep::viewer {
 namespace {
 
 using testing::field;
+using testing::frame_allocations;
 using testing::has;
 using testing::read_text;
 using testing::Result;
@@ -259,16 +260,7 @@ TEST_P(SideBySide, IdleFramesAllocateNothing) {
   // A first frame lays the canvases out, so that `wait` then waits for their pictures.
   SIDE_OR_SKIP(r, logs, "frames 1\nseek step 30\ndifference on\nwait\nframes 8\nseek step 40\nwait\nframes 8\nquit\n",
                "--frame-log " + frames);
-  std::ifstream in(frames);
-  std::vector<unsigned long long> allocations;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
-    unsigned long long index = 0, count = 0;
-    double end_ms = 0, frame_ms = 0;
-    fields >> index >> end_ms >> frame_ms >> count;
-    allocations.push_back(count);
-  }
+  const std::vector<unsigned long long> allocations = frame_allocations(frames);
   ASSERT_EQ(allocations.size(), 17u);
   // Frames 1 and 9 show the new moments (and ImGui sizes its buffers over the first
   // frames): the two after each are left to warm up, the other five of each are idle.

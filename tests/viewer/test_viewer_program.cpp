@@ -25,6 +25,7 @@ namespace meshstep::viewer {
 namespace {
 
 using testing::field;
+using testing::frame_allocations;
 using testing::has;
 using testing::read_text;
 using testing::Result;
@@ -130,17 +131,7 @@ TEST_P(ViewerProgram, DragPansWheelZoomsAndTheTimelineScrubs) {
 TEST_P(ViewerProgram, IdleFramesDoNotAllocate) {
   const fs::path frames = dir_ / "frames.txt";
   VIEW_OR_SKIP(r, "seek step 45\nframes 6\nkey C\nframes 20\nquit\n", "--frame-log " + frames.string());
-  std::ifstream in(frames);
-  std::string line;
-  std::vector<unsigned long long> allocations;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
-    unsigned long long index = 0, count = 0, position = 0;
-    double end_ms = 0, frame_ms = 0;
-    fields >> index >> end_ms >> frame_ms >> count >> position;
-    allocations.push_back(count);
-  }
+  const std::vector<unsigned long long> allocations = frame_allocations(frames);
   ASSERT_GE(allocations.size(), 25u);
   // Under the sanitizers only ImGui's allocations are counted: the frames that must
   // allocate may not show it, the idle ones must still count nothing.

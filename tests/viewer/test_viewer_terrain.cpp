@@ -29,6 +29,7 @@ namespace meshstep::viewer {
 namespace {
 
 using testing::field;
+using testing::frame_allocations;
 using testing::has;
 using testing::read_text;
 using testing::Result;
@@ -207,19 +208,7 @@ TEST_P(ViewerTerrain, TheWorkerDrawsTheSame3dWindowAndIdleFramesDoNotAllocate) {
   EXPECT_TRUE(diff.same_size);
   EXPECT_LE(diff.differing_pixels, static_cast<std::size_t>(a.width) * a.height / 1000);
 
-  const auto allocations = [&](const std::string& file) {
-    std::vector<unsigned long long> counts;
-    std::ifstream in(file);
-    for (std::string line; std::getline(in, line);) {
-      if (line.empty() || line[0] == '#') continue;
-      std::istringstream fields(line);
-      unsigned long long index = 0, count = 0;
-      double end_ms = 0, frame_ms = 0;
-      fields >> index >> end_ms >> frame_ms >> count;
-      counts.push_back(count);
-    }
-    return counts;
-  };
+  const auto allocations = [](const std::string& file) { return frame_allocations(file); };
   // This thread: frames 0 and 1 warm up, 2-5 idle, 6 turns (a new lift and picture), then idle.
   const std::vector<unsigned long long> on_main = allocations(path("main.txt"));
   ASSERT_GE(on_main.size(), 27u);

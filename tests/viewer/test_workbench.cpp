@@ -35,6 +35,7 @@ namespace meshstep::viewer {
 namespace {
 
 using testing::field;
+using testing::frame_allocations;
 using testing::has;
 using testing::read_text;
 using testing::Result;
@@ -66,20 +67,6 @@ double mesh_area(const TriMesh& m) {
     total += 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
   }
   return total;
-}
-
-std::vector<unsigned long long> frame_allocations(const fs::path& frames) {
-  std::ifstream in(frames);
-  std::vector<unsigned long long> out;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream f(line);
-    unsigned long long index = 0, count = 0;
-    double end_ms = 0, frame_ms = 0;
-    f >> index >> end_ms >> frame_ms >> count;
-    out.push_back(count);
-  }
-  return out;
 }
 
 // A 4 x 3 rectangle with a 1 x 1 square hole, segment by segment: each end snaps to the
