@@ -116,8 +116,10 @@ TEST(CompareSync, FollowersStandWhereTheLogsSay) {
             << name(mode) << " inside the leader's step " << k;
     }
     // At its end the leader takes the follower to its own end.
-    if (mode != SyncMode::vertices)
-      EXPECT_EQ(synced_position(lead, lead_insertions, lead.event_count(), follow, insertions, mode), follow.event_count()) << name(mode);
+    if (mode != SyncMode::vertices) {
+      EXPECT_EQ(synced_position(lead, lead_insertions, lead.event_count(), follow, insertions, mode), follow.event_count())
+          << name(mode);
+    }
   }
   EXPECT_EQ(inserted_vertices(lead, lead.event_count()), count_inserted(lead, lead.event_count()));
   EXPECT_EQ(parse_sync_mode("vertices"), SyncMode::vertices);
