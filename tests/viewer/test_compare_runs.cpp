@@ -110,10 +110,11 @@ TEST(CompareSync, FollowersStandWhereTheLogsSay) {
       ASSERT_EQ(synced_position(lead, lead_insertions, at, follow, insertions, mode), expected_position(lead, at, follow, name(mode)))
           << name(mode) << " at the leader's step " << k;
       // Inside a step too (one event before its end).
-      if (at > 0)
+      if (at > 0) {
         ASSERT_EQ(synced_position(lead, lead_insertions, at - 1, follow, insertions, mode),
                   expected_position(lead, at - 1, follow, name(mode)))
             << name(mode) << " inside the leader's step " << k;
+      }
     }
     // At its end the leader takes the follower to its own end.
     if (mode != SyncMode::vertices) {
